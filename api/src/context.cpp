@@ -1,0 +1,141 @@
+// Context creation, binding to the caller's buffer, the depth buffer, destruction.
+// Built-in primitives are compiled here from their embedded source (primitives/*.pfl).
+#include <cstdio>
+#include <new>
+
+#include "api/src/context_state.h"
+#include "compiler/embedded_primitives.h"
+#include "raster/limits.h"
+#include "raster/worker_pool.h"
+
+namespace pf {
+
+namespace {
+thread_local PFcontextRec* g_current = nullptr;
+
+// The glBegin modes that map to built-in primitives, by primitive name.
+struct ModeName {
+  GLenum mode;
+  const char* primitive;
+};
+constexpr ModeName kModes[] = {{GL_TRIANGLES, "triangles"}};
+
+bool registerBuiltins(PFcontextRec& ctx) {
+  for (int i = 0; i < kEmbeddedPrimitiveCount; ++i) {
+    const EmbeddedSource& src = kEmbeddedPrimitives[i];
+    CompiledModule module;
+    DiagnosticLog log;
+    if (!compileSource(std::string("primitives/") + src.file_name, src.text, module, log)) {
+      std::fprintf(stderr, "primflow: built-in primitive failed to compile:\n%s", log.format().c_str());
+      return false;
+    }
+    for (auto& p : module.primitives) ctx.primitives.by_name[p->name] = p;
+  }
+  for (const ModeName& m : kModes) {
+    auto it = ctx.primitives.by_name.find(m.primitive);
+    if (it != ctx.primitives.by_name.end()) ctx.primitives.by_mode[m.mode] = it->second;
+  }
+  return true;
+}
+
+}  // namespace
+
+PFcontextRec* currentContext() { return g_current; }
+
+}  // namespace pf
+
+extern "C" {
+
+PFcontext pfCreateContextAttribs(const int* attribs) {
+  GLenum format = GL_RGBA;
+  int depth_bits = 0;
+  int threads = 0;
+  for (const int* a = attribs; a && a[0] != 0; a += 2) {
+    switch (a[0]) {
+      case PF_FORMAT: format = static_cast<GLenum>(a[1]); break;
+      case PF_DEPTH_BITS: depth_bits = a[1]; break;
+      case PF_THREADS: threads = a[1]; break;
+      default: return nullptr;  // unknown attribute
+    }
+  }
+  if (format != GL_RGBA || depth_bits < 0 || threads < 0 || threads > 256) return nullptr;
+  if (threads == 0) threads = pf::defaultThreadCount();
+  try {
+    auto* ctx = new PFcontextRec(threads);
+    ctx->format = format;
+    ctx->depth_bits = depth_bits;
+    if (!pf::registerBuiltins(*ctx)) {
+      delete ctx;
+      return nullptr;
+    }
+    return ctx;
+  } catch (const std::bad_alloc&) {
+    return nullptr;
+  }
+}
+
+PFcontext pfCreateContext(GLenum format, GLint depthBits) {
+  const int attribs[] = {PF_FORMAT, static_cast<int>(format), PF_DEPTH_BITS, depthBits, 0};
+  return pfCreateContextAttribs(attribs);
+}
+
+GLboolean pfMakeCurrent(PFcontext ctx, void* buffer, GLenum type, GLsizei width, GLsizei height) {
+  if (!ctx) {
+    if (pf::g_current) pf::g_current->renderer.flush();
+    pf::g_current = nullptr;
+    return GL_TRUE;
+  }
+  if (!buffer || type != GL_UNSIGNED_BYTE || width < 1 || height < 1 ||
+      width > pf::kMaxFramebufferSize || height > pf::kMaxFramebufferSize)
+    return GL_FALSE;
+  ctx->renderer.flush();
+  if (ctx->depth_bits > 0) {
+    try {
+      ctx->depth.assign(static_cast<size_t>(width) * height, 1.0f);
+    } catch (const std::bad_alloc&) {
+      return GL_FALSE;
+    }
+  }
+  ctx->color = static_cast<uint8_t*>(buffer);
+  ctx->width = width;
+  ctx->height = height;
+  ctx->renderer.setTarget(ctx->color, ctx->depth_bits > 0 ? ctx->depth.data() : nullptr, width, height);
+  if (!ctx->ever_bound) {
+    // As in GL, the viewport starts as the whole first drawable.
+    ctx->viewport[0] = 0;
+    ctx->viewport[1] = 0;
+    ctx->viewport[2] = width;
+    ctx->viewport[3] = height;
+    ctx->ever_bound = true;
+  }
+  pf::g_current = ctx;
+  return GL_TRUE;
+}
+
+PFcontext pfGetCurrentContext(void) { return pf::g_current; }
+
+GLboolean pfGetDepthBuffer(PFcontext ctx, GLint* width, GLint* height, GLint* bytesPerValue, void** buffer) {
+  if (!ctx || ctx->depth_bits <= 0 || !ctx->color) {
+    if (width) *width = 0;
+    if (height) *height = 0;
+    if (bytesPerValue) *bytesPerValue = 0;
+    if (buffer) *buffer = nullptr;
+    return GL_FALSE;
+  }
+  ctx->renderer.flush();
+  if (width) *width = ctx->width;
+  if (height) *height = ctx->height;
+  if (bytesPerValue) *bytesPerValue = static_cast<GLint>(sizeof(float));
+  if (buffer) *buffer = ctx->depth.data();
+  return GL_TRUE;
+}
+
+GLint pfGetThreadCount(PFcontext ctx) { return ctx ? ctx->renderer.threadCount() : 0; }
+
+void pfDestroyContext(PFcontext ctx) {
+  if (!ctx) return;
+  if (pf::g_current == ctx) pf::g_current = nullptr;
+  delete ctx;
+}
+
+}  // extern "C"

@@ -1,0 +1,87 @@
+// The abstract syntax tree of the primitive language, as the parser builds it and semantic
+// analysis annotates it (Expr::type, Expr::varying).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "compiler/diagnostics.h"
+#include "compiler/types.h"
+
+namespace pf {
+
+struct Expr;
+struct Stmt;
+using ExprPtr = std::unique_ptr<Expr>;
+using StmtPtr = std::unique_ptr<Stmt>;
+
+enum class ExprKind { IntLit, FloatLit, BoolLit, Name, Unary, Binary, Call, Index, Member, Ternary };
+
+struct Expr {
+  ExprKind kind;
+  SourceLoc loc;
+  std::string name;          // Name: the identifier; Call: the callee; Member: the field; Unary/Binary: operator
+  double number = 0;         // literals
+  bool boolean = false;
+  std::vector<ExprPtr> args;  // operands / call arguments / [base, index] / [cond, a, b]
+
+  // Filled in by semantic analysis.
+  Type type;
+  bool varying = false;
+};
+
+enum class StmtKind { Block, Decl, Assign, ExprStmt, If, Return, Bound, Interpolation, InterpReturn };
+
+// One branch of an `interpolation { ... }` construct: its labels and its statements.
+struct InterpolationCase {
+  std::vector<InterpKind> kinds;
+  std::vector<SourceLoc> label_locs;
+  std::vector<StmtPtr> body;
+};
+
+struct Stmt {
+  StmtKind kind;
+  SourceLoc loc;
+  // Decl
+  Qualifier qualifier = Qualifier::None;
+  Type decl_type;
+  std::string name;
+  // Decl initializer / Assign value / ExprStmt / If condition / InterpReturn value (may be null)
+  ExprPtr value;
+  // Assign: target (a Name, or Index/Member chain on a Name) and operator ("=", "+=", ...)
+  ExprPtr target;
+  std::string op;
+  // Block / If then-branch
+  std::vector<StmtPtr> body;
+  // If else-branch (empty when absent)
+  std::vector<StmtPtr> else_body;
+  bool has_else = false;
+  // Bound: four expressions
+  std::vector<ExprPtr> bound_args;
+  // Interpolation
+  std::vector<InterpolationCase> cases;
+};
+
+struct Param {
+  SourceLoc loc;
+  Qualifier qualifier = Qualifier::None;
+  Type type;
+  std::string name;
+};
+
+enum class UnitKind { Primitive, Interpolator };
+
+struct Unit {
+  UnitKind kind;
+  SourceLoc loc;
+  std::string name;
+  std::vector<Param> params;
+  std::vector<StmtPtr> body;
+};
+
+struct Program {
+  std::vector<Unit> units;
+};
+
+}  // namespace pf

@@ -1,0 +1,280 @@
+// Code generation (see codegen.h).
+#include "compiler/codegen.h"
+
+#include <map>
+#include <set>
+
+namespace pf {
+namespace {
+
+bool isPixelEffect(Op op) {
+  return op == Op::Retire || op == Op::ZTest || op == Op::InterpReturn || op == Op::InterpShared ||
+         op == Op::ZCommit;
+}
+
+class Generator {
+ public:
+  explicit Generator(const IrFunction& f) : f_(f) {}
+
+  CodegenResult run() {
+    collect(f_.body, {});
+    markNeeded();
+    // Setup.
+    emitSetup(f_.body, 0);
+    // Pixel (assigns the exports as it meets uniform operands).
+    pixel_.num_regs = kFirstFreePixelReg;
+    emitPixel(f_.body, 0);
+    // Exports.
+    result_.setup.scalar_exports.resize(scalar_slots_.size());
+    for (auto& [value, slot] : scalar_slots_) result_.setup.scalar_exports[slot] = setupOperand(value);
+    result_.setup.interp_exports.resize(interp_slots_.size());
+    for (auto& [value, slot] : interp_slots_) result_.setup.interp_exports[slot] = operandIndex(setupOperand(value));
+    pixel_.num_uniform_slots = static_cast<uint32_t>(scalar_slots_.size());
+    pixel_.num_interp_uniform_slots = static_cast<uint32_t>(interp_slots_.size());
+    result_.pixel = std::move(pixel_);
+    result_.setup.code = std::move(setup_.code);
+    result_.setup.constants = std::move(setup_.constants);
+    result_.setup.num_regs = setup_.num_regs;
+    result_.setup.num_interp_regs = setup_.num_interp_regs;
+    return std::move(result_);
+  }
+
+ private:
+  const IrFunction& f_;
+  CodegenResult result_;
+  Bytecode setup_;
+  PixelProgram pixel_;
+  // For each value, the instructions defining it and the uniform if-conditions around them.
+  struct Def {
+    const IrInst* inst;
+    std::vector<int> conds;
+  };
+  std::map<int, std::vector<Def>> defs_;
+  std::vector<std::pair<const IrInst*, std::vector<int>>> roots_;
+  std::set<int> needed_;  // uniform values setup must compute
+  std::map<int, uint32_t> setup_regs_, pixel_regs_, setup_consts_, pixel_consts_;
+  std::map<int, uint32_t> scalar_slots_, interp_slots_;
+
+  const Value& val(int v) const { return f_.values[v]; }
+  bool varying(int v) const { return v >= 0 && val(v).varying; }
+
+  // Walks the tree once: definitions, and the roots of what setup must compute.
+  void collect(const IrBlock& b, std::vector<int> conds) {
+    for (const IrNode& n : b) {
+      if (n.kind == IrNode::Kind::If) {
+        std::vector<int> inner = conds;
+        inner.push_back(n.cond);
+        collect(*n.then_block, inner);
+        collect(*n.else_block, inner);
+        continue;
+      }
+      const IrInst& in = n.inst;
+      if (in.dst >= 0) defs_[in.dst].push_back({&in, conds});
+      bool pixel = (in.dst >= 0 && varying(in.dst)) || isPixelEffect(in.op);
+      if (pixel || in.op == Op::Bound || in.op == Op::Retire) roots_.push_back({&in, conds});
+    }
+  }
+
+  void need(int v, std::vector<int>& work) {
+    if (v < 0 || varying(v)) return;
+    if (val(v).origin != Value::Origin::Temp) return;
+    if (needed_.insert(v).second) work.push_back(v);
+  }
+
+  void markNeeded() {
+    std::vector<int> work;
+    for (auto& [in, conds] : roots_) {
+      for (int o : {in->a, in->b, in->c, in->d}) need(o, work);
+      for (int c : conds) need(c, work);
+    }
+    while (!work.empty()) {
+      int v = work.back();
+      work.pop_back();
+      for (const Def& d : defs_[v]) {
+        for (int o : {d.inst->a, d.inst->b, d.inst->c, d.inst->d}) need(o, work);
+        for (int c : d.conds) need(c, work);
+      }
+    }
+  }
+
+  static uint32_t constIndex(std::map<int, uint32_t>& pool, Bytecode& code, int v, uint32_t bits) {
+    auto it = pool.find(v);
+    if (it != pool.end()) return it->second;
+    uint32_t idx = static_cast<uint32_t>(code.constants.size());
+    code.constants.push_back(bits);
+    pool[v] = idx;
+    return idx;
+  }
+
+  uint32_t setupOperand(int v) {
+    if (v < 0) return kNoOperand;
+    const Value& x = val(v);
+    switch (x.origin) {
+      case Value::Origin::Const: return makeOperand(OperandKind::Const, constIndex(setup_consts_, setup_, v, x.bits));
+      case Value::Origin::Param: return makeOperand(OperandKind::Param, static_cast<uint32_t>(x.index));
+      case Value::Origin::Builtin: return kNoOperand;  // never uniform
+      case Value::Origin::Temp: break;
+    }
+    auto it = setup_regs_.find(v);
+    if (it != setup_regs_.end()) return makeOperand(OperandKind::Reg, it->second);
+    uint32_t idx = x.cls == ValueClass::Interp ? setup_.num_interp_regs++ : setup_.num_regs++;
+    setup_regs_[v] = idx;
+    return makeOperand(OperandKind::Reg, idx);
+  }
+
+  uint32_t pixelOperand(int v) {
+    if (v < 0) return kNoOperand;
+    const Value& x = val(v);
+    if (x.origin == Value::Origin::Const)
+      return makeOperand(OperandKind::Const, constIndex(pixel_consts_, pixel_, v, x.bits));
+    if (x.origin == Value::Origin::Builtin) return makeOperand(OperandKind::Reg, static_cast<uint32_t>(x.index));
+    if (!x.varying) {
+      auto& slots = x.cls == ValueClass::Interp ? interp_slots_ : scalar_slots_;
+      auto it = slots.find(v);
+      uint32_t slot;
+      if (it != slots.end()) {
+        slot = it->second;
+      } else {
+        slot = static_cast<uint32_t>(slots.size());
+        slots[v] = slot;
+      }
+      return makeOperand(OperandKind::Uniform, slot);
+    }
+    auto it = pixel_regs_.find(v);
+    if (it != pixel_regs_.end()) return makeOperand(OperandKind::Reg, it->second);
+    uint32_t idx = x.cls == ValueClass::Interp ? pixel_.num_interp_regs++ : pixel_.num_regs++;
+    pixel_regs_[v] = idx;
+    return makeOperand(OperandKind::Reg, idx);
+  }
+
+  // ---- setup ----
+  bool setupWork(const IrBlock& b, int varying_depth) const {
+    for (const IrNode& n : b) {
+      if (n.kind == IrNode::Kind::If) {
+        int d = varying_depth + (varying(n.cond) ? 1 : 0);
+        if (setupWork(*n.then_block, d) || setupWork(*n.else_block, d)) return true;
+        continue;
+      }
+      const IrInst& in = n.inst;
+      if (in.op == Op::Bound || (in.op == Op::Retire && varying_depth == 0)) return true;
+      if (in.dst >= 0 && needed_.count(in.dst)) return true;
+    }
+    return false;
+  }
+
+  void emitSetup(const IrBlock& b, int varying_depth) {
+    for (const IrNode& n : b) {
+      if (n.kind == IrNode::Kind::If) {
+        if (varying(n.cond)) {
+          // Varying control: the uniform values inside are pure, so compute them unconditionally.
+          emitSetup(*n.then_block, varying_depth + 1);
+          emitSetup(*n.else_block, varying_depth + 1);
+          continue;
+        }
+        bool t = setupWork(*n.then_block, varying_depth), e = setupWork(*n.else_block, varying_depth);
+        if (!t && !e) continue;
+        size_t jf = setup_.code.size();
+        setup_.code.push_back(Instr{Op::JmpIfNot, 0, kNoOperand, 0, setupOperand(n.cond)});
+        emitSetup(*n.then_block, varying_depth);
+        if (e) {
+          size_t je = setup_.code.size();
+          setup_.code.push_back(Instr{Op::Jmp, 0, kNoOperand, 0});
+          setup_.code[jf].a = static_cast<uint32_t>(setup_.code.size());
+          emitSetup(*n.else_block, varying_depth);
+          setup_.code[je].a = static_cast<uint32_t>(setup_.code.size());
+        } else {
+          setup_.code[jf].a = static_cast<uint32_t>(setup_.code.size());
+        }
+        continue;
+      }
+      const IrInst& in = n.inst;
+      if (in.op == Op::Bound) {
+        Instr out{Op::Bound, 0, setupOperand(in.d), setupOperand(in.a), setupOperand(in.b), setupOperand(in.c)};
+        setup_.code.push_back(out);
+      } else if (in.op == Op::Retire) {
+        if (varying_depth == 0) setup_.code.push_back(Instr{Op::Kill});
+      } else if (in.dst >= 0 && needed_.count(in.dst)) {
+        Instr out{in.op, static_cast<uint16_t>(in.imm), setupOperand(in.dst), setupOperand(in.a),
+                  setupOperand(in.b), setupOperand(in.c)};
+        setup_.code.push_back(out);
+      }
+    }
+  }
+
+  // ---- pixel ----
+  // A `return` under uniform control flow is the setup program's Kill: the pixel program never
+  // runs for an instance that takes it, so it has nothing to do there.
+  bool pixelInst(const IrInst& in, int varying_depth) const {
+    if (in.op == Op::Retire) return varying_depth > 0;
+    return (in.dst >= 0 && varying(in.dst)) || isPixelEffect(in.op);
+  }
+
+  bool pixelWork(const IrBlock& b, int varying_depth) const {
+    for (const IrNode& n : b) {
+      if (n.kind == IrNode::Kind::If) {
+        int d = varying_depth + (varying(n.cond) ? 1 : 0);
+        if (pixelWork(*n.then_block, d) || pixelWork(*n.else_block, d)) return true;
+        continue;
+      }
+      if (pixelInst(n.inst, varying_depth)) return true;
+    }
+    return false;
+  }
+
+  void emitPixel(const IrBlock& b, int varying_depth) {
+    for (const IrNode& n : b) {
+      if (n.kind == IrNode::Kind::If) {
+        int d = varying_depth + (varying(n.cond) ? 1 : 0);
+        bool t = pixelWork(*n.then_block, d), e = pixelWork(*n.else_block, d);
+        if (!t && !e) continue;
+        auto here = [&] { return static_cast<uint32_t>(pixel_.code.size()); };
+        if (!varying(n.cond)) {
+          size_t jf = pixel_.code.size();
+          pixel_.code.push_back(Instr{Op::JmpIfNot, 0, kNoOperand, 0, pixelOperand(n.cond)});
+          emitPixel(*n.then_block, d);
+          if (e) {
+            size_t je = pixel_.code.size();
+            pixel_.code.push_back(Instr{Op::Jmp, 0, kNoOperand, 0});
+            pixel_.code[jf].a = here();
+            emitPixel(*n.else_block, d);
+            pixel_.code[je].a = here();
+          } else {
+            pixel_.code[jf].a = here();
+          }
+          continue;
+        }
+        uint32_t cond = pixelOperand(n.cond);
+        pixel_.code.push_back(Instr{Op::MaskIf, 0, kNoOperand, kNoOperand, cond});
+        size_t j1 = pixel_.code.size();
+        pixel_.code.push_back(Instr{Op::JmpIfNone, 0, kNoOperand, 0});
+        emitPixel(*n.then_block, d);
+        if (e) {
+          pixel_.code[j1].a = here();
+          pixel_.code.push_back(Instr{Op::MaskElse, 0, kNoOperand, kNoOperand, cond});
+          size_t j2 = pixel_.code.size();
+          pixel_.code.push_back(Instr{Op::JmpIfNone, 0, kNoOperand, 0});
+          emitPixel(*n.else_block, d);
+          pixel_.code[j2].a = here();
+        } else {
+          pixel_.code[j1].a = here();
+        }
+        pixel_.code.push_back(Instr{Op::MaskEnd});
+        continue;
+      }
+      const IrInst& in = n.inst;
+      if (!pixelInst(in, varying_depth)) continue;
+      Instr out{in.op, static_cast<uint16_t>(in.imm), pixelOperand(in.dst), pixelOperand(in.a),
+                pixelOperand(in.b), pixelOperand(in.c)};
+      pixel_.code.push_back(out);
+    }
+  }
+};
+
+}  // namespace
+
+CodegenResult generateCode(const IrFunction& f) {
+  Generator g(f);
+  return g.run();
+}
+
+}  // namespace pf

@@ -1,0 +1,19 @@
+// Code generation: IR -> the two programs of a primitive (the setup / per-pixel split).
+//   setup: every uniform value that something needs, and the effects of the whole instance
+//          (bound, kill); varying control flow is flattened (its uniform values are pure).
+//   pixel: every varying value and per-pixel effect, with uniform control flow as jumps on
+//          values exported by setup, and varying control flow as execution masks.
+#pragma once
+
+#include "compiler/ir.h"
+
+namespace pf {
+
+struct CodegenResult {
+  SetupProgram setup;
+  PixelProgram pixel;
+};
+
+CodegenResult generateCode(const IrFunction& f);
+
+}  // namespace pf

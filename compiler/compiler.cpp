@@ -1,0 +1,47 @@
+// The compiler driver: lex -> parse -> analyze -> lower -> generate, per primitive.
+#include "compiler/compiler.h"
+
+#include "compiler/ast_print.h"
+#include "compiler/lower.h"
+#include "compiler/parser.h"
+#include "compiler/sema.h"
+
+namespace pf {
+
+bool compileSource(const std::string& filename, const std::string& text, CompiledModule& out,
+                   DiagnosticLog& log, EmitStage emit, std::string* listing) {
+  const SourceFile& file = log.addSource(filename, text);
+  Program program = parse(file, log);
+  if (log.hasErrors()) return false;
+  if (emit == EmitStage::Ast && listing) *listing += printAst(program);
+  if (!analyze(program, log)) return false;
+  for (const Unit& u : program.units) {
+    if (u.kind == UnitKind::Interpolator) {
+      out.interpolators.push_back(u.name);
+      continue;
+    }
+    IrFunction ir;
+    if (!lowerPrimitive(u, ir, log)) return false;
+    CodegenResult code = generateCode(ir);
+    auto prim = std::make_shared<CompiledPrimitive>();
+    prim->name = u.name;
+    prim->params = ir.params;
+    prim->param_floats = ir.param_floats;
+    prim->sequence_points = ir.sequence_points;
+    prim->has_interp_data = ir.has_interp_data;
+    prim->kinds_handled = ir.kinds_handled;
+    prim->setup = std::move(code.setup);
+    prim->pixel = std::move(code.pixel);
+    if (listing) {
+      if (emit == EmitStage::Ir) *listing += "primitive " + u.name + ":\n" + dumpIr(ir);
+      if (emit == EmitStage::Setup)
+        *listing += "primitive " + u.name + ": setup program (once per instance)\n" + disassemble(prim->setup, false);
+      if (emit == EmitStage::Pixel)
+        *listing += "primitive " + u.name + ": pixel program (per 8x8 block, masked)\n" + disassemble(prim->pixel, true);
+    }
+    out.primitives.push_back(std::move(prim));
+  }
+  return true;
+}
+
+}  // namespace pf

@@ -1,0 +1,70 @@
+// The intermediate representation between the AST and the two bytecode programs.
+//
+// Structured three-address code: a tree of blocks, each a sequence of instructions and ifs.
+// Every Value is defined once on any path (lowering renames variables at each assignment and
+// places merge copies at the end of both branches of an if), so a uniform Value has one value
+// per instance and can be passed from the setup program to the pixel program as it is.
+// Each Value knows whether it is varying: that is the setup / per-pixel split.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "compiler/diagnostics.h"
+#include "compiler/isa.h"
+#include "compiler/types.h"
+
+namespace pf {
+
+enum class ValueClass : uint8_t { F32, I32, Bool, Interp };
+
+struct Value {
+  ValueClass cls = ValueClass::F32;
+  bool varying = false;
+  enum class Origin : uint8_t { Temp, Const, Param, Builtin } origin = Origin::Temp;
+  uint32_t bits = 0;   // Const: the 32-bit pattern
+  int index = -1;      // Param: slot in the parameter block; Builtin: kRegX / kRegY / kRegZ
+};
+
+struct IrInst {
+  Op op;
+  int dst = -1;
+  int a = -1, b = -1, c = -1, d = -1;  // Value ids (d: 4th operand of Bound)
+  int imm = 0;
+  SourceLoc loc;
+};
+
+struct IrNode;
+using IrBlock = std::vector<IrNode>;
+
+struct IrNode {
+  enum class Kind { Inst, If } kind = Kind::Inst;
+  IrInst inst;
+  int cond = -1;  // If: a Bool value
+  std::unique_ptr<IrBlock> then_block, else_block;
+};
+
+// A parameter of a primitive, as the API must supply it.
+struct ParamInfo {
+  std::string name;
+  Type type;                // declared type (for per-sequence-point params: with the [n])
+  bool per_sequence_point;  // array parameters: outermost index = sequence point
+  int offset;               // first float of this parameter in the instance's parameter block
+  int components;           // floats per sequence point (or in total, for per-primitive ones)
+};
+
+struct IrFunction {
+  std::string name;
+  std::vector<Value> values;
+  IrBlock body;
+  std::vector<ParamInfo> params;
+  int param_floats = 0;       // size of the parameter block
+  int sequence_points = 1;    // sequence points per instance
+  bool has_interp_data = false;
+  InterpKindSet kinds_handled = 0;  // labels of its interpolation construct
+};
+
+std::string dumpIr(const IrFunction& f);
+
+}  // namespace pf

@@ -1,0 +1,83 @@
+// Names and listings of the bytecode instructions (isa.h).
+#include "compiler/isa.h"
+
+#include <cstring>
+
+namespace pf {
+
+const char* opName(Op op) {
+  static const char* names[] = {
+      "fadd", "fsub", "fmul", "fdiv", "fmin", "fmax", "fneg", "fabs", "ffloor", "fceil", "fsqrt",
+      "fsign", "iadd", "isub", "imul", "idiv", "imod", "ineg", "imin", "imax", "iabs", "i2f",
+      "f2i", "flt", "fle", "feq", "fne", "ilt", "ile", "ieq", "ine", "band", "bor", "bnot", "sel",
+      "mov", "xadd", "xsub", "xneg", "xmulf", "xdivf", "xmov", "xloadvertex", "loadstate",
+      "bound", "kill", "retire", "ztest", "interp_return", "interp_shared", "zcommit", "jmp",
+      "jmpifnot", "maskif", "maskelse", "maskend", "jmpifnone"};
+  static_assert(sizeof(names) / sizeof(names[0]) == static_cast<size_t>(Op::OpCount));
+  return names[static_cast<size_t>(op)];
+}
+
+namespace {
+
+bool isInterpOp(Op op) {
+  return op == Op::XAdd || op == Op::XSub || op == Op::XNeg || op == Op::XMulF ||
+         op == Op::XDivF || op == Op::XMov || op == Op::XLoadVertex || op == Op::InterpReturn;
+}
+
+std::string operandText(uint32_t o, const Bytecode& b, bool pixel, bool interp) {
+  if (o == kNoOperand) return "";
+  uint32_t i = operandIndex(o);
+  switch (operandKind(o)) {
+    case OperandKind::Reg:
+      if (pixel && !interp && i == kRegX) return "X";
+      if (pixel && !interp && i == kRegY) return "Y";
+      if (pixel && !interp && i == kRegZ) return "Z";
+      return std::string(interp ? "x" : (pixel ? "v" : "r")) + std::to_string(i);
+    case OperandKind::Uniform: return std::string(interp ? "ux" : "u") + std::to_string(i);
+    case OperandKind::Param: return "p" + std::to_string(i);
+    case OperandKind::Const: {
+      uint32_t bits = i < b.constants.size() ? b.constants[i] : 0;
+      float f;
+      std::memcpy(&f, &bits, 4);
+      char buf[48];
+      std::snprintf(buf, sizeof buf, "#%g", static_cast<double>(f));
+      return buf;
+    }
+  }
+  return "?";
+}
+
+}  // namespace
+
+std::string disassemble(const Bytecode& b, bool pixel) {
+  std::string out;
+  for (size_t pc = 0; pc < b.code.size(); ++pc) {
+    const Instr& in = b.code[pc];
+    char head[32];
+    std::snprintf(head, sizeof head, "%4zu  ", pc);
+    out += head;
+    out += opName(in.op);
+    bool xi = isInterpOp(in.op);
+    std::vector<std::string> parts;
+    bool is_jump = in.op == Op::Jmp || in.op == Op::JmpIfNot || in.op == Op::JmpIfNone;
+    if (in.dst != kNoOperand && in.op != Op::Bound)
+      parts.push_back(operandText(in.dst, b, pixel, xi && in.op != Op::InterpReturn));
+    if (is_jump) {
+      parts.push_back("@" + std::to_string(in.a));
+    } else if (in.a != kNoOperand) {
+      parts.push_back(operandText(in.a, b, pixel, xi && in.op != Op::XLoadVertex));
+    }
+    bool b_is_float = in.op == Op::XMulF || in.op == Op::XDivF;
+    if (in.b != kNoOperand) parts.push_back(operandText(in.b, b, pixel, xi && !b_is_float));
+    if (in.c != kNoOperand) parts.push_back(operandText(in.c, b, pixel, false));
+    if (in.op == Op::Bound) parts.push_back(operandText(in.dst, b, pixel, false));
+    if (in.op == Op::XLoadVertex || in.op == Op::LoadState || in.op == Op::InterpReturn ||
+        in.op == Op::InterpShared)
+      parts.push_back("imm=" + std::to_string(in.imm));
+    for (size_t k = 0; k < parts.size(); ++k) out += (k ? ", " : " ") + parts[k];
+    out += "\n";
+  }
+  return out;
+}
+
+}  // namespace pf

@@ -1,0 +1,98 @@
+// The instruction set that compiled primitives run on: one bytecode for both programs a
+// primitive compiles to. The setup program runs it scalar, once per instance; the pixel program
+// runs it over wide registers (one value per lane of a pixel block) under an execution mask.
+// The executors are in raster/ (setup_executor.cpp, pixel_executor.cpp).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "compiler/types.h"
+
+namespace pf {
+
+enum class Op : uint8_t {
+  // float arithmetic
+  FAdd, FSub, FMul, FDiv, FMin, FMax, FNeg, FAbs, FFloor, FCeil, FSqrt, FSign,
+  // int arithmetic (division and remainder by zero give 0: a masked-off lane must not trap)
+  IAdd, ISub, IMul, IDiv, IMod, INeg, IMin, IMax, IAbs,
+  I2F, F2I,
+  // comparisons produce bool (0 or 1)
+  FLt, FLe, FEq, FNe, ILt, ILe, IEq, INe,
+  BAnd, BOr, BNot,
+  Sel,  // dst = a ? b : c  (any 32-bit class)
+  Mov,
+  // interpolator_data: one value per shading-parameter channel of the instance
+  XAdd, XSub, XNeg, XMulF, XDivF, XMov,
+  XLoadVertex,  // dst = the channels of sequence point `imm`
+  // state of the instance's GL context: imm = StateValue
+  LoadState,
+  // effects
+  Bound,         // setup: screen bound (a, b, c, dst) = (xmin, ymin, xmax, ymax)
+  Kill,          // setup: the instance draws nothing
+  Retire,        // pixel: the active lanes leave the program without writing anything
+  ZTest,         // pixel: dst = the context's depth test of a against the depth buffer
+  InterpReturn,  // pixel: write channels of kinds `imm` (bit set) from interp operand a
+  InterpShared,  // pixel: run the shared interpolators bound to channels of kinds `imm`
+  ZCommit,       // pixel: a is the Z to write for lanes alive at the end
+  // control flow (targets are instruction indices)
+  Jmp,           // to a
+  JmpIfNot,      // if uniform b is false, to a
+  MaskIf,        // push: active &= varying b
+  MaskElse,      // active = enclosing & !b
+  MaskEnd,       // pop
+  JmpIfNone,     // if no lane is active, to a
+  OpCount
+};
+
+const char* opName(Op op);
+
+// Values of the GL context that programs can read (screen() and depth_range() use these).
+enum class StateValue : uint16_t {
+  ViewportScaleX, ViewportOffsetX, ViewportScaleY, ViewportOffsetY, DepthScale, DepthOffset,
+  DepthNear, DepthFar
+};
+
+// An operand: a kind in the top 2 bits, an index below.
+enum class OperandKind : uint32_t { Reg = 0, Uniform = 1, Const = 2, Param = 3 };
+constexpr uint32_t kNoOperand = 0xffffffffu;
+inline uint32_t makeOperand(OperandKind k, uint32_t index) {
+  return (static_cast<uint32_t>(k) << 30) | index;
+}
+inline OperandKind operandKind(uint32_t o) { return static_cast<OperandKind>(o >> 30); }
+inline uint32_t operandIndex(uint32_t o) { return o & 0x3fffffffu; }
+
+struct Instr {
+  Op op;
+  uint16_t imm = 0;
+  uint32_t dst = kNoOperand;
+  uint32_t a = kNoOperand, b = kNoOperand, c = kNoOperand;
+};
+
+// The registers of the pixel program that hold the built-ins before the first instruction.
+constexpr uint32_t kRegX = 0, kRegY = 1, kRegZ = 2, kFirstFreePixelReg = 3;
+
+struct Bytecode {
+  std::vector<Instr> code;
+  std::vector<uint32_t> constants;  // 32-bit patterns: float, int or bool (0/1)
+  uint32_t num_regs = 0;            // scalar registers (setup) or wide registers (pixel)
+  uint32_t num_interp_regs = 0;     // interpolator_data registers (each: one per channel)
+};
+
+// Where the setup program leaves a value for the pixel program: the instance's uniform record
+// holds `scalar_exports.size()` 32-bit slots, then `interp_exports.size()` channel vectors.
+struct SetupProgram : Bytecode {
+  std::vector<uint32_t> scalar_exports;  // setup operand whose value fills record slot i
+  std::vector<uint32_t> interp_exports;  // setup interp register for interp record slot i
+};
+
+struct PixelProgram : Bytecode {
+  uint32_t num_uniform_slots = 0;
+  uint32_t num_interp_uniform_slots = 0;
+};
+
+// Readable listing, used by `pfc --emit=setup|pixel` and tests.
+std::string disassemble(const Bytecode& b, bool pixel);
+
+}  // namespace pf

@@ -1,0 +1,539 @@
+// Lowering from the AST to the IR. Variables do not exist in the IR: each assignment binds the
+// variable's name to new Values, and an `if` ends with merge copies wherever the two branches
+// left different bindings (SSA with the phis already placed as copies). A branch that ends in
+// `return` contributes nothing to the merge: its pixels (or, when uniform, its instance) are gone.
+#include "compiler/lower.h"
+
+#include <bit>
+#include <map>
+
+namespace pf {
+namespace {
+
+struct Binding {
+  Type type;
+  std::vector<int> comps;  // Value ids, one per scalar slot (per element for interpolator_data)
+  bool writable = true;
+};
+
+class Lowerer {
+ public:
+  Lowerer(IrFunction& f, DiagnosticLog& log) : f_(f), log_(log) {}
+
+  bool run(const Unit& u) {
+    f_.name = u.name;
+    scopes_.emplace_back();
+    // Built-ins.
+    bindBuiltin("X", kRegX, false);
+    bindBuiltin("Y", kRegY, false);
+    bindBuiltin("Z", kRegZ, true);
+    z_initial_ = bindings_[lookup("Z")].comps[0];
+    // Parameters: array parameters are per sequence point (outermost index), the rest per
+    // primitive. All per-sequence-point parameters must agree on the count.
+    int seq = 0;
+    SourceLoc seq_loc;
+    for (const Param& p : u.params) {
+      if (p.name == "X" || p.name == "Y" || p.name == "Z") continue;
+      if (p.type.isArray()) {
+        if (seq == 0) {
+          seq = p.type.dims[0];
+          seq_loc = p.loc;
+        } else if (p.type.dims[0] != seq) {
+          log_.error(p.loc, "parameter '" + p.name + "' has " + std::to_string(p.type.dims[0]) +
+                                " sequence points, but '" + u.params.front().name + "' at line " +
+                                std::to_string(seq_loc.line) + " has " + std::to_string(seq) +
+                                ": all array parameters are indexed by the instance's sequence points");
+          return false;
+        }
+      }
+    }
+    f_.sequence_points = seq > 0 ? seq : 1;
+    blocks_.push_back(&f_.body);
+    for (const Param& p : u.params) {
+      if (p.name == "X" || p.name == "Y" || p.name == "Z") continue;
+      Binding b;
+      b.type = p.type;
+      b.writable = false;
+      if (p.type.base == BaseType::InterpData) {
+        f_.has_interp_data = true;
+        // The channels of every sequence point, loaded once at entry (dead ones are dropped).
+        for (int i = 0; i < p.type.dims[0]; ++i)
+          b.comps.push_back(emit(Op::XLoadVertex, ValueClass::Interp, false, -1, -1, -1, i));
+      } else {
+        ParamInfo info;
+        info.name = p.name;
+        info.type = p.type;
+        info.per_sequence_point = p.type.isArray();
+        info.offset = f_.param_floats;
+        info.components = info.per_sequence_point ? p.type.slotCount() / p.type.dims[0] : p.type.slotCount();
+        ValueClass cls = p.type.base == BaseType::Int ? ValueClass::I32
+                         : p.type.base == BaseType::Bool ? ValueClass::Bool : ValueClass::F32;
+        for (int k = 0; k < p.type.slotCount(); ++k) {
+          Value v;
+          v.cls = cls;
+          v.origin = Value::Origin::Param;
+          v.index = f_.param_floats + k;
+          b.comps.push_back(newValue(v));
+        }
+        f_.param_floats += p.type.slotCount();
+        f_.params.push_back(info);
+      }
+      scopes_.back()[p.name] = static_cast<int>(bindings_.size());
+      bindings_.push_back(std::move(b));
+    }
+    bool terminated = statements(u.body);
+    if (!terminated) {
+      int z = bindings_[lookup("Z")].comps[0];
+      if (z != z_initial_) emitEffect(Op::ZCommit, z, -1, -1, -1, 0, u.loc);
+    }
+    return !log_.hasErrors();
+  }
+
+ private:
+  IrFunction& f_;
+  DiagnosticLog& log_;
+  std::vector<std::map<std::string, int>> scopes_;
+  std::vector<Binding> bindings_;
+  std::vector<IrBlock*> blocks_;
+  int varying_depth_ = 0;
+  InterpKindSet interp_kinds_ = kAllInterpKinds;
+  int z_initial_ = -1;
+  std::map<std::pair<int, uint32_t>, int> constants_;
+
+  int newValue(const Value& v) {
+    f_.values.push_back(v);
+    return static_cast<int>(f_.values.size()) - 1;
+  }
+
+  void bindBuiltin(const std::string& name, uint32_t reg, bool writable) {
+    Value v;
+    v.cls = ValueClass::F32;
+    v.varying = true;
+    v.origin = Value::Origin::Builtin;
+    v.index = static_cast<int>(reg);
+    Binding b;
+    b.type = Type::of(BaseType::Float);
+    b.comps.push_back(newValue(v));
+    b.writable = writable;
+    scopes_.back()[name] = static_cast<int>(bindings_.size());
+    bindings_.push_back(std::move(b));
+  }
+
+  int lookup(const std::string& name) const {
+    for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it) {
+      auto f = it->find(name);
+      if (f != it->end()) return f->second;
+    }
+    return -1;
+  }
+
+  int constant(ValueClass cls, uint32_t bits) {
+    auto key = std::make_pair(static_cast<int>(cls), bits);
+    auto it = constants_.find(key);
+    if (it != constants_.end()) return it->second;
+    Value v;
+    v.cls = cls;
+    v.origin = Value::Origin::Const;
+    v.bits = bits;
+    int id = newValue(v);
+    constants_[key] = id;
+    return id;
+  }
+  int constF(float x) { return constant(ValueClass::F32, std::bit_cast<uint32_t>(x)); }
+  int constI(int32_t x) { return constant(ValueClass::I32, static_cast<uint32_t>(x)); }
+  int constB(bool x) { return constant(ValueClass::Bool, x ? 1u : 0u); }
+
+  bool isVarying(int v) const { return v >= 0 && f_.values[v].varying; }
+  ValueClass cls(int v) const { return f_.values[v].cls; }
+
+  int emit(Op op, ValueClass c, bool varying, int a, int b = -1, int cc = -1, int imm = 0,
+           SourceLoc loc = {}) {
+    Value v;
+    v.cls = c;
+    v.varying = varying || isVarying(a) || isVarying(b) || isVarying(cc);
+    int dst = newValue(v);
+    IrNode n;
+    n.inst = IrInst{op, dst, a, b, cc, -1, imm, loc};
+    blocks_.back()->push_back(std::move(n));
+    return dst;
+  }
+  void emitEffect(Op op, int a, int b, int c, int d, int imm, SourceLoc loc) {
+    IrNode n;
+    n.inst = IrInst{op, -1, a, b, c, d, imm, loc};
+    blocks_.back()->push_back(std::move(n));
+  }
+
+  int toFloat(int v) {
+    if (cls(v) == ValueClass::F32) return v;
+    if (f_.values[v].origin == Value::Origin::Const)
+      return constF(static_cast<float>(static_cast<int32_t>(f_.values[v].bits)));
+    return emit(Op::I2F, ValueClass::F32, false, v);
+  }
+
+  // Converts a lowered value to the declared type `to` (int -> float where needed).
+  std::vector<int> convert(const Binding& from, const Type& to) {
+    std::vector<int> out = from.comps;
+    if (to.base == BaseType::Float || (to.isAggregate() && to.base != BaseType::InterpData))
+      for (int& c : out)
+        if (cls(c) == ValueClass::I32) c = toFloat(c);
+    return out;
+  }
+
+  // ---- statements: return true if the block always ends in `return` ----
+  bool statements(const std::vector<StmtPtr>& body) {
+    for (const StmtPtr& s : body)
+      if (statement(*s)) return true;  // the rest is unreachable
+    return false;
+  }
+
+  bool scoped(const std::vector<StmtPtr>& body) {
+    scopes_.emplace_back();
+    bool t = statements(body);
+    scopes_.pop_back();
+    return t;
+  }
+
+  bool statement(const Stmt& s) {
+    switch (s.kind) {
+      case StmtKind::Block:
+        return s.op == "decls" ? statements(s.body) : scoped(s.body);
+      case StmtKind::Decl: {
+        Binding b;
+        b.type = s.decl_type;
+        if (s.value) {
+          Binding v = expr(*s.value);
+          b.comps = convert(v, s.decl_type);
+        } else if (s.decl_type.base == BaseType::InterpData) {
+          log_.error(s.loc, "an interpolator_data variable must be initialised where it is declared");
+          return false;
+        } else {
+          // Locals start at zero, so no path can read an undefined value.
+          ValueClass c = s.decl_type.base == BaseType::Int ? ValueClass::I32
+                         : s.decl_type.base == BaseType::Bool ? ValueClass::Bool : ValueClass::F32;
+          int zero = constant(c, 0);
+          b.comps.assign(s.decl_type.slotCount(), zero);
+        }
+        scopes_.back()[s.name] = static_cast<int>(bindings_.size());
+        bindings_.push_back(std::move(b));
+        return false;
+      }
+      case StmtKind::Assign: assign(s); return false;
+      case StmtKind::ExprStmt: expr(*s.value); return false;
+      case StmtKind::If: return ifStatement(s);
+      case StmtKind::Return:
+        emitEffect(Op::Retire, -1, -1, -1, -1, 0, s.loc);
+        return true;
+      case StmtKind::Bound: {
+        int v[4];
+        for (int i = 0; i < 4; ++i) v[i] = toFloat(expr(*s.bound_args[i]).comps[0]);
+        emitEffect(Op::Bound, v[0], v[1], v[2], v[3], 0, s.loc);
+        return false;
+      }
+      case StmtKind::Interpolation: {
+        for (const InterpolationCase& c : s.cases) {
+          InterpKindSet set = 0;
+          for (InterpKind k : c.kinds) set |= 1u << static_cast<int>(k);
+          f_.kinds_handled |= set;
+          InterpKindSet save = interp_kinds_;
+          interp_kinds_ = set;
+          bool t = scoped(c.body);
+          interp_kinds_ = save;
+          if (t) {
+            log_.error(c.label_locs.front(), "an interpolation branch cannot end in 'return': the other branches must still run");
+            return false;
+          }
+        }
+        return false;
+      }
+      case StmtKind::InterpReturn:
+        if (s.value) {
+          int v = expr(*s.value).comps[0];
+          emitEffect(Op::InterpReturn, v, -1, -1, -1, static_cast<int>(interp_kinds_), s.loc);
+        } else {
+          emitEffect(Op::InterpShared, -1, -1, -1, -1, static_cast<int>(interp_kinds_), s.loc);
+        }
+        return false;
+    }
+    return false;
+  }
+
+  bool ifStatement(const Stmt& s) {
+    int cond = expr(*s.value).comps[0];
+    bool vary = isVarying(cond);
+    IrNode node;
+    node.kind = IrNode::Kind::If;
+    node.cond = cond;
+    node.inst.loc = s.loc;
+    node.then_block = std::make_unique<IrBlock>();
+    node.else_block = std::make_unique<IrBlock>();
+    std::vector<Binding> before = bindings_;
+    if (vary) ++varying_depth_;
+    blocks_.push_back(node.then_block.get());
+    bool then_done = scoped(s.body);
+    blocks_.pop_back();
+    std::vector<Binding> after_then = bindings_;
+    bindings_ = before;
+    blocks_.push_back(node.else_block.get());
+    bool else_done = scoped(s.else_body);
+    blocks_.pop_back();
+    std::vector<Binding> after_else = std::move(bindings_);
+    if (vary) --varying_depth_;
+
+    bindings_ = before;
+    for (size_t i = 0; i < before.size(); ++i) {
+      for (size_t k = 0; k < before[i].comps.size(); ++k) {
+        int t = after_then[i].comps[k], e = after_else[i].comps[k];
+        if (then_done && else_done) break;
+        if (then_done) { bindings_[i].comps[k] = e; continue; }
+        if (else_done) { bindings_[i].comps[k] = t; continue; }
+        if (t == e) { bindings_[i].comps[k] = t; continue; }
+        // Merge: a new value assigned at the end of each branch.
+        Value m;
+        m.cls = cls(t);
+        m.varying = vary || isVarying(t) || isVarying(e);
+        int mid = newValue(m);
+        Op mov = m.cls == ValueClass::Interp ? Op::XMov : Op::Mov;
+        IrNode ct, ce;
+        ct.inst = IrInst{mov, mid, t, -1, -1, -1, static_cast<int>(kAllInterpKinds), s.loc};
+        ce.inst = IrInst{mov, mid, e, -1, -1, -1, static_cast<int>(kAllInterpKinds), s.loc};
+        node.then_block->push_back(std::move(ct));
+        node.else_block->push_back(std::move(ce));
+        bindings_[i].comps[k] = mid;
+      }
+    }
+    blocks_.back()->push_back(std::move(node));
+    return then_done && else_done;
+  }
+
+  // Resolves an assignment target to (binding index, first slot, slot count).
+  bool target(const Expr& e, int& bind, int& first, int& count) {
+    if (e.kind == ExprKind::Name) {
+      bind = lookup(e.name);
+      if (bind < 0) return false;
+      first = 0;
+      count = static_cast<int>(bindings_[bind].comps.size());
+      return true;
+    }
+    if (!target(*e.args[0], bind, first, count)) return false;
+    const Type& bt = e.args[0]->type;
+    if (e.kind == ExprKind::Member) {
+      first += static_cast<int>(e.number);
+      count = 1;
+      return true;
+    }
+    int idx = static_cast<int>(e.number);
+    if (bt.isArray()) {
+      int esz = bt.base == BaseType::InterpData ? 1 : bt.element().slotCount();
+      first += idx * esz;
+      count = esz;
+    } else {
+      first += idx;
+      count = 1;
+    }
+    return true;
+  }
+
+  void assign(const Stmt& s) {
+    int bind, first, count;
+    if (!target(*s.target, bind, first, count)) return;
+    Binding value;
+    if (s.op == "=") {
+      value = expr(*s.value);
+    } else {
+      Binding cur = expr(*s.target);
+      Binding rhs = expr(*s.value);
+      value = arith(s.op.substr(0, 1), cur, rhs, s.target->type, s.loc);
+    }
+    std::vector<int> comps = convert(value, s.target->type);
+    if (static_cast<int>(comps.size()) != count) return;  // type error already reported
+    for (int k = 0; k < count; ++k) bindings_[bind].comps[first + k] = comps[k];
+  }
+
+  // ---- expressions ----
+  Binding scalar(Type t, int v) {
+    Binding b;
+    b.type = t;
+    b.comps.push_back(v);
+    return b;
+  }
+
+  Binding expr(const Expr& e) {
+    switch (e.kind) {
+      case ExprKind::IntLit: return scalar(e.type, constI(static_cast<int32_t>(e.number)));
+      case ExprKind::FloatLit: return scalar(e.type, constF(static_cast<float>(e.number)));
+      case ExprKind::BoolLit: return scalar(e.type, constB(e.boolean));
+      case ExprKind::Name: return bindings_[lookup(e.name)];
+      case ExprKind::Member: {
+        Binding b = expr(*e.args[0]);
+        return scalar(e.type, b.comps[static_cast<size_t>(e.number)]);
+      }
+      case ExprKind::Index: {
+        Binding b = expr(*e.args[0]);
+        int idx = static_cast<int>(e.number);
+        Binding out;
+        out.type = e.type;
+        int esz = b.type.isArray() ? (b.type.base == BaseType::InterpData ? 1 : b.type.element().slotCount()) : 1;
+        out.comps.assign(b.comps.begin() + idx * esz, b.comps.begin() + (idx + 1) * esz);
+        return out;
+      }
+      case ExprKind::Unary: {
+        Binding a = expr(*e.args[0]);
+        if (e.name == "!") return scalar(e.type, emit(Op::BNot, ValueClass::Bool, false, a.comps[0]));
+        Binding out;
+        out.type = e.type;
+        for (int c : a.comps) {
+          ValueClass k = cls(c);
+          Op op = k == ValueClass::Interp ? Op::XNeg : k == ValueClass::I32 ? Op::INeg : Op::FNeg;
+          out.comps.push_back(emit(op, k, false, c, -1, -1, op == Op::XNeg ? static_cast<int>(interp_kinds_) : 0));
+        }
+        return out;
+      }
+      case ExprKind::Binary: return binary(e);
+      case ExprKind::Ternary: {
+        int c = expr(*e.args[0]).comps[0];
+        Binding a = expr(*e.args[1]);
+        Binding b = expr(*e.args[2]);
+        std::vector<int> ac = convert(a, e.type), bc = convert(b, e.type);
+        Binding out;
+        out.type = e.type;
+        for (size_t k = 0; k < ac.size(); ++k)
+          out.comps.push_back(emit(Op::Sel, cls(ac[k]), false, c, ac[k], bc[k]));
+        return out;
+      }
+      case ExprKind::Call: return call(e);
+    }
+    return {};
+  }
+
+  Binding binary(const Expr& e) {
+    const std::string& op = e.name;
+    Binding a = expr(*e.args[0]);
+    Binding b = expr(*e.args[1]);
+    if (op == "&&" || op == "||")
+      return scalar(e.type, emit(op == "&&" ? Op::BAnd : Op::BOr, ValueClass::Bool, false, a.comps[0], b.comps[0]));
+    if (op == "<" || op == "<=" || op == ">" || op == ">=" || op == "==" || op == "!=") {
+      int x = a.comps[0], y = b.comps[0];
+      bool ints = (cls(x) == ValueClass::I32 && cls(y) == ValueClass::I32) ||
+                  (cls(x) == ValueClass::Bool && cls(y) == ValueClass::Bool);
+      if (!ints) {
+        x = toFloat(x);
+        y = toFloat(y);
+      }
+      if (op == ">" || op == ">=") std::swap(x, y);
+      Op o = op == "<" || op == ">"   ? (ints ? Op::ILt : Op::FLt)
+             : op == "<=" || op == ">=" ? (ints ? Op::ILe : Op::FLe)
+             : op == "=="               ? (ints ? Op::IEq : Op::FEq)
+                                        : (ints ? Op::INe : Op::FNe);
+      return scalar(e.type, emit(o, ValueClass::Bool, false, x, y));
+    }
+    return arith(op, a, b, e.type, e.loc);
+  }
+
+  // + - * / % on scalars, aggregates (componentwise, scalars broadcast) and interpolator_data.
+  Binding arith(const std::string& op, const Binding& a, const Binding& b, const Type& result, SourceLoc loc) {
+    Binding out;
+    out.type = result;
+    if (result.base == BaseType::Void) return out;
+    if (result.base == BaseType::InterpData) {
+      int x = a.comps[0], y = b.comps[0];
+      int kinds = static_cast<int>(interp_kinds_);
+      if (cls(x) != ValueClass::Interp) std::swap(x, y);  // float * interp
+      Op o = op == "+" ? Op::XAdd : op == "-" ? Op::XSub : op == "*" ? Op::XMulF : Op::XDivF;
+      if (o == Op::XMulF || o == Op::XDivF) y = toFloat(y);
+      out.comps.push_back(emit(o, ValueClass::Interp, false, x, y, -1, kinds, loc));
+      return out;
+    }
+    bool ints = result.base == BaseType::Int;
+    size_t n = std::max(a.comps.size(), b.comps.size());
+    for (size_t k = 0; k < n; ++k) {
+      int x = a.comps[a.comps.size() == 1 ? 0 : k];
+      int y = b.comps[b.comps.size() == 1 ? 0 : k];
+      if (!ints) {
+        x = toFloat(x);
+        y = toFloat(y);
+      }
+      Op o;
+      if (op == "+") o = ints ? Op::IAdd : Op::FAdd;
+      else if (op == "-") o = ints ? Op::ISub : Op::FSub;
+      else if (op == "*") o = ints ? Op::IMul : Op::FMul;
+      else if (op == "/") o = ints ? Op::IDiv : Op::FDiv;
+      else o = Op::IMod;
+      if (o == Op::IMod && !ints) {
+        // float remainder: x - y * floor(x / y)
+        int q = emit(Op::FFloor, ValueClass::F32, false, emit(Op::FDiv, ValueClass::F32, false, x, y));
+        out.comps.push_back(emit(Op::FSub, ValueClass::F32, false, x, emit(Op::FMul, ValueClass::F32, false, y, q)));
+        continue;
+      }
+      out.comps.push_back(emit(o, ints ? ValueClass::I32 : ValueClass::F32, false, x, y));
+    }
+    return out;
+  }
+
+  int state(StateValue s) { return emit(Op::LoadState, ValueClass::F32, false, -1, -1, -1, static_cast<int>(s)); }
+
+  Binding call(const Expr& e) {
+    const std::string& f = e.name;
+    std::vector<Binding> args;
+    for (const ExprPtr& a : e.args) args.push_back(expr(*a));
+    auto arg = [&](size_t i) { return args[i].comps[0]; };
+    auto farg = [&](size_t i) { return toFloat(args[i].comps[0]); };
+    bool int_result = e.type.base == BaseType::Int;
+    if (f == "min" || f == "max") {
+      Op o = int_result ? (f == "min" ? Op::IMin : Op::IMax) : (f == "min" ? Op::FMin : Op::FMax);
+      int x = int_result ? arg(0) : farg(0), y = int_result ? arg(1) : farg(1);
+      return scalar(e.type, emit(o, int_result ? ValueClass::I32 : ValueClass::F32, false, x, y));
+    }
+    if (f == "clamp") {
+      int lo = emit(Op::FMax, ValueClass::F32, false, farg(0), farg(1));
+      return scalar(e.type, emit(Op::FMin, ValueClass::F32, false, lo, farg(2)));
+    }
+    if (f == "abs")
+      return int_result ? scalar(e.type, emit(Op::IAbs, ValueClass::I32, false, arg(0)))
+                        : scalar(e.type, emit(Op::FAbs, ValueClass::F32, false, farg(0)));
+    if (f == "floor") return scalar(e.type, emit(Op::FFloor, ValueClass::F32, false, farg(0)));
+    if (f == "ceil") return scalar(e.type, emit(Op::FCeil, ValueClass::F32, false, farg(0)));
+    if (f == "sqrt") return scalar(e.type, emit(Op::FSqrt, ValueClass::F32, false, farg(0)));
+    if (f == "sign") return scalar(e.type, emit(Op::FSign, ValueClass::F32, false, farg(0)));
+    if (f == "float") return scalar(e.type, farg(0));
+    if (f == "int")
+      return scalar(e.type, cls(arg(0)) == ValueClass::I32 ? arg(0) : emit(Op::F2I, ValueClass::I32, false, arg(0)));
+    if (f == "ztest") return scalar(e.type, emit(Op::ZTest, ValueClass::Bool, true, farg(0), -1, -1, 0, e.loc));
+    if (f == "depth_range") {
+      Binding out;
+      out.type = e.type;
+      out.comps = {state(StateValue::DepthNear), state(StateValue::DepthFar), constF(0.0f)};
+      return out;
+    }
+    if (f == "screen") {
+      // Homogeneous screen space: the viewport transform applied to (x, y, z, w) without the
+      // division by w, so that 2D-homogeneous rasterization works for vertices behind the eye.
+      const std::vector<int>& p = args[0].comps;
+      auto affine = [&](int comp, StateValue scale, StateValue offset) {
+        int s = emit(Op::FMul, ValueClass::F32, false, p[comp], state(scale));
+        int o = emit(Op::FMul, ValueClass::F32, false, p[3], state(offset));
+        return emit(Op::FAdd, ValueClass::F32, false, s, o);
+      };
+      Binding out;
+      out.type = e.type;
+      out.comps = {affine(0, StateValue::ViewportScaleX, StateValue::ViewportOffsetX),
+                   affine(1, StateValue::ViewportScaleY, StateValue::ViewportOffsetY),
+                   affine(2, StateValue::DepthScale, StateValue::DepthOffset), p[3]};
+      return out;
+    }
+    // constructors: point(x, y, z[, w]), vector(x, y, z), normal(x, y, z), color(r, g, b[, a])
+    Binding out;
+    out.type = e.type;
+    for (size_t i = 0; i < args.size(); ++i) out.comps.push_back(farg(i));
+    while (static_cast<int>(out.comps.size()) < Type::componentsOf(e.type.base)) out.comps.push_back(constF(1.0f));
+    return out;
+  }
+};
+
+}  // namespace
+
+bool lowerPrimitive(const Unit& unit, IrFunction& out, DiagnosticLog& log) {
+  Lowerer l(out, log);
+  return l.run(unit);
+}
+
+}  // namespace pf

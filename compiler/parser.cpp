@@ -1,0 +1,497 @@
+// Recursive-descent parser for the primitive language (grammar: docs/language.md).
+// Precedence, loosest first: ?:  ||  &&  == !=  < <= > >=  + -  * / %  unary  postfix.
+#include "compiler/parser.h"
+
+#include <cerrno>
+#include <cstdlib>
+
+namespace pf {
+namespace {
+
+constexpr int kMaxErrors = 20;
+constexpr int kMaxDepth = 200;  // nesting limit: deep input is an error, not a stack overflow
+
+class Parser {
+ public:
+  Parser(std::vector<Token> toks, DiagnosticLog& log) : t_(std::move(toks)), log_(log) {}
+
+  Program program() {
+    Program p;
+    while (!at(Tok::End)) {
+      try {
+        if (at(Tok::KwPrimitive) || at(Tok::KwInterpolator)) {
+          p.units.push_back(unit());
+        } else {
+          error(cur().loc, "expected 'primitive' or 'interpolator' at top level, found " + describe(cur()));
+          skipToUnit();
+        }
+      } catch (const Sync&) {
+        skipToUnit();
+      }
+    }
+    return p;
+  }
+
+ private:
+  struct Sync {};  // thrown after an error to resynchronise
+
+  std::vector<Token> t_;
+  size_t pos_ = 0;
+  DiagnosticLog& log_;
+  int depth_ = 0;
+
+  const Token& cur() const { return t_[pos_]; }
+  const Token& next() const { return t_[std::min(pos_ + 1, t_.size() - 1)]; }
+  bool at(Tok k) const { return cur().kind == k; }
+  Token take() {
+    Token tk = cur();
+    if (pos_ + 1 < t_.size()) ++pos_;
+    return tk;
+  }
+  bool accept(Tok k) {
+    if (!at(k)) return false;
+    take();
+    return true;
+  }
+  static std::string describe(const Token& tk) {
+    if (tk.kind == Tok::End) return "end of file";
+    if (tk.kind == Tok::Ident || tk.kind == Tok::IntLit || tk.kind == Tok::FloatLit)
+      return "'" + tk.text + "'";
+    return tokenName(tk.kind);
+  }
+  [[noreturn]] void fail(SourceLoc loc, const std::string& msg) {
+    error(loc, msg);
+    throw Sync{};
+  }
+  void error(SourceLoc loc, const std::string& msg) {
+    log_.error(loc, msg);
+    if (log_.errorCount() >= kMaxErrors) throw CompileAbort{};
+  }
+  Token expect(Tok k, const char* context) {
+    if (!at(k))
+      fail(cur().loc, std::string("expected ") + tokenName(k) + " " + context + ", found " + describe(cur()));
+    return take();
+  }
+  void skipToUnit() {
+    while (!at(Tok::End) && !at(Tok::KwPrimitive) && !at(Tok::KwInterpolator)) take();
+  }
+  // After an error inside a block: skip past the next ';' or to a '}' at this level.
+  void skipStatement() {
+    int nest = 0;
+    while (!at(Tok::End)) {
+      if (at(Tok::LBrace)) ++nest;
+      if (at(Tok::RBrace)) {
+        if (nest == 0) return;
+        --nest;
+      }
+      if (at(Tok::Semi) && nest == 0) {
+        take();
+        return;
+      }
+      take();
+    }
+  }
+
+  struct DepthGuard {
+    Parser& p;
+    DepthGuard(Parser& parser, SourceLoc loc) : p(parser) {
+      if (++p.depth_ > kMaxDepth) {
+        p.depth_ = 0;
+        p.error(loc, "nesting too deep (more than " + std::to_string(kMaxDepth) + " levels)");
+        throw CompileAbort{};
+      }
+    }
+    ~DepthGuard() { if (p.depth_ > 0) --p.depth_; }
+  };
+
+  static bool isTypeToken(Tok k) {
+    switch (k) {
+      case Tok::KwFloat: case Tok::KwInt: case Tok::KwBool: case Tok::KwPoint:
+      case Tok::KwVector: case Tok::KwNormal: case Tok::KwColor: case Tok::KwInterpolatorData:
+        return true;
+      default: return false;
+    }
+  }
+  static bool isQualifierToken(Tok k) {
+    return k == Tok::KwUniform || k == Tok::KwVarying || k == Tok::KwInout;
+  }
+  static BaseType baseOf(Tok k) {
+    switch (k) {
+      case Tok::KwFloat: return BaseType::Float;
+      case Tok::KwInt: return BaseType::Int;
+      case Tok::KwBool: return BaseType::Bool;
+      case Tok::KwPoint: return BaseType::Point;
+      case Tok::KwVector: return BaseType::Vector;
+      case Tok::KwNormal: return BaseType::Normal;
+      case Tok::KwColor: return BaseType::Color;
+      case Tok::KwInterpolatorData: return BaseType::InterpData;
+      default: return BaseType::Void;
+    }
+  }
+
+  Qualifier qualifiers() {
+    bool uni = false, var = false, inout = false;
+    SourceLoc first = cur().loc;
+    while (isQualifierToken(cur().kind)) {
+      Token q = take();
+      if (q.kind == Tok::KwUniform) uni = true;
+      if (q.kind == Tok::KwVarying) var = true;
+      if (q.kind == Tok::KwInout) inout = true;
+    }
+    if (uni && var) error(first, "a declaration cannot be both 'uniform' and 'varying'");
+    if (inout) return var ? Qualifier::InoutVarying : Qualifier::Inout;
+    if (var) return Qualifier::Varying;
+    if (uni) return Qualifier::Uniform;
+    return Qualifier::None;
+  }
+
+  Type baseType() {
+    if (!isTypeToken(cur().kind)) fail(cur().loc, "expected a type, found " + describe(cur()));
+    return Type::of(baseOf(take().kind));
+  }
+
+  void arrayDims(Type& t) {
+    while (at(Tok::LBracket)) {
+      SourceLoc loc = take().loc;
+      if (!at(Tok::IntLit)) fail(cur().loc, "expected an array size (a positive integer), found " + describe(cur()));
+      Token n = take();
+      long v = std::strtol(n.text.c_str(), nullptr, 10);
+      if (v <= 0 || v > 65536) fail(n.loc, "array size must be between 1 and 65536");
+      t.dims.push_back(static_cast<int>(v));
+      expect(Tok::RBracket, "after the array size");
+      (void)loc;
+    }
+  }
+
+  Unit unit() {
+    Unit u;
+    Token kw = take();
+    u.kind = kw.kind == Tok::KwPrimitive ? UnitKind::Primitive : UnitKind::Interpolator;
+    u.loc = kw.loc;
+    u.name = expect(Tok::Ident, "after 'primitive'/'interpolator' (the unit's name)").text;
+    expect(Tok::LParen, "to open the parameter list");
+    while (!at(Tok::RParen)) {
+      Qualifier q = qualifiers();
+      Type base = baseType();
+      do {
+        Param p;
+        p.loc = cur().loc;
+        p.qualifier = q;
+        p.type = base;
+        p.name = expect(Tok::Ident, "(a parameter name)").text;
+        arrayDims(p.type);
+        u.params.push_back(std::move(p));
+      } while (accept(Tok::Comma));
+      if (!accept(Tok::Semi)) break;
+    }
+    expect(Tok::RParen, "to close the parameter list");
+    u.body = block();
+    return u;
+  }
+
+  std::vector<StmtPtr> block() {
+    expect(Tok::LBrace, "to open a block");
+    std::vector<StmtPtr> out;
+    while (!at(Tok::RBrace) && !at(Tok::End)) {
+      try {
+        out.push_back(statement());
+      } catch (const Sync&) {
+        skipStatement();
+      }
+    }
+    expect(Tok::RBrace, "to close the block");
+    return out;
+  }
+
+  StmtPtr make(StmtKind k, SourceLoc loc) {
+    auto s = std::make_unique<Stmt>();
+    s->kind = k;
+    s->loc = loc;
+    return s;
+  }
+
+  StmtPtr statement() {
+    DepthGuard guard(*this, cur().loc);
+    SourceLoc loc = cur().loc;
+    if (at(Tok::LBrace)) {
+      auto s = make(StmtKind::Block, loc);
+      s->body = block();
+      return s;
+    }
+    if (isQualifierToken(cur().kind) || isTypeToken(cur().kind)) {
+      // `float(x)` is a conversion expression, not a declaration.
+      if (!(isTypeToken(cur().kind) && next().kind == Tok::LParen)) return declaration();
+    }
+    if (accept(Tok::KwIf)) {
+      auto s = make(StmtKind::If, loc);
+      expect(Tok::LParen, "after 'if'");
+      s->value = expression();
+      expect(Tok::RParen, "after the condition");
+      s->body.push_back(statement());
+      if (accept(Tok::KwElse)) {
+        s->has_else = true;
+        s->else_body.push_back(statement());
+      }
+      return s;
+    }
+    if (accept(Tok::KwReturn)) {
+      auto s = make(StmtKind::Return, loc);
+      if (!at(Tok::Semi))
+        fail(cur().loc, "a primitive's 'return' takes no value (use interpolator_return to return a shading value)");
+      take();
+      return s;
+    }
+    if (accept(Tok::KwBound)) {
+      auto s = make(StmtKind::Bound, loc);
+      expect(Tok::LParen, "after 'bound'");
+      for (int i = 0; i < 4; ++i) {
+        if (i) expect(Tok::Comma, "between bound(xmin, ymin, xmax, ymax) arguments");
+        s->bound_args.push_back(expression());
+      }
+      expect(Tok::RParen, "after bound(xmin, ymin, xmax, ymax)");
+      expect(Tok::Semi, "after the bound statement");
+      return s;
+    }
+    if (accept(Tok::KwInterpolatorReturn)) {
+      auto s = make(StmtKind::InterpReturn, loc);
+      if (accept(Tok::LParen)) {
+        s->value = expression();
+        expect(Tok::RParen, "after the interpolator_return value");
+      }
+      expect(Tok::Semi, "after interpolator_return");
+      return s;
+    }
+    if (accept(Tok::KwInterpolation)) return interpolation(loc);
+    // assignment or expression statement
+    ExprPtr e = expression();
+    if (at(Tok::Assign) || at(Tok::PlusAssign) || at(Tok::MinusAssign) || at(Tok::StarAssign) ||
+        at(Tok::SlashAssign)) {
+      auto s = make(StmtKind::Assign, loc);
+      s->op = take().text;
+      s->target = std::move(e);
+      s->value = expression();
+      expect(Tok::Semi, "after the assignment");
+      return s;
+    }
+    auto s = make(StmtKind::ExprStmt, loc);
+    s->value = std::move(e);
+    expect(Tok::Semi, "after the expression");
+    return s;
+  }
+
+  StmtPtr declaration() {
+    SourceLoc loc = cur().loc;
+    Qualifier q = qualifiers();
+    Type base = baseType();
+    auto block = make(StmtKind::Block, loc);  // several declarators become a block of Decls
+    do {
+      auto s = make(StmtKind::Decl, cur().loc);
+      s->qualifier = q;
+      s->decl_type = base;
+      s->name = expect(Tok::Ident, "(a variable name)").text;
+      arrayDims(s->decl_type);
+      if (accept(Tok::Assign)) s->value = expression();
+      block->body.push_back(std::move(s));
+    } while (accept(Tok::Comma));
+    expect(Tok::Semi, "after the declaration");
+    if (block->body.size() == 1) return std::move(block->body[0]);
+    block->op = "decls";  // marks a declaration group: no new scope
+    return block;
+  }
+
+  StmtPtr interpolation(SourceLoc loc) {
+    auto s = make(StmtKind::Interpolation, loc);
+    expect(Tok::LBrace, "after 'interpolation'");
+    while (!at(Tok::RBrace) && !at(Tok::End)) {
+      InterpolationCase c;
+      // one or more labels
+      bool any = false;
+      while (at(Tok::KwPerspectiveLinear) || at(Tok::KwLinear) || at(Tok::KwDefault)) {
+        Token lab = take();
+        c.label_locs.push_back(lab.loc);
+        c.kinds.push_back(lab.kind == Tok::KwPerspectiveLinear ? InterpKind::PerspectiveLinear
+                          : lab.kind == Tok::KwLinear          ? InterpKind::Linear
+                                                               : InterpKind::Shared);
+        expect(Tok::Colon, "after the interpolation label");
+        any = true;
+      }
+      if (!any)
+        fail(cur().loc, "expected an interpolation label ('perspective_linear:', 'linear:' or 'default:'), found " + describe(cur()));
+      while (!at(Tok::RBrace) && !at(Tok::End) && !at(Tok::KwPerspectiveLinear) &&
+             !at(Tok::KwLinear) && !at(Tok::KwDefault)) {
+        try {
+          c.body.push_back(statement());
+        } catch (const Sync&) {
+          skipStatement();
+        }
+      }
+      s->cases.push_back(std::move(c));
+    }
+    expect(Tok::RBrace, "to close the interpolation construct");
+    return s;
+  }
+
+  // ---- expressions ----
+  ExprPtr makeExpr(ExprKind k, SourceLoc loc) {
+    auto e = std::make_unique<Expr>();
+    e->kind = k;
+    e->loc = loc;
+    return e;
+  }
+
+  ExprPtr expression() {
+    DepthGuard guard(*this, cur().loc);
+    return ternary();
+  }
+
+  ExprPtr ternary() {
+    ExprPtr c = binary(0);
+    if (at(Tok::Question)) {
+      SourceLoc loc = take().loc;
+      auto e = makeExpr(ExprKind::Ternary, loc);
+      e->args.push_back(std::move(c));
+      e->args.push_back(expression());
+      expect(Tok::Colon, "in the conditional expression");
+      e->args.push_back(expression());
+      return e;
+    }
+    return c;
+  }
+
+  static int precedence(Tok k) {
+    switch (k) {
+      case Tok::OrOr: return 1;
+      case Tok::AndAnd: return 2;
+      case Tok::Eq: case Tok::Ne: return 3;
+      case Tok::Lt: case Tok::Le: case Tok::Gt: case Tok::Ge: return 4;
+      case Tok::Plus: case Tok::Minus: return 5;
+      case Tok::Star: case Tok::Slash: case Tok::Percent: return 6;
+      default: return -1;
+    }
+  }
+
+  ExprPtr binary(int min_prec) {
+    ExprPtr lhs = unary();
+    for (;;) {
+      int p = precedence(cur().kind);
+      if (p < 0 || p < min_prec) break;
+      Token op = take();
+      ExprPtr rhs = binary(p + 1);
+      auto e = makeExpr(ExprKind::Binary, op.loc);
+      e->name = op.text;
+      e->args.push_back(std::move(lhs));
+      e->args.push_back(std::move(rhs));
+      lhs = std::move(e);
+    }
+    return lhs;
+  }
+
+  ExprPtr unary() {
+    DepthGuard guard(*this, cur().loc);
+    if (at(Tok::Minus) || at(Tok::Bang) || at(Tok::Plus)) {
+      Token op = take();
+      ExprPtr operand = unary();
+      if (op.kind == Tok::Plus) return operand;
+      auto e = makeExpr(ExprKind::Unary, op.loc);
+      e->name = op.text;
+      e->args.push_back(std::move(operand));
+      return e;
+    }
+    return postfix(primary());
+  }
+
+  ExprPtr postfix(ExprPtr e) {
+    for (;;) {
+      if (at(Tok::LBracket)) {
+        SourceLoc loc = take().loc;
+        auto ix = makeExpr(ExprKind::Index, loc);
+        ix->args.push_back(std::move(e));
+        ix->args.push_back(expression());
+        expect(Tok::RBracket, "after the index");
+        e = std::move(ix);
+      } else if (at(Tok::Dot)) {
+        take();
+        Token f = expect(Tok::Ident, "after '.' (a component such as x, y, z, w or r, g, b, a)");
+        auto m = makeExpr(ExprKind::Member, f.loc);
+        m->name = f.text;
+        m->args.push_back(std::move(e));
+        e = std::move(m);
+      } else {
+        return e;
+      }
+    }
+  }
+
+  ExprPtr primary() {
+    const Token& tk = cur();
+    switch (tk.kind) {
+      case Tok::IntLit: {
+        auto e = makeExpr(ExprKind::IntLit, tk.loc);
+        errno = 0;
+        long long v = std::strtoll(tk.text.c_str(), nullptr, 10);
+        if (errno == ERANGE || v > 2147483647LL) error(tk.loc, "integer literal out of range");
+        e->number = static_cast<double>(v);
+        take();
+        return e;
+      }
+      case Tok::FloatLit: {
+        auto e = makeExpr(ExprKind::FloatLit, tk.loc);
+        e->number = std::strtod(tk.text.c_str(), nullptr);
+        take();
+        return e;
+      }
+      case Tok::KwTrue: case Tok::KwFalse: {
+        auto e = makeExpr(ExprKind::BoolLit, tk.loc);
+        e->boolean = tk.kind == Tok::KwTrue;
+        take();
+        return e;
+      }
+      case Tok::LParen: {
+        take();
+        ExprPtr e = expression();
+        expect(Tok::RParen, "to close the parenthesis");
+        return e;
+      }
+      case Tok::Ident: {
+        Token name = take();
+        if (at(Tok::LParen)) return call(name.text, name.loc);
+        auto e = makeExpr(ExprKind::Name, name.loc);
+        e->name = name.text;
+        return e;
+      }
+      default:
+        if (isTypeToken(tk.kind) && next().kind == Tok::LParen) {
+          Token ty = take();
+          return call(ty.text, ty.loc);  // constructor / conversion: float(i), point(x, y, z, w)
+        }
+        fail(tk.loc, "expected an expression, found " + describe(tk));
+    }
+  }
+
+  ExprPtr call(const std::string& callee, SourceLoc loc) {
+    auto e = makeExpr(ExprKind::Call, loc);
+    e->name = callee;
+    expect(Tok::LParen, "to open the argument list");
+    if (!at(Tok::RParen)) {
+      do {
+        e->args.push_back(expression());
+      } while (accept(Tok::Comma));
+    }
+    expect(Tok::RParen, "to close the argument list");
+    return e;
+  }
+};
+
+}  // namespace
+
+Program parse(const SourceFile& file, DiagnosticLog& log) {
+  std::vector<Token> toks = lex(file, log);
+  Parser p(std::move(toks), log);
+  try {
+    return p.program();
+  } catch (const CompileAbort&) {
+    return Program{};
+  }
+}
+
+}  // namespace pf

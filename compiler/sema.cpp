@@ -1,0 +1,651 @@
+// Semantic analysis (see sema.h). Varying inference is flow-insensitive and conservative: a
+// variable is varying if it is declared so, or if any assignment to it has a varying value or
+// happens under varying control flow. Lowering (lower.cpp) then classifies each SSA value
+// exactly, which can only make more values uniform, never fewer.
+#include "compiler/sema.h"
+
+#include <functional>
+#include <set>
+#include <vector>
+
+namespace pf {
+namespace {
+
+struct Var {
+  std::string name;
+  Type type;
+  Qualifier qualifier = Qualifier::None;
+  SourceLoc loc;
+  bool is_param = false;
+  bool writable = true;
+  bool varying = false;
+  std::string why;  // why it is varying, for diagnostics
+};
+
+bool isNumericScalar(const Type& t) {
+  return t.dims.empty() && (t.base == BaseType::Float || t.base == BaseType::Int);
+}
+bool isFloatLike(const Type& t) { return isNumericScalar(t); }
+bool isBool(const Type& t) { return t.dims.empty() && t.base == BaseType::Bool; }
+bool isInterp(const Type& t) { return t.dims.empty() && t.base == BaseType::InterpData; }
+bool isAggregate(const Type& t) { return t.isAggregate() && t.base != BaseType::InterpData; }
+
+int componentIndex(BaseType b, const std::string& f) {
+  if (b == BaseType::Color) {
+    const char* names = "rgba";
+    for (int i = 0; i < 4; ++i)
+      if (f.size() == 1 && f[0] == names[i]) return i;
+    return -1;
+  }
+  const char* names = "xyzw";
+  int n = Type::componentsOf(b);
+  for (int i = 0; i < n; ++i)
+    if (f.size() == 1 && f[0] == names[i]) return i;
+  return -1;
+}
+
+class Analyzer {
+ public:
+  Analyzer(DiagnosticLog& log) : log_(log) {}
+
+  void unit(Unit& u) {
+    unit_ = &u;
+    scopes_.clear();
+    vars_.clear();
+    scopes_.emplace_back();
+    // Built-in pixel variables: visible in every primitive, whether or not the parameter list
+    // names them (the paper's primitives list them as parameters; both forms are accepted).
+    declareBuiltin("X", false);
+    declareBuiltin("Y", false);
+    declareBuiltin("Z", true);
+    std::set<std::string> seen;
+    for (Param& p : u.params) {
+      if (!seen.insert(p.name).second) {
+        log_.error(p.loc, "parameter '" + p.name + "' is declared twice");
+        continue;
+      }
+      if (p.name == "X" || p.name == "Y" || p.name == "Z") {
+        if (p.type != Type::of(BaseType::Float))
+          log_.error(p.loc, "the built-in '" + p.name + "' has type float (declare it as 'varying float " + p.name + "')");
+        if (p.name == "Z" && p.qualifier != Qualifier::InoutVarying && p.qualifier != Qualifier::Inout)
+          log_.error(p.loc, "the built-in 'Z' is the depth buffer: declare it 'inout varying float Z'");
+        if (p.name != "Z" && (p.qualifier == Qualifier::Uniform || p.qualifier == Qualifier::Inout))
+          log_.error(p.loc, "the built-in '" + p.name + "' is the pixel position: it is 'varying', never 'uniform' or 'inout'");
+        continue;
+      }
+      if (p.qualifier == Qualifier::Varying || p.qualifier == Qualifier::InoutVarying)
+        log_.error(p.loc, "parameter '" + p.name + "' cannot be varying: parameters are bound per primitive or per sequence point, so they are uniform");
+      if (u.kind == UnitKind::Primitive && p.type.base == BaseType::InterpData &&
+          p.type.dims.size() != 1)
+        log_.error(p.loc, "an interpolator_data parameter is indexed by sequence point: declare it with one dimension, e.g. 'interpolator_data " + p.name + "[3]'");
+      Var v;
+      v.name = p.name;
+      v.type = p.type;
+      v.qualifier = p.qualifier;
+      v.loc = p.loc;
+      v.is_param = true;
+      v.writable = false;
+      declare(v);
+    }
+    // Fixpoint of varying inference: assignments can make variables varying, which can make
+    // other assignments varying. Each pass re-types the whole body; at most one pass per variable.
+    for (int pass = 0; pass < 64; ++pass) {
+      changed_ = false;
+      reporting_ = false;
+      resetScopesForPass();
+      scoped(u.body);
+      if (!changed_) break;
+    }
+    reporting_ = true;
+    resetScopesForPass();
+    scoped(u.body);
+    if (!return_seen_in_interp_ && u.kind == UnitKind::Interpolator)
+      log_.error(u.loc, "interpolator '" + u.name + "' never reaches interpolator_return(value)");
+  }
+
+ private:
+  DiagnosticLog& log_;
+  Unit* unit_ = nullptr;
+  std::vector<std::map<std::string, int>> scopes_;
+  std::vector<Var> vars_;
+  std::map<std::pair<int, int>, int> decl_var_;  // (line, col) of a Decl -> var index across passes
+  bool changed_ = false;
+  bool reporting_ = true;  // errors are reported only on the final pass (no duplicates)
+  int varying_control_ = 0;       // depth of varying if-conditions around the current statement
+  std::string varying_control_why_;
+  int interp_depth_ = 0;
+  InterpKindSet interp_kinds_ = 0;
+  bool return_seen_in_interp_ = false;
+  size_t builtin_count_ = 0;
+  size_t param_count_ = 0;
+
+  void err(SourceLoc loc, const std::string& msg) {
+    if (reporting_) log_.error(loc, msg);
+  }
+
+  void declareBuiltin(const std::string& name, bool writable) {
+    Var v;
+    v.name = name;
+    v.type = Type::of(BaseType::Float);
+    v.qualifier = writable ? Qualifier::InoutVarying : Qualifier::Varying;
+    v.writable = writable;
+    v.varying = true;
+    v.why = name == "Z" ? "it depends on the built-in Z (the depth buffer)"
+                        : "it depends on the built-in " + name + " (the pixel position)";
+    declare(v);
+    builtin_count_ = vars_.size();
+  }
+
+  int declare(const Var& v) {
+    vars_.push_back(v);
+    int idx = static_cast<int>(vars_.size()) - 1;
+    scopes_.back()[v.name] = idx;
+    return idx;
+  }
+
+  void resetScopesForPass() {
+    // Keep variable records (their varying flags persist across passes), drop local scopes.
+    scopes_.resize(1);
+    varying_control_ = 0;
+    interp_depth_ = 0;
+    return_seen_in_interp_ = false;
+  }
+
+  int lookup(const std::string& name) const {
+    for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it) {
+      auto f = it->find(name);
+      if (f != it->end()) return f->second;
+    }
+    return -1;
+  }
+
+  void markVarying(int vi, const std::string& why) {
+    Var& v = vars_[vi];
+    if (v.varying) return;
+    v.varying = true;
+    v.why = why;
+    changed_ = true;
+  }
+
+  // ---- statements ----
+  void statements(std::vector<StmtPtr>& body) {
+    for (StmtPtr& s : body) statement(*s);
+  }
+
+  void scoped(std::vector<StmtPtr>& body) {
+    scopes_.emplace_back();
+    statements(body);
+    scopes_.pop_back();
+  }
+
+  void statement(Stmt& s) {
+    switch (s.kind) {
+      case StmtKind::Block:
+        if (s.op == "decls") statements(s.body);
+        else scoped(s.body);
+        break;
+      case StmtKind::Decl: declaration(s); break;
+      case StmtKind::Assign: assignment(s); break;
+      case StmtKind::ExprStmt:
+        expr(*s.value);
+        if (s.value->kind != ExprKind::Call)
+          err(s.loc, "this expression has no effect");
+        break;
+      case StmtKind::If: {
+        expr(*s.value);
+        if (!isBool(s.value->type) && s.value->type.base != BaseType::Void)
+          err(s.value->loc, "the condition of 'if' must be bool, not " + typeName(s.value->type));
+        bool vary = s.value->varying;
+        std::string save_why = varying_control_why_;
+        if (vary) {
+          if (varying_control_ == 0) varying_control_why_ = "it is assigned under an 'if' whose condition is varying (line " + std::to_string(s.value->loc.line) + ")";
+          ++varying_control_;
+        }
+        scoped(s.body);
+        scoped(s.else_body);
+        if (vary) --varying_control_;
+        varying_control_why_ = save_why;
+        break;
+      }
+      case StmtKind::Return:
+        if (unit_->kind == UnitKind::Interpolator)
+          err(s.loc, "an interpolator ends with interpolator_return(value), not 'return'");
+        break;
+      case StmtKind::Bound:
+        if (unit_->kind != UnitKind::Primitive) err(s.loc, "'bound' is only allowed in a primitive");
+        if (varying_control_ > 0) err(s.loc, "'bound' must be reached by every pixel alike: it cannot be under varying control flow");
+        for (ExprPtr& a : s.bound_args) {
+          expr(*a);
+          if (!isFloatLike(a->type)) err(a->loc, "bound() takes float screen coordinates, not " + typeName(a->type));
+          else if (a->varying) err(a->loc, "bound() needs a uniform value (the same for every pixel), but this one is varying: " + whyOf(*a));
+        }
+        break;
+      case StmtKind::Interpolation: {
+        if (unit_->kind != UnitKind::Primitive) err(s.loc, "the interpolation construct is only allowed in a primitive");
+        if (interp_depth_ > 0) err(s.loc, "interpolation constructs cannot be nested");
+        InterpKindSet seen = 0;
+        for (InterpolationCase& c : s.cases) {
+          InterpKindSet set = 0;
+          for (size_t i = 0; i < c.kinds.size(); ++i) {
+            InterpKindSet bit = 1u << static_cast<int>(c.kinds[i]);
+            if (seen & bit) err(c.label_locs[i], std::string("interpolation label '") + interpKindName(c.kinds[i]) + "' appears twice");
+            seen |= bit;
+            set |= bit;
+          }
+          ++interp_depth_;
+          InterpKindSet save = interp_kinds_;
+          interp_kinds_ = set;
+          scoped(c.body);
+          interp_kinds_ = save;
+          --interp_depth_;
+        }
+        break;
+      }
+      case StmtKind::InterpReturn:
+        if (unit_->kind == UnitKind::Interpolator) {
+          if (!s.value) {
+            err(s.loc, "an interpolator must return a value: interpolator_return(value)");
+          } else {
+            expr(*s.value);
+          }
+          return_seen_in_interp_ = true;
+          break;
+        }
+        if (interp_depth_ == 0) {
+          err(s.loc, "interpolator_return is only allowed inside an interpolation { ... } construct");
+          break;
+        }
+        if (s.value) {
+          expr(*s.value);
+          if (!isInterp(s.value->type))
+            err(s.value->loc, "interpolator_return(value) in a primitive returns interpolator_data (the shading parameters), not " + typeName(s.value->type));
+          if (interp_kinds_ & (1u << static_cast<int>(InterpKind::Shared)))
+            err(s.loc, "in the 'default:' branch use 'interpolator_return;' (no value): it runs the shared interpolators");
+        } else if (!(interp_kinds_ & (1u << static_cast<int>(InterpKind::Shared)))) {
+          err(s.loc, "'interpolator_return;' without a value runs shared interpolators: it belongs in the 'default:' branch");
+        }
+        break;
+    }
+  }
+
+  void declaration(Stmt& s) {
+    if (lookupInInnermost(s.name) >= 0)
+      err(s.loc, "'" + s.name + "' is already declared in this scope");
+    if (s.qualifier == Qualifier::Inout || s.qualifier == Qualifier::InoutVarying)
+      err(s.loc, "'inout' applies to parameters, not to local variables");
+    if (s.decl_type.base == BaseType::InterpData && s.decl_type.dims.size() > 1)
+      err(s.loc, "interpolator_data arrays have one dimension");
+    // The same Decl keeps its Var across passes so inferred varying-ness accumulates.
+    auto key = std::make_pair(s.loc.line, s.loc.col);
+    int vi;
+    auto found = decl_var_.find(key);
+    if (found == decl_var_.end()) {
+      Var v;
+      v.name = s.name;
+      v.type = s.decl_type;
+      v.qualifier = s.qualifier;
+      v.loc = s.loc;
+      if (s.qualifier == Qualifier::Varying) {
+        v.varying = true;
+        v.why = "it is declared varying";
+      }
+      vi = declare(v);
+      decl_var_[key] = vi;
+    } else {
+      vi = found->second;
+      scopes_.back()[s.name] = vi;
+    }
+    if (s.value) {
+      expr(*s.value);
+      checkAssignable(s.decl_type, *s.value, "initialise '" + s.name + "'");
+      flowInto(vi, *s.value, s.value->loc);
+    } else if (varying_control_ > 0) {
+      markVarying(vi, varying_control_why_);
+    }
+  }
+
+  int lookupInInnermost(const std::string& name) const {
+    auto f = scopes_.back().find(name);
+    return f == scopes_.back().end() ? -1 : f->second;
+  }
+
+  // The value `e` flows into variable vi at `loc`: update inference, or report a uniform
+  // variable receiving a varying value.
+  void flowInto(int vi, const Expr& e, SourceLoc loc) {
+    Var& v = vars_[vi];
+    bool vary = e.varying || varying_control_ > 0;
+    if (!vary) return;
+    std::string why = e.varying ? whyOf(e) : varying_control_why_;
+    if (v.qualifier == Qualifier::Uniform) {
+      err(loc, "'" + v.name + "' is declared uniform, but the value it receives here is varying: " + why);
+      return;
+    }
+    markVarying(vi, "it is assigned a varying value at line " + std::to_string(loc.line) + ": " + why);
+  }
+
+  void assignment(Stmt& s) {
+    expr(*s.target);
+    expr(*s.value);
+    const Expr* root = s.target.get();
+    while (root->kind == ExprKind::Index || root->kind == ExprKind::Member) root = root->args[0].get();
+    if (root->kind != ExprKind::Name) {
+      err(s.target->loc, "the left side of an assignment must be a variable, an element or a component");
+      return;
+    }
+    int vi = lookup(root->name);
+    if (vi < 0) return;  // already reported
+    Var& v = vars_[vi];
+    if (!v.writable) {
+      err(root->loc, v.is_param ? "parameter '" + v.name + "' is read-only (copy it into a local variable to change it)"
+                                : "'" + v.name + "' is read-only");
+      return;
+    }
+    if (s.op != "=") {
+      // x op= y is x = x op y: the same typing rules as the binary operator.
+      Type t = binaryType(s.op.substr(0, 1), s.target->type, s.value->type, s.loc);
+      if (t.base != BaseType::Void && t != s.target->type &&
+          !(isNumericScalar(t) && isNumericScalar(s.target->type)))
+        err(s.loc, "'" + s.op + "' gives " + typeName(t) + ", which cannot be stored in " + typeName(s.target->type));
+    } else {
+      checkAssignable(s.target->type, *s.value, "assign to '" + v.name + "'");
+    }
+    flowInto(vi, *s.value, s.value->loc);
+  }
+
+  void checkAssignable(const Type& to, const Expr& from, const std::string& what) {
+    if (from.type.base == BaseType::Void || to.base == BaseType::Void) return;
+    if (to == from.type) return;
+    if (to.dims.empty() && from.type.dims.empty()) {
+      if (to.base == BaseType::Float && from.type.base == BaseType::Int) return;  // int -> float
+      if (isAggregate(to) && isAggregate(from.type) &&
+          Type::componentsOf(to.base) == Type::componentsOf(from.type.base) &&
+          to.base != BaseType::Point && from.type.base != BaseType::Point)
+        return;  // vector/normal/color with equal component counts convert
+    }
+    err(from.loc, "cannot " + what + ": expected " + typeName(to) + ", found " + typeName(from.type));
+  }
+
+  std::string whyOf(const Expr& e) const {
+    // The first varying leaf of the expression explains it.
+    if (!e.varying) return "";
+    if (e.kind == ExprKind::Name) {
+      int vi = lookup(e.name);
+      if (vi >= 0) {
+        const Var& v = vars_[vi];
+        if (vi < static_cast<int>(builtin_count_)) return v.why;
+        return "it depends on '" + v.name + "' (declared at line " + std::to_string(v.loc.line) + "), which is varying because " + stripIt(v.why);
+      }
+    }
+    if (e.kind == ExprKind::Call && e.name == "ztest") return "it depends on ztest(), which reads the depth buffer";
+    for (const ExprPtr& a : e.args)
+      if (a->varying) return whyOf(*a);
+    return "it is varying";
+  }
+  static std::string stripIt(const std::string& s) {
+    return s.rfind("it ", 0) == 0 ? s.substr(3) : s;
+  }
+
+  // ---- expressions ----
+  void expr(Expr& e) {
+    e.type = Type::of(BaseType::Void);
+    e.varying = false;
+    switch (e.kind) {
+      case ExprKind::IntLit: e.type = Type::of(BaseType::Int); return;
+      case ExprKind::FloatLit: e.type = Type::of(BaseType::Float); return;
+      case ExprKind::BoolLit: e.type = Type::of(BaseType::Bool); return;
+      case ExprKind::Name: {
+        int vi = lookup(e.name);
+        if (vi < 0) {
+          err(e.loc, "'" + e.name + "' is not declared");
+          return;
+        }
+        e.type = vars_[vi].type;
+        e.varying = vars_[vi].varying;
+        return;
+      }
+      case ExprKind::Unary: {
+        Expr& a = *e.args[0];
+        expr(a);
+        e.varying = a.varying;
+        if (a.type.base == BaseType::Void) return;
+        if (e.name == "!") {
+          if (!isBool(a.type)) err(e.loc, "'!' needs a bool, not " + typeName(a.type));
+          e.type = Type::of(BaseType::Bool);
+        } else {
+          if (!(isNumericScalar(a.type) || isAggregate(a.type) || isInterp(a.type)))
+            err(e.loc, "cannot negate a value of type " + typeName(a.type));
+          e.type = a.type;
+        }
+        return;
+      }
+      case ExprKind::Binary: {
+        Expr& a = *e.args[0];
+        Expr& b = *e.args[1];
+        expr(a);
+        expr(b);
+        e.varying = a.varying || b.varying;
+        e.type = binaryType(e.name, a.type, b.type, e.loc);
+        return;
+      }
+      case ExprKind::Ternary: {
+        for (ExprPtr& a : e.args) expr(*a);
+        e.varying = e.args[0]->varying || e.args[1]->varying || e.args[2]->varying;
+        if (e.args[0]->type.base != BaseType::Void && !isBool(e.args[0]->type))
+          err(e.args[0]->loc, "the condition of '?:' must be bool, not " + typeName(e.args[0]->type));
+        const Type& t1 = e.args[1]->type;
+        const Type& t2 = e.args[2]->type;
+        if (t1.base == BaseType::Void || t2.base == BaseType::Void) return;
+        if (t1 == t2) e.type = t1;
+        else if (isNumericScalar(t1) && isNumericScalar(t2)) e.type = Type::of(BaseType::Float);
+        else err(e.loc, "the two results of '?:' have different types: " + typeName(t1) + " and " + typeName(t2));
+        if (e.type.isArray() || e.type.base == BaseType::InterpData)
+          err(e.loc, "'?:' chooses between scalars or vectors, not " + typeName(e.type));
+        return;
+      }
+      case ExprKind::Member: {
+        Expr& a = *e.args[0];
+        expr(a);
+        e.varying = a.varying;
+        if (a.type.base == BaseType::Void) return;
+        if (!isAggregate(a.type)) {
+          err(e.loc, "'." + e.name + "' needs a point, vector, normal or color, not " + typeName(a.type));
+          return;
+        }
+        int ci = componentIndex(a.type.base, e.name);
+        if (ci < 0) {
+          err(e.loc, "a " + typeName(a.type) + " has no component '" + e.name + "'" +
+                         (a.type.base == BaseType::Color ? " (components: r, g, b, a)"
+                          : a.type.base == BaseType::Point ? " (components: x, y, z, w)"
+                                                           : " (components: x, y, z)"));
+          return;
+        }
+        e.number = ci;
+        e.type = Type::of(BaseType::Float);
+        return;
+      }
+      case ExprKind::Index: {
+        Expr& base = *e.args[0];
+        Expr& index = *e.args[1];
+        expr(base);
+        expr(index);
+        e.varying = base.varying || index.varying;
+        if (base.type.base == BaseType::Void) return;
+        int limit;
+        if (base.type.isArray()) {
+          e.type = base.type.element();
+          limit = base.type.dims[0];
+        } else if (isAggregate(base.type)) {
+          e.type = Type::of(BaseType::Float);
+          limit = Type::componentsOf(base.type.base);
+        } else {
+          err(e.loc, "cannot index a value of type " + typeName(base.type));
+          return;
+        }
+        if (index.type.base != BaseType::Void && (index.type.base != BaseType::Int || index.type.isArray())) {
+          err(index.loc, "an index must be an int, not " + typeName(index.type));
+          return;
+        }
+        long value;
+        if (!constantInt(index, value)) {
+          err(index.loc, "an index must be a constant expression in this version of the language");
+          return;
+        }
+        if (value < 0 || value >= limit) {
+          err(index.loc, "index " + std::to_string(value) + " is out of range [0, " + std::to_string(limit - 1) + "]");
+          return;
+        }
+        e.number = static_cast<double>(value);
+        return;
+      }
+      case ExprKind::Call: call(e); return;
+    }
+  }
+
+ public:
+  static bool constantInt(const Expr& e, long& out) {
+    switch (e.kind) {
+      case ExprKind::IntLit: out = static_cast<long>(e.number); return true;
+      case ExprKind::Unary:
+        if (e.name == "-" && constantInt(*e.args[0], out)) { out = -out; return true; }
+        return false;
+      case ExprKind::Binary: {
+        long a, b;
+        if (!constantInt(*e.args[0], a) || !constantInt(*e.args[1], b)) return false;
+        if (e.name == "+") out = a + b;
+        else if (e.name == "-") out = a - b;
+        else if (e.name == "*") out = a * b;
+        else return false;
+        return out > -(1L << 30) && out < (1L << 30);
+      }
+      default: return false;
+    }
+  }
+
+ private:
+  Type binaryType(const std::string& op, const Type& a, const Type& b, SourceLoc loc) {
+    Type voidT = Type::of(BaseType::Void);
+    if (a.base == BaseType::Void || b.base == BaseType::Void) return voidT;
+    auto bad = [&] {
+      err(loc, "operator '" + op + "' cannot combine " + typeName(a) + " and " + typeName(b));
+      return voidT;
+    };
+    if (op == "&&" || op == "||") {
+      if (!isBool(a) || !isBool(b)) return bad();
+      return Type::of(BaseType::Bool);
+    }
+    if (op == "<" || op == "<=" || op == ">" || op == ">=") {
+      if (!isNumericScalar(a) || !isNumericScalar(b)) return bad();
+      return Type::of(BaseType::Bool);
+    }
+    if (op == "==" || op == "!=") {
+      if ((isNumericScalar(a) && isNumericScalar(b)) || (isBool(a) && isBool(b))) return Type::of(BaseType::Bool);
+      return bad();
+    }
+    // arithmetic
+    if (isNumericScalar(a) && isNumericScalar(b)) {
+      if (a.base == BaseType::Int && b.base == BaseType::Int) return a;
+      return Type::of(BaseType::Float);
+    }
+    if (op == "%") return bad();
+    if (isAggregate(a) && a == b) return a;
+    if (isAggregate(a) && isNumericScalar(b) && (op == "*" || op == "/")) return a;
+    if (isNumericScalar(a) && isAggregate(b) && op == "*") return b;
+    if (isInterp(a) && isInterp(b) && (op == "+" || op == "-")) return a;
+    if (isInterp(a) && isNumericScalar(b) && (op == "*" || op == "/")) return a;
+    if (isNumericScalar(a) && isInterp(b) && op == "*") return b;
+    return bad();
+  }
+
+  void call(Expr& e) {
+    for (ExprPtr& a : e.args) expr(*a);
+    bool any_void = false;
+    for (ExprPtr& a : e.args) {
+      e.varying = e.varying || a->varying;
+      any_void = any_void || a->type.base == BaseType::Void;
+    }
+    const std::string& f = e.name;
+    size_t n = e.args.size();
+    auto arity = [&](size_t lo, size_t hi) {
+      if (n < lo || n > hi) {
+        err(e.loc, f + "() takes " + (lo == hi ? std::to_string(lo) : std::to_string(lo) + " to " + std::to_string(hi)) +
+                       " argument" + (hi == 1 ? "" : "s") + ", not " + std::to_string(n));
+        return false;
+      }
+      return true;
+    };
+    auto needScalars = [&]() {
+      for (ExprPtr& a : e.args)
+        if (a->type.base != BaseType::Void && !isNumericScalar(a->type)) {
+          err(a->loc, f + "() takes float arguments, not " + typeName(a->type));
+          return false;
+        }
+      return true;
+    };
+    if (f == "min" || f == "max") {
+      if (!arity(2, 2) || any_void || !needScalars()) return;
+      bool all_int = e.args[0]->type.base == BaseType::Int && e.args[1]->type.base == BaseType::Int;
+      e.type = Type::of(all_int ? BaseType::Int : BaseType::Float);
+    } else if (f == "clamp") {
+      if (!arity(3, 3) || any_void || !needScalars()) return;
+      e.type = Type::of(BaseType::Float);
+    } else if (f == "abs") {
+      if (!arity(1, 1) || any_void || !needScalars()) return;
+      e.type = e.args[0]->type;
+    } else if (f == "floor" || f == "ceil" || f == "sqrt" || f == "sign") {
+      if (!arity(1, 1) || any_void || !needScalars()) return;
+      e.type = Type::of(BaseType::Float);
+    } else if (f == "screen") {
+      if (!arity(1, 1) || any_void) return;
+      if (e.args[0]->type != Type::of(BaseType::Point)) {
+        err(e.args[0]->loc, "screen() maps a point from clip space to homogeneous screen space; it takes a point, not " + typeName(e.args[0]->type));
+        return;
+      }
+      e.type = Type::of(BaseType::Point);
+    } else if (f == "depth_range") {
+      if (!arity(0, 0)) return;
+      e.type = Type::of(BaseType::Vector);
+    } else if (f == "ztest") {
+      if (unit_->kind != UnitKind::Primitive) {
+        err(e.loc, "ztest() is only available in a primitive");
+        return;
+      }
+      if (!arity(1, 1) || any_void || !needScalars()) return;
+      e.type = Type::of(BaseType::Bool);
+      e.varying = true;
+    } else if (f == "float" || f == "int") {
+      if (!arity(1, 1) || any_void || !needScalars()) return;
+      e.type = Type::of(f == "float" ? BaseType::Float : BaseType::Int);
+    } else if (f == "point" || f == "vector" || f == "normal" || f == "color") {
+      BaseType b = f == "point" ? BaseType::Point : f == "vector" ? BaseType::Vector
+                   : f == "normal" ? BaseType::Normal : BaseType::Color;
+      size_t comps = Type::componentsOf(b);
+      // point(x, y, z) has w = 1; color(r, g, b) has a = 1.
+      size_t lo = (b == BaseType::Point || b == BaseType::Color) ? 3 : comps;
+      if (!arity(lo, comps) || any_void || !needScalars()) return;
+      e.type = Type::of(b);
+    } else {
+      err(e.loc, "'" + f + "' is not a built-in function (user functions come with a later version of the language)");
+    }
+  }
+};
+
+}  // namespace
+
+bool isBuiltinFunction(const std::string& name) {
+  static const std::set<std::string> names = {"min", "max", "clamp", "abs", "floor", "ceil", "sqrt",
+                                              "sign", "screen", "depth_range", "ztest", "float",
+                                              "int", "point", "vector", "normal", "color"};
+  return names.count(name) > 0;
+}
+
+bool analyze(Program& program, DiagnosticLog& log) {
+  std::set<std::string> names;
+  for (Unit& u : program.units) {
+    if (!names.insert(u.name).second) log.error(u.loc, "'" + u.name + "' is defined twice");
+    Analyzer a(log);
+    a.unit(u);
+  }
+  return !log.hasErrors();
+}
+
+}  // namespace pf

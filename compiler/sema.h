@@ -1,0 +1,22 @@
+// Semantic analysis: resolves names, types every expression, and infers which values are
+// uniform (the same for every pixel of an instance) and which are varying (differ per pixel).
+// A variable declared `uniform` that receives a varying value is an error whose message walks
+// the chain back to the cause: X, Y, Z, ztest(), or a varying variable.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "compiler/ast.h"
+
+namespace pf {
+
+// The built-in functions: name, fixed argument count range, and whether the result is always
+// varying (ztest reads the depth buffer). Types are checked in sema.cpp.
+bool isBuiltinFunction(const std::string& name);
+
+// Analyses every unit of the program in place (Expr::type, Expr::varying). Returns false if
+// any error was logged.
+bool analyze(Program& program, DiagnosticLog& log);
+
+}  // namespace pf

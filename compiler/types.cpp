@@ -1,0 +1,36 @@
+// Printable names of the language's types.
+#include "compiler/types.h"
+
+namespace pf {
+
+std::string baseTypeName(BaseType b) {
+  switch (b) {
+    case BaseType::Void: return "void";
+    case BaseType::Float: return "float";
+    case BaseType::Int: return "int";
+    case BaseType::Bool: return "bool";
+    case BaseType::Point: return "point";
+    case BaseType::Vector: return "vector";
+    case BaseType::Normal: return "normal";
+    case BaseType::Color: return "color";
+    case BaseType::InterpData: return "interpolator_data";
+  }
+  return "?";
+}
+
+std::string typeName(const Type& t) {
+  std::string s = baseTypeName(t.base);
+  for (int d : t.dims) s += "[" + std::to_string(d) + "]";
+  return s;
+}
+
+const char* interpKindName(InterpKind k) {
+  switch (k) {
+    case InterpKind::PerspectiveLinear: return "perspective_linear";
+    case InterpKind::Linear: return "linear";
+    case InterpKind::Shared: return "default";
+  }
+  return "?";
+}
+
+}  // namespace pf

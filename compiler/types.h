@@ -1,0 +1,51 @@
+// Types and qualifiers of the primitive language.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace pf {
+
+enum class BaseType { Void, Float, Int, Bool, Point, Vector, Normal, Color, InterpData };
+
+// How a shading parameter is interpolated: the labels of `interpolation { ... }`.
+// Channels of an instance are ordered by kind so that each kind is one contiguous range.
+enum class InterpKind : int { PerspectiveLinear = 0, Linear = 1, Shared = 2 };
+constexpr int kInterpKindCount = 3;
+using InterpKindSet = unsigned;  // bit (1 << kind)
+constexpr InterpKindSet kAllInterpKinds = 7;
+
+enum class Qualifier { None, Uniform, Varying, Inout, InoutVarying };
+
+struct Type {
+  BaseType base = BaseType::Void;
+  std::vector<int> dims;  // array dimensions, outermost first
+
+  bool isArray() const { return !dims.empty(); }
+  bool isScalar() const { return dims.empty() && (base == BaseType::Float || base == BaseType::Int || base == BaseType::Bool); }
+  bool isAggregate() const { return dims.empty() && componentsOf(base) > 1; }
+  Type element() const { Type t = *this; t.dims.erase(t.dims.begin()); return t; }
+  int elementCount() const { int n = 1; for (int d : dims) n *= d; return n; }
+  // Scalar slots the whole value occupies: components of the base times array elements.
+  int slotCount() const { return componentsOf(base) * elementCount(); }
+  bool operator==(const Type& o) const { return base == o.base && dims == o.dims; }
+  bool operator!=(const Type& o) const { return !(*this == o); }
+
+  static int componentsOf(BaseType b) {
+    switch (b) {
+      case BaseType::Point: return 4;   // homogeneous (x, y, z, w)
+      case BaseType::Vector: return 3;
+      case BaseType::Normal: return 3;
+      case BaseType::Color: return 4;   // (r, g, b, a)
+      case BaseType::Void: return 0;
+      default: return 1;
+    }
+  }
+  static Type of(BaseType b) { Type t; t.base = b; return t; }
+};
+
+std::string typeName(const Type& t);
+std::string baseTypeName(BaseType b);
+const char* interpKindName(InterpKind k);
+
+}  // namespace pf

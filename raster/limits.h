@@ -1,0 +1,13 @@
+// Every size and limit of the rasterizer in one place (as llvmpipe's lp_limits.h).
+#pragma once
+
+namespace pf {
+
+constexpr int kTileSize = 64;          // screen tiles: the unit of binning and of threading
+constexpr int kBlockSize = 8;          // pixel blocks: the unit of SIMD execution
+constexpr int kLanes = kBlockSize * kBlockSize;  // lanes of a wide register
+constexpr int kMaxFramebufferSize = 8192;
+constexpr int kMaxChannels = 64;       // per-vertex shading-parameter floats per instance
+constexpr int kMaxMaskDepth = 64;      // nesting of varying control flow in a pixel program
+
+}  // namespace pf

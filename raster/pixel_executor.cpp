@@ -1,0 +1,261 @@
+// The SIMD pixel executor (see pixel_executor.h).
+//
+// Each value-producing instruction runs one kernel: a loop over the kLanes lanes of
+// evalScalar (scalar_ops.h) instantiated for the instruction and for which operands are wide
+// (one value per lane) or scalar (uniform / constant). With the operation and the operand
+// shapes fixed at compile time, GCC vectorizes these loops (checked in the disassembly,
+// see docs/architecture.md). Writes under a partial mask go through a blend.
+#include "raster/pixel_executor.h"
+
+#include <array>
+#include <cstring>
+#include <utility>
+
+#include "raster/scalar_ops.h"
+
+namespace pf {
+namespace {
+
+using Kernel = void (*)(uint32_t* __restrict, const uint32_t*, const uint32_t*, const uint32_t*);
+
+template <Op OP, bool VA, bool VB, bool VC>
+void kernel(uint32_t* __restrict d, const uint32_t* a, const uint32_t* b, const uint32_t* c) {
+  for (int i = 0; i < kLanes; ++i) d[i] = evalScalar(OP, VA ? a[i] : a[0], VB ? b[i] : b[0], VC ? c[i] : c[0]);
+}
+
+template <Op OP>
+constexpr std::array<Kernel, 8> kernelsFor() {
+  return {kernel<OP, false, false, false>, kernel<OP, true, false, false>,
+          kernel<OP, false, true, false>,  kernel<OP, true, true, false>,
+          kernel<OP, false, false, true>,  kernel<OP, true, false, true>,
+          kernel<OP, false, true, true>,   kernel<OP, true, true, true>};
+}
+
+template <size_t... I>
+constexpr std::array<std::array<Kernel, 8>, sizeof...(I)> kernelTable(std::index_sequence<I...>) {
+  return {kernelsFor<static_cast<Op>(I)>()...};
+}
+
+// Kernels for every op up to Mov (the value-producing scalar instructions).
+constexpr size_t kKernelOps = static_cast<size_t>(Op::Mov) + 1;
+const auto kKernels = kernelTable(std::make_index_sequence<kKernelOps>{});
+
+alignas(64) const uint32_t kZeroLanes[kLanes] = {};
+
+inline uint64_t laneMaskOf(const uint32_t* v, bool wide) {
+  if (!wide) return v[0] ? ~0ull : 0ull;
+  uint64_t m = 0;
+  for (int i = 0; i < kLanes; ++i) m |= static_cast<uint64_t>(v[i] != 0) << i;
+  return m;
+}
+
+inline void blend(uint32_t* __restrict d, const uint32_t* __restrict s, uint64_t mask) {
+  for (int i = 0; i < kLanes; ++i) {
+    uint32_t m = 0u - static_cast<uint32_t>((mask >> i) & 1u);
+    d[i] = (s[i] & m) | (d[i] & ~m);
+  }
+}
+
+inline bool depthPasses(DepthFunc f, float z, float zbuf) {
+  switch (f) {
+    case DepthFunc::Never: return false;
+    case DepthFunc::Less: return z < zbuf;
+    case DepthFunc::Equal: return z == zbuf;
+    case DepthFunc::LessEqual: return z <= zbuf;
+    case DepthFunc::Greater: return z > zbuf;
+    case DepthFunc::NotEqual: return z != zbuf;
+    case DepthFunc::GreaterEqual: return z >= zbuf;
+    case DepthFunc::Always: return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* record,
+                             const ChannelLayout& layout, const RasterState& state,
+                             uint32_t shade_id, int bx, int by, uint64_t mask,
+                             const BlockTarget& target) {
+  const PixelProgram& p = prim.pixel;
+  const int nch = layout.count;
+  const size_t reg_words = static_cast<size_t>(p.num_regs) * kLanes;
+  if (regs_.size() < reg_words) regs_.resize(reg_words);
+  const size_t xreg_words = static_cast<size_t>(p.num_interp_regs) * nch * kLanes;
+  if (xregs_.size() < xreg_words) xregs_.resize(xreg_words);
+  const size_t staging_words = static_cast<size_t>(nch) * kLanes;
+  if (staging_.size() < staging_words) staging_.resize(staging_words);
+  std::fill(staging_.begin(), staging_.begin() + staging_words, 0u);
+
+  ++counters.blocks_run;
+  counters.lanes_started += static_cast<uint64_t>(__builtin_popcountll(mask));
+
+  uint32_t* R = regs_.data();
+  // Built-ins: X, Y at pixel centres; Z from the depth buffer.
+  for (int i = 0; i < kLanes; ++i) {
+    R[kRegX * kLanes + i] = fromF(static_cast<float>(bx + (i % kBlockSize)) + 0.5f);
+    R[kRegY * kLanes + i] = fromF(static_cast<float>(by + (i / kBlockSize)) + 0.5f);
+    float z = 0.0f;
+    if (target.depth && ((mask >> i) & 1u))
+      z = target.depth[static_cast<size_t>(by + i / kBlockSize) * target.depth_stride + bx + i % kBlockSize];
+    R[kRegZ * kLanes + i] = fromF(z);
+  }
+
+  const uint32_t* xrecord = record + p.num_uniform_slots;
+  // Pointer to an operand's lanes (wide) or its single value (scalar).
+  auto src = [&](uint32_t o, bool& wide) -> const uint32_t* {
+    uint32_t i = operandIndex(o);
+    switch (operandKind(o)) {
+      case OperandKind::Reg: wide = true; return R + static_cast<size_t>(i) * kLanes;
+      case OperandKind::Uniform: wide = false; return record + i;
+      case OperandKind::Const: wide = false; return &p.constants[i];
+      case OperandKind::Param: break;
+    }
+    wide = false;
+    return kZeroLanes;
+  };
+  // Interp operand, channel c.
+  auto xsrc = [&](uint32_t o, int c, bool& wide) -> const uint32_t* {
+    uint32_t i = operandIndex(o);
+    if (operandKind(o) == OperandKind::Reg) {
+      wide = true;
+      return xregs_.data() + (static_cast<size_t>(i) * nch + c) * kLanes;
+    }
+    wide = false;
+    return xrecord + static_cast<size_t>(i) * nch + c;
+  };
+
+  uint64_t alive = mask;
+  uint64_t cur = ~0ull;  // the enclosing varying conditions
+  struct MaskFrame {
+    uint64_t saved;
+    uint64_t cond;
+  };
+  MaskFrame stack[kMaxMaskDepth];
+  int depth = 0;
+  alignas(64) uint32_t tmp[kLanes];
+
+  auto run = [&](Op op, uint32_t* dst, const uint32_t* a, bool wa, const uint32_t* b, bool wb,
+                 const uint32_t* c, bool wc, uint64_t exec) {
+    Kernel k = kKernels[static_cast<size_t>(op)][(wa ? 1 : 0) | (wb ? 2 : 0) | (wc ? 4 : 0)];
+    if (exec == ~0ull) {
+      k(dst, a, b, c);
+    } else {
+      k(tmp, a, b, c);
+      blend(dst, tmp, exec);
+    }
+  };
+  auto forChannels = [&](uint16_t set, auto&& fn) {
+    for (int kind = 0; kind < kInterpKindCount; ++kind)
+      if (set & (1u << kind))
+        for (int ch = layout.kind_begin[kind]; ch < layout.kind_end[kind]; ++ch) fn(ch);
+  };
+
+  const size_t n = p.code.size();
+  for (size_t pc = 0; pc < n;) {
+    const Instr& ins = p.code[pc++];
+    const uint64_t exec = alive & cur;
+    switch (ins.op) {
+      case Op::Jmp: pc = ins.a; continue;
+      case Op::JmpIfNot: {
+        bool w;
+        const uint32_t* c = src(ins.b, w);
+        if (!c[0]) pc = ins.a;
+        continue;
+      }
+      case Op::JmpIfNone:
+        if (exec == 0) pc = ins.a;
+        continue;
+      case Op::MaskIf: {
+        bool w;
+        const uint32_t* c = src(ins.b, w);
+        if (depth >= kMaxMaskDepth) return;  // the compiler bounds nesting; never reached
+        stack[depth++] = {cur, laneMaskOf(c, w)};
+        cur &= stack[depth - 1].cond;
+        continue;
+      }
+      case Op::MaskElse:
+        if (depth > 0) cur = stack[depth - 1].saved & ~stack[depth - 1].cond;
+        continue;
+      case Op::MaskEnd:
+        if (depth > 0) cur = stack[--depth].saved;
+        continue;
+      case Op::Retire:
+        alive &= ~exec;
+        if (alive == 0) return;
+        continue;
+      case Op::ZTest: {
+        bool w;
+        const uint32_t* z = src(ins.a, w);
+        uint32_t* d = R + static_cast<size_t>(operandIndex(ins.dst)) * kLanes;
+        const uint32_t* zb = R + kRegZ * kLanes;
+        for (int i = 0; i < kLanes; ++i) {
+          float zi = asF(w ? z[i] : z[0]);
+          tmp[i] = state.depth_test ? depthPasses(state.depth_func, zi, asF(zb[i])) : 1u;
+        }
+        blend(d, tmp, exec);
+        continue;
+      }
+      case Op::ZCommit: {
+        if (!target.depth || !state.depth_test || !state.depth_write) continue;
+        bool w;
+        const uint32_t* z = src(ins.a, w);
+        for (int i = 0; i < kLanes; ++i)
+          if ((exec >> i) & 1u)
+            target.depth[static_cast<size_t>(by + i / kBlockSize) * target.depth_stride + bx + i % kBlockSize] =
+                asF(w ? z[i] : z[0]);
+        continue;
+      }
+      case Op::InterpReturn:
+        forChannels(ins.imm, [&](int ch) {
+          bool w;
+          const uint32_t* v = xsrc(ins.a, ch, w);
+          run(Op::Mov, staging_.data() + static_cast<size_t>(ch) * kLanes, v, w, kZeroLanes, false,
+              kZeroLanes, false, exec);
+        });
+        continue;
+      case Op::InterpShared:
+        // Channels of the shared-interpolator kind are filled by the interpolators bound to
+        // them; an instance whose layout has none (every instance the API builds today) has
+        // an empty range here.
+        continue;
+      case Op::LoadState: case Op::XLoadVertex: case Op::Bound: case Op::Kill:
+        continue;  // setup-only instructions never reach a pixel program
+      case Op::XAdd: case Op::XSub: case Op::XMulF: case Op::XDivF: case Op::XNeg: case Op::XMov: {
+        Op scalar_op = ins.op == Op::XAdd ? Op::FAdd : ins.op == Op::XSub ? Op::FSub
+                       : ins.op == Op::XMulF ? Op::FMul : ins.op == Op::XDivF ? Op::FDiv
+                       : ins.op == Op::XNeg ? Op::FNeg : Op::Mov;
+        bool float_b = ins.op == Op::XMulF || ins.op == Op::XDivF;
+        forChannels(ins.imm, [&](int ch) {
+          bool wa, wb = false;
+          const uint32_t* a = xsrc(ins.a, ch, wa);
+          const uint32_t* b = kZeroLanes;
+          if (ins.b != kNoOperand) b = float_b ? src(ins.b, wb) : xsrc(ins.b, ch, wb);
+          uint32_t* d = xregs_.data() + (static_cast<size_t>(operandIndex(ins.dst)) * nch + ch) * kLanes;
+          run(scalar_op, d, a, wa, b, wb, kZeroLanes, false, exec);
+        });
+        continue;
+      }
+      default: {
+        bool wa = false, wb = false, wc = false;
+        const uint32_t* a = ins.a == kNoOperand ? kZeroLanes : src(ins.a, wa);
+        const uint32_t* b = ins.b == kNoOperand ? kZeroLanes : src(ins.b, wb);
+        const uint32_t* c = ins.c == kNoOperand ? kZeroLanes : src(ins.c, wc);
+        uint32_t* d = R + static_cast<size_t>(operandIndex(ins.dst)) * kLanes;
+        run(ins.op, d, a, wa, b, wb, c, wc, exec);
+      }
+    }
+  }
+
+  // Commit: the lanes still alive are this instance's pixels.
+  counters.lanes_committed += static_cast<uint64_t>(__builtin_popcountll(alive));
+  for (int i = 0; i < kLanes; ++i) {
+    if (!((alive >> i) & 1u)) continue;
+    int tx = bx + i % kBlockSize - target.tile_x0;
+    int ty = by + i / kBlockSize - target.tile_y0;
+    size_t t = static_cast<size_t>(ty) * kTileSize + tx;
+    target.shade_ids[t] = shade_id;
+    for (int ch = 0; ch < nch; ++ch) target.slots[layout.gbuffer_slot[ch]][t] = asF(staging_[static_cast<size_t>(ch) * kLanes + i]);
+  }
+}
+
+}  // namespace pf

@@ -1,0 +1,48 @@
+// Runs a primitive's pixel program over one pixel block (kBlockSize x kBlockSize lanes): wide
+// registers hold one value per lane, an execution mask says which lanes run each instruction.
+// `return` retires lanes; a block whose lanes have all retired stops. At the end, the lanes
+// still alive commit: their shading channels go to the tile's G-buffer with the instance's
+// shading state (deferred shading), and ZCommit has already written their depth.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "compiler/compiler.h"
+#include "raster/limits.h"
+#include "raster/raster_state.h"
+
+namespace pf {
+
+// Where a block's results go.
+struct BlockTarget {
+  float* depth = nullptr;    // depth buffer (whole framebuffer), may be null
+  int depth_stride = 0;      // floats per row
+  uint32_t* shade_ids = nullptr;  // tile G-buffer: shading state per pixel (0 = not drawn)
+  float* const* slots = nullptr;  // tile G-buffer: one kTileSize^2 plane per channel slot
+  int tile_x0 = 0, tile_y0 = 0;   // window coordinates of the tile's first pixel
+};
+
+struct BlockCounters {
+  uint64_t blocks_run = 0;
+  uint64_t lanes_started = 0;
+  uint64_t lanes_committed = 0;
+};
+
+class PixelExecutor {
+ public:
+  // Runs the block whose lower-left pixel is (bx, by) for the lanes set in `mask` (bit i is
+  // lane i = (bx + i % 8, by + i / 8)).
+  void runBlock(const CompiledPrimitive& prim, const uint32_t* record, const ChannelLayout& layout,
+                const RasterState& state, uint32_t shade_id, int bx, int by, uint64_t mask,
+                const BlockTarget& target);
+
+  BlockCounters counters;
+
+ private:
+  std::vector<uint32_t> regs_;     // num_regs x kLanes
+  std::vector<uint32_t> xregs_;    // num_interp_regs x channels x kLanes
+  std::vector<uint32_t> staging_;  // channels x kLanes: interpolator_return results
+};
+
+}  // namespace pf

@@ -1,0 +1,38 @@
+// The GL state a primitive instance is drawn with, snapshotted at submission (binned once per
+// change, shared by the instances that follow), and the layout of its shading channels.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "compiler/types.h"
+
+namespace pf {
+
+enum class DepthFunc : uint8_t { Never, Less, Equal, LessEqual, Greater, NotEqual, GreaterEqual, Always };
+
+struct RasterState {
+  // Viewport and depth-range transform (window = ndc * scale + offset), as screen() uses it.
+  float vp_scale_x = 0, vp_offset_x = 0, vp_scale_y = 0, vp_offset_y = 0;
+  float depth_scale = 0.5f, depth_offset = 0.5f, depth_near = 0, depth_far = 1;
+  int vp_x0 = 0, vp_y0 = 0, vp_x1 = 0, vp_y1 = 0;  // pixel rectangle [x0, x1) x [y0, y1)
+  bool depth_test = false;
+  bool depth_write = true;
+  DepthFunc depth_func = DepthFunc::Less;
+
+  bool operator==(const RasterState&) const = default;
+};
+
+// How an instance's per-vertex shading parameters are laid out: `count` channels (floats),
+// ordered by interpolation kind (each kind one range), each mapped to a G-buffer slot.
+struct ChannelLayout {
+  int count = 0;
+  int kind_begin[kInterpKindCount] = {0, 0, 0};
+  int kind_end[kInterpKindCount] = {0, 0, 0};
+  std::vector<int> gbuffer_slot;  // per channel
+
+  bool operator==(const ChannelLayout&) const = default;
+};
+
+}  // namespace pf

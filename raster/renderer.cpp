@@ -1,0 +1,195 @@
+// The renderer (see renderer.h).
+#include "raster/renderer.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pf {
+
+Renderer::Renderer(int threads) : pool_(threads) {
+  for (int i = 0; i < pool_.threadCount(); ++i) scratch_.push_back(std::make_unique<WorkerScratch>());
+}
+
+void Renderer::setTarget(uint8_t* color, float* depth, int width, int height) {
+  if (pending()) flush();
+  color_ = color;
+  depth_ = depth;
+  width_ = width;
+  height_ = height;
+  scene_.tiles_x = (width + kTileSize - 1) / kTileSize;
+  scene_.tiles_y = (height + kTileSize - 1) / kTileSize;
+  scene_.bins.assign(static_cast<size_t>(scene_.tiles_x) * scene_.tiles_y, TileBin{});
+}
+
+void Renderer::clear(bool color, bool depth, const float rgba[4], float z) {
+  // A clear after drawing ends the frame so far: what was drawn must land first.
+  if (!scene_.instances.empty()) flush();
+  if (color) {
+    scene_.clear.color = true;
+    std::copy(rgba, rgba + 4, scene_.clear.rgba);
+  }
+  if (depth) {
+    scene_.clear.depth = true;
+    scene_.clear.z = z;
+  }
+}
+
+namespace {
+
+// Pixels whose centres x + 0.5 can lie in [lo, hi], clamped to [clip_lo, clip_hi).
+void pixelRange(float lo, float hi, int clip_lo, int clip_hi, int& out_lo, int& out_hi) {
+  out_lo = clip_lo;
+  out_hi = clip_hi;
+  if (std::isfinite(lo) && lo - 0.5f > static_cast<float>(clip_lo))
+    out_lo = lo - 0.5f >= static_cast<float>(clip_hi) ? clip_hi : static_cast<int>(std::ceil(lo - 0.5f));
+  if (std::isfinite(hi) && hi - 0.5f < static_cast<float>(clip_hi))
+    out_hi = hi - 0.5f < static_cast<float>(clip_lo) ? clip_lo : static_cast<int>(std::floor(hi - 0.5f)) + 1;
+}
+
+}  // namespace
+
+bool Renderer::submit(const CompiledPrimitive& prim, const uint32_t* params, const float* vertex_channels,
+                      const ChannelLayout& layout, const RasterState& state, const ShadeState& shade) {
+  if (!color_) return false;
+  ++stats_.instances_submitted;
+  // Shared state: appended only when it changes.
+  if (scene_.states.empty() || !(scene_.states.back() == state)) scene_.states.push_back(state);
+  if (scene_.layouts.empty() || !(scene_.layouts.back() == layout)) scene_.layouts.push_back(layout);
+  if (scene_.shades.empty() || !(scene_.shades.back() == shade)) scene_.shades.push_back(shade);
+  if (scene_.states.size() > 0xffff || scene_.layouts.size() > 0xffff) {
+    flush();
+    return submit(prim, params, vertex_channels, layout, state, shade);
+  }
+
+  size_t offset = scene_.records.size();
+  scene_.records.resize(offset + SetupExecutor::recordWords(prim, layout.count));
+  SetupInput in{params, vertex_channels, &scene_.layouts.back(), &scene_.states.back()};
+  SetupOutput out = setup_.run(prim, in, scene_.records.data() + offset);
+  if (out.killed) {
+    scene_.records.resize(offset);
+    ++stats_.instances_killed;
+    return false;
+  }
+  Instance inst;
+  inst.prim = &prim;
+  inst.record_offset = static_cast<uint32_t>(offset);
+  inst.state = static_cast<uint16_t>(scene_.states.size() - 1);
+  inst.layout = static_cast<uint16_t>(scene_.layouts.size() - 1);
+  inst.shade_id = static_cast<uint32_t>(scene_.shades.size());
+  // The pixels it may touch: its bound within the viewport and the framebuffer.
+  int vx0 = std::max(state.vp_x0, 0), vy0 = std::max(state.vp_y0, 0);
+  int vx1 = std::min(state.vp_x1, width_), vy1 = std::min(state.vp_y1, height_);
+  if (vx0 >= vx1 || vy0 >= vy1) {
+    scene_.records.resize(offset);
+    return false;
+  }
+  inst.x0 = vx0, inst.x1 = vx1, inst.y0 = vy0, inst.y1 = vy1;
+  if (out.has_bound) {
+    pixelRange(out.bound[0], out.bound[2], vx0, vx1, inst.x0, inst.x1);
+    pixelRange(out.bound[1], out.bound[3], vy0, vy1, inst.y0, inst.y1);
+    if (!(out.bound[0] <= out.bound[2]) || !(out.bound[1] <= out.bound[3])) inst.x1 = inst.x0;  // empty or NaN
+  }
+  if (inst.x0 >= inst.x1 || inst.y0 >= inst.y1) {
+    scene_.records.resize(offset);
+    return false;
+  }
+  int max_slot = 0;
+  for (int s : layout.gbuffer_slot) max_slot = std::max(max_slot, s + 1);
+  if (shade.color_slot >= 0) max_slot = std::max(max_slot, shade.color_slot + 4);
+  scene_.gbuffer_slots = std::max(scene_.gbuffer_slots, max_slot);
+
+  uint32_t index = static_cast<uint32_t>(scene_.instances.size());
+  scene_.instances.push_back(inst);
+  for (int ty = inst.y0 / kTileSize; ty <= (inst.y1 - 1) / kTileSize; ++ty)
+    for (int tx = inst.x0 / kTileSize; tx <= (inst.x1 - 1) / kTileSize; ++tx) {
+      scene_.bins[static_cast<size_t>(ty) * scene_.tiles_x + tx].instances.push_back(index);
+      ++stats_.bin_entries;
+    }
+  return true;
+}
+
+void Renderer::runTile(int tile, WorkerScratch& s) {
+  const int tx = tile % scene_.tiles_x, ty = tile / scene_.tiles_x;
+  const int x0 = tx * kTileSize, y0 = ty * kTileSize;
+  const int w = std::min(kTileSize, width_ - x0), h = std::min(kTileSize, height_ - y0);
+
+  if (scene_.clear.color) {
+    uint8_t c[4];
+    for (int k = 0; k < 4; ++k) c[k] = toUnorm8(scene_.clear.rgba[k]);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) std::copy(c, c + 4, color_ + (static_cast<size_t>(y0 + y) * width_ + x0 + x) * 4);
+  }
+  if (scene_.clear.depth && depth_)
+    for (int y = 0; y < h; ++y)
+      std::fill_n(depth_ + static_cast<size_t>(y0 + y) * width_ + x0, w, scene_.clear.z);
+
+  const TileBin& bin = scene_.bins[tile];
+  if (bin.instances.empty()) return;
+  ++s.tiles_run;
+
+  // The tile's G-buffer: one plane per slot this frame uses, plus the shading-state ids.
+  constexpr size_t kPlane = static_cast<size_t>(kTileSize) * kTileSize;
+  s.shade_ids.assign(kPlane, 0u);
+  s.gbuffer.resize(kPlane * scene_.gbuffer_slots);
+  s.slot_planes.resize(scene_.gbuffer_slots);
+  for (int k = 0; k < scene_.gbuffer_slots; ++k) s.slot_planes[k] = s.gbuffer.data() + kPlane * k;
+
+  BlockTarget target;
+  target.depth = depth_;
+  target.depth_stride = width_;
+  target.shade_ids = s.shade_ids.data();
+  target.slots = s.slot_planes.data();
+  target.tile_x0 = x0;
+  target.tile_y0 = y0;
+
+  for (uint32_t index : bin.instances) {
+    const Instance& inst = scene_.instances[index];
+    // The instance's pixels within this tile.
+    int ix0 = std::max(inst.x0, x0), ix1 = std::min(inst.x1, x0 + w);
+    int iy0 = std::max(inst.y0, y0), iy1 = std::min(inst.y1, y0 + h);
+    const uint32_t* record = scene_.records.data() + inst.record_offset;
+    const ChannelLayout& layout = scene_.layouts[inst.layout];
+    const RasterState& state = scene_.states[inst.state];
+    // Blocks are aligned to the tile; lanes outside the instance's pixels start retired.
+    for (int by = y0 + (iy0 - y0) / kBlockSize * kBlockSize; by < iy1; by += kBlockSize) {
+      for (int bx = x0 + (ix0 - x0) / kBlockSize * kBlockSize; bx < ix1; bx += kBlockSize) {
+        uint64_t mask = 0;
+        for (int ly = 0; ly < kBlockSize; ++ly) {
+          int py = by + ly;
+          if (py < iy0 || py >= iy1) continue;
+          for (int lx = 0; lx < kBlockSize; ++lx) {
+            int px = bx + lx;
+            if (px >= ix0 && px < ix1) mask |= 1ull << (ly * kBlockSize + lx);
+          }
+        }
+        if (mask) s.executor.runBlock(*inst.prim, record, layout, state, inst.shade_id, bx, by, mask, target);
+      }
+    }
+  }
+  ShadeTarget st{color_, width_, x0, y0, w, h};
+  s.pixels_shaded += shadeTile(s.shade_ids.data(), s.slot_planes.data(), scene_.shades.data(), st);
+}
+
+void Renderer::flush() {
+  if (scene_.empty() || !color_) {
+    scene_.reset();
+    return;
+  }
+  const int tiles = scene_.tiles_x * scene_.tiles_y;
+  pool_.parallelFor(tiles, [this](int tile, int worker) { runTile(tile, *scratch_[worker]); });
+  stats_.gbuffer_bytes = 0;
+  for (auto& s : scratch_) {
+    stats_.blocks_run += s->executor.counters.blocks_run;
+    stats_.lanes_started += s->executor.counters.lanes_started;
+    stats_.lanes_committed += s->executor.counters.lanes_committed;
+    stats_.pixels_shaded += s->pixels_shaded;
+    stats_.tiles_run += s->tiles_run;
+    stats_.gbuffer_bytes += (s->gbuffer.capacity() + s->shade_ids.capacity()) * 4;
+    s->executor.counters = BlockCounters{};
+    s->pixels_shaded = 0;
+    s->tiles_run = 0;
+  }
+  scene_.reset();
+}
+
+}  // namespace pf

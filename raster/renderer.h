@@ -1,0 +1,78 @@
+// The renderer behind a context: setup on submission, binning into screen tiles, and at flush
+// the tiles run on the worker threads: for each instance in a tile's bin, its pixel program
+// over the pixel blocks of its bound; then the tile's shading pass.
+//
+//   submit()  -> SetupExecutor (scalar, once per instance) -> Scene bins
+//   flush()   -> WorkerPool: per tile: clear, PixelExecutor per block, shadeTile
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "raster/pixel_executor.h"
+#include "raster/scene.h"
+#include "raster/setup_executor.h"
+#include "raster/worker_pool.h"
+
+namespace pf {
+
+// Work counters for the frames since the last reset (as llvmpipe's LP_COUNT): cheap enough to
+// stay on; `pfrender --stats` prints them.
+struct FrameStats {
+  uint64_t instances_submitted = 0;
+  uint64_t instances_killed = 0;      // setup decided the instance draws nothing
+  uint64_t bin_entries = 0;           // (instance, tile) pairs
+  uint64_t tiles_run = 0;             // tiles with at least one instance
+  uint64_t blocks_run = 0;
+  uint64_t lanes_started = 0;
+  uint64_t lanes_committed = 0;
+  uint64_t pixels_shaded = 0;
+  uint64_t gbuffer_bytes = 0;         // G-buffer planes allocated for the last frame
+};
+
+class Renderer {
+ public:
+  explicit Renderer(int threads);
+
+  int threadCount() const { return pool_.threadCount(); }
+  // The colour buffer (caller's, RGBA8, row 0 at the bottom) and the depth buffer (may be null).
+  void setTarget(uint8_t* color, float* depth, int width, int height);
+
+  // Recorded; applied at flush before the instances that follow it.
+  void clear(bool color, bool depth, const float rgba[4], float z);
+
+  // Runs setup and bins the instance. Returns false if setup killed it.
+  bool submit(const CompiledPrimitive& prim, const uint32_t* params, const float* vertex_channels,
+              const ChannelLayout& layout, const RasterState& state, const ShadeState& shade);
+
+  // Executes everything recorded: afterwards the colour and depth buffers hold the image.
+  void flush();
+  bool pending() const { return !scene_.empty(); }
+
+  const FrameStats& stats() const { return stats_; }
+  void resetStats() { stats_ = FrameStats{}; }
+
+ private:
+  struct WorkerScratch {
+    PixelExecutor executor;
+    std::vector<uint32_t> shade_ids;
+    std::vector<float> gbuffer;
+    std::vector<float*> slot_planes;
+    uint64_t pixels_shaded = 0;
+    uint64_t tiles_run = 0;
+  };
+
+  void runTile(int tile, WorkerScratch& scratch);
+
+  WorkerPool pool_;
+  Scene scene_;
+  SetupExecutor setup_;
+  std::vector<std::unique_ptr<WorkerScratch>> scratch_;
+  uint8_t* color_ = nullptr;
+  float* depth_ = nullptr;
+  int width_ = 0, height_ = 0;
+  FrameStats stats_;
+};
+
+}  // namespace pf

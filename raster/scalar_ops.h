@@ -1,0 +1,74 @@
+// The arithmetic of one lane: the single definition of every value-producing instruction,
+// used by the scalar setup interpreter and, lane by lane, by the pixel executor, so the two
+// programs of a primitive can never disagree on what an operation means.
+#pragma once
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+
+#include "compiler/isa.h"
+
+namespace pf {
+
+inline float asF(uint32_t x) { return std::bit_cast<float>(x); }
+inline uint32_t fromF(float x) { return std::bit_cast<uint32_t>(x); }
+inline int32_t asI(uint32_t x) { return static_cast<int32_t>(x); }
+inline uint32_t fromI(int32_t x) { return static_cast<uint32_t>(x); }
+
+// Float -> int conversion that saturates instead of invoking undefined behaviour; NaN -> 0.
+inline int32_t saturatingToInt(float f) {
+  if (!(f == f)) return 0;
+  if (f >= 2147483647.0f) return 2147483647;
+  if (f <= -2147483648.0f) return static_cast<int32_t>(0x80000000u);
+  return static_cast<int32_t>(f);
+}
+
+inline uint32_t evalScalar(Op op, uint32_t a, uint32_t b, uint32_t c) {
+  switch (op) {
+    case Op::FAdd: return fromF(asF(a) + asF(b));
+    case Op::FSub: return fromF(asF(a) - asF(b));
+    case Op::FMul: return fromF(asF(a) * asF(b));
+    case Op::FDiv: return fromF(asF(a) / asF(b));
+    case Op::FMin: return fromF(asF(b) < asF(a) ? asF(b) : asF(a));
+    case Op::FMax: return fromF(asF(a) < asF(b) ? asF(b) : asF(a));
+    case Op::FNeg: return a ^ 0x80000000u;
+    case Op::FAbs: return a & 0x7fffffffu;
+    case Op::FFloor: return fromF(std::floor(asF(a)));
+    case Op::FCeil: return fromF(std::ceil(asF(a)));
+    case Op::FSqrt: return fromF(std::sqrt(asF(a)));
+    case Op::FSign: return fromF(asF(a) > 0 ? 1.0f : asF(a) < 0 ? -1.0f : 0.0f);
+    // Integer arithmetic wraps (two's complement); division by zero gives 0.
+    case Op::IAdd: return a + b;
+    case Op::ISub: return a - b;
+    case Op::IMul: return a * b;
+    case Op::IDiv:
+      if (b == 0 || (asI(a) == INT32_MIN && asI(b) == -1)) return b == 0 ? 0 : a;
+      return fromI(asI(a) / asI(b));
+    case Op::IMod:
+      if (b == 0 || asI(b) == -1) return 0;
+      return fromI(asI(a) % asI(b));
+    case Op::INeg: return 0u - a;
+    case Op::IMin: return asI(a) < asI(b) ? a : b;
+    case Op::IMax: return asI(a) < asI(b) ? b : a;
+    case Op::IAbs: return asI(a) < 0 ? 0u - a : a;
+    case Op::I2F: return fromF(static_cast<float>(asI(a)));
+    case Op::F2I: return fromI(saturatingToInt(asF(a)));
+    case Op::FLt: return asF(a) < asF(b);
+    case Op::FLe: return asF(a) <= asF(b);
+    case Op::FEq: return asF(a) == asF(b);
+    case Op::FNe: return asF(a) != asF(b);
+    case Op::ILt: return asI(a) < asI(b);
+    case Op::ILe: return asI(a) <= asI(b);
+    case Op::IEq: return a == b;
+    case Op::INe: return a != b;
+    case Op::BAnd: return (a & b) & 1u;
+    case Op::BOr: return (a | b) & 1u;
+    case Op::BNot: return a ^ 1u;
+    case Op::Sel: return a ? b : c;
+    case Op::Mov: return a;
+    default: return 0;
+  }
+}
+
+}  // namespace pf

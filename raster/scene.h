@@ -1,0 +1,59 @@
+// A frame's worth of binned work (llvmpipe's "scene"): the instances submitted since the last
+// flush, their uniform records in one arena, the states they share, and one bin per screen
+// tile listing the instances that touch it in submission order. Vectors keep their capacity
+// from frame to frame, so the steady state allocates nothing per instance.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "compiler/compiler.h"
+#include "raster/raster_state.h"
+#include "raster/shading.h"
+
+namespace pf {
+
+struct Instance {
+  const CompiledPrimitive* prim;
+  uint32_t record_offset;  // into Scene::records
+  uint16_t state;          // into Scene::states
+  uint16_t layout;         // into Scene::layouts
+  uint32_t shade_id;       // 1 + index into Scene::shades
+  int x0, y0, x1, y1;      // pixels [x0, x1) x [y0, y1) that the instance may cover
+};
+
+struct TileBin {
+  std::vector<uint32_t> instances;
+};
+
+struct PendingClear {
+  bool color = false, depth = false;
+  float rgba[4] = {0, 0, 0, 0};
+  float z = 1.0f;
+};
+
+struct Scene {
+  std::vector<Instance> instances;
+  std::vector<uint32_t> records;
+  std::vector<RasterState> states;
+  std::vector<ChannelLayout> layouts;
+  std::vector<ShadeState> shades;
+  std::vector<TileBin> bins;
+  int tiles_x = 0, tiles_y = 0;
+  int gbuffer_slots = 0;
+  PendingClear clear;
+
+  bool empty() const { return instances.empty() && !clear.color && !clear.depth; }
+  void reset() {
+    instances.clear();
+    records.clear();
+    states.clear();
+    layouts.clear();
+    shades.clear();
+    for (TileBin& b : bins) b.instances.clear();
+    gbuffer_slots = 0;
+    clear = PendingClear{};
+  }
+};
+
+}  // namespace pf

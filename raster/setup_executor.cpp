@@ -1,0 +1,105 @@
+// The scalar setup interpreter (see setup_executor.h).
+#include "raster/setup_executor.h"
+
+#include <bit>
+#include <cmath>
+#include <cstring>
+
+#include "raster/scalar_ops.h"
+
+namespace pf {
+
+SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& in, uint32_t* record) {
+  const SetupProgram& p = prim.setup;
+  const int nch = in.layout->count;
+  regs_.assign(p.num_regs, 0);
+  interp_.assign(static_cast<size_t>(p.num_interp_regs) * nch, 0.0f);
+  SetupOutput out;
+
+  auto read = [&](uint32_t o) -> uint32_t {
+    uint32_t i = operandIndex(o);
+    switch (operandKind(o)) {
+      case OperandKind::Reg: return regs_[i];
+      case OperandKind::Const: return p.constants[i];
+      case OperandKind::Param: return in.params[i];
+      case OperandKind::Uniform: break;
+    }
+    return 0;
+  };
+  auto rf = [&](uint32_t o) { return std::bit_cast<float>(read(o)); };
+  auto xreg = [&](uint32_t o) { return interp_.data() + static_cast<size_t>(operandIndex(o)) * nch; };
+  auto state = [&](uint16_t which) -> float {
+    const RasterState& s = *in.state;
+    switch (static_cast<StateValue>(which)) {
+      case StateValue::ViewportScaleX: return s.vp_scale_x;
+      case StateValue::ViewportOffsetX: return s.vp_offset_x;
+      case StateValue::ViewportScaleY: return s.vp_scale_y;
+      case StateValue::ViewportOffsetY: return s.vp_offset_y;
+      case StateValue::DepthScale: return s.depth_scale;
+      case StateValue::DepthOffset: return s.depth_offset;
+      case StateValue::DepthNear: return s.depth_near;
+      case StateValue::DepthFar: return s.depth_far;
+    }
+    return 0.0f;
+  };
+  // Channel ranges of the kinds in `set`, as [begin, end) pairs.
+  auto forChannels = [&](uint16_t set, auto&& fn) {
+    for (int k = 0; k < kInterpKindCount; ++k)
+      if (set & (1u << k))
+        for (int c = in.layout->kind_begin[k]; c < in.layout->kind_end[k]; ++c) fn(c);
+  };
+
+  const size_t n = p.code.size();
+  for (size_t pc = 0; pc < n;) {
+    const Instr& ins = p.code[pc];
+    ++pc;
+    switch (ins.op) {
+      case Op::Jmp: pc = ins.a; continue;
+      case Op::JmpIfNot:
+        if (!read(ins.b)) pc = ins.a;
+        continue;
+      case Op::Kill: out.killed = true; return out;
+      case Op::Bound:
+        out.has_bound = true;
+        out.bound[0] = rf(ins.a);
+        out.bound[1] = rf(ins.b);
+        out.bound[2] = rf(ins.c);
+        out.bound[3] = rf(ins.dst);
+        continue;
+      case Op::LoadState: regs_[operandIndex(ins.dst)] = std::bit_cast<uint32_t>(state(ins.imm)); continue;
+      case Op::XLoadVertex: {
+        float* d = xreg(ins.dst);
+        const float* s = in.vertex_channels + static_cast<size_t>(ins.imm) * nch;
+        std::memcpy(d, s, sizeof(float) * nch);
+        continue;
+      }
+      case Op::XAdd: case Op::XSub: case Op::XMulF: case Op::XDivF: case Op::XNeg: case Op::XMov: {
+        float* d = xreg(ins.dst);
+        const float* a = xreg(ins.a);
+        if (ins.op == Op::XAdd || ins.op == Op::XSub) {
+          const float* b = xreg(ins.b);
+          forChannels(ins.imm, [&](int c) { d[c] = ins.op == Op::XAdd ? a[c] + b[c] : a[c] - b[c]; });
+        } else if (ins.op == Op::XMulF || ins.op == Op::XDivF) {
+          float b = rf(ins.b);
+          forChannels(ins.imm, [&](int c) { d[c] = ins.op == Op::XMulF ? a[c] * b : a[c] / b; });
+        } else {
+          forChannels(ins.imm, [&](int c) { d[c] = ins.op == Op::XNeg ? -a[c] : a[c]; });
+        }
+        continue;
+      }
+      default: {
+        uint32_t r = evalScalar(ins.op, read(ins.a), ins.b == kNoOperand ? 0 : read(ins.b),
+                                ins.c == kNoOperand ? 0 : read(ins.c));
+        regs_[operandIndex(ins.dst)] = r;
+      }
+    }
+  }
+  // Exports: the pixel program's view of this instance.
+  for (size_t s = 0; s < p.scalar_exports.size(); ++s) record[s] = read(p.scalar_exports[s]);
+  float* xrec = reinterpret_cast<float*>(record + p.scalar_exports.size());
+  for (size_t s = 0; s < p.interp_exports.size(); ++s)
+    std::memcpy(xrec + s * nch, interp_.data() + static_cast<size_t>(p.interp_exports[s]) * nch, sizeof(float) * nch);
+  return out;
+}
+
+}  // namespace pf

@@ -1,0 +1,41 @@
+// Runs a primitive's setup program (compiler/isa.h), scalar, once per instance: from its
+// parameters and per-vertex channels to the uniform record the pixel program reads, the screen
+// bound, or the verdict that the instance draws nothing.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "compiler/compiler.h"
+#include "raster/raster_state.h"
+
+namespace pf {
+
+struct SetupInput {
+  const uint32_t* params;     // CompiledPrimitive::param_floats 32-bit values
+  const float* vertex_channels;  // sequence_points x layout.count floats
+  const ChannelLayout* layout;
+  const RasterState* state;
+};
+
+struct SetupOutput {
+  bool killed = false;
+  bool has_bound = false;
+  float bound[4] = {0, 0, 0, 0};  // xmin, ymin, xmax, ymax in window coordinates
+};
+
+class SetupExecutor {
+ public:
+  // Writes the record (pixel.num_uniform_slots words, then the interp slots, layout.count
+  // floats each) to `record`, which must have recordWords() room.
+  SetupOutput run(const CompiledPrimitive& prim, const SetupInput& in, uint32_t* record);
+  static size_t recordWords(const CompiledPrimitive& prim, int channels) {
+    return prim.pixel.num_uniform_slots + static_cast<size_t>(prim.pixel.num_interp_uniform_slots) * channels;
+  }
+
+ private:
+  std::vector<uint32_t> regs_;
+  std::vector<float> interp_;
+};
+
+}  // namespace pf

@@ -1,0 +1,36 @@
+// The deferred shading pass: after every instance of a tile has run, each pixel that some
+// instance covered is shaded once from the shading parameters left in the G-buffer.
+// For now shading is unlit: the colour parameter, clamped and rounded to 8 bits.
+#pragma once
+
+#include <cstdint>
+
+namespace pf {
+
+// What the shading pass needs to know about a shading state: where its parameters are.
+struct ShadeState {
+  int color_slot = -1;  // first of 4 G-buffer slots (r, g, b, a); -1: the state's constant colour
+  float constant_color[4] = {1, 1, 1, 1};
+
+  bool operator==(const ShadeState&) const = default;
+};
+
+struct ShadeTarget {
+  uint8_t* color;   // RGBA8, row 0 at the bottom
+  int stride;       // pixels per row
+  int x0, y0, w, h; // the tile's pixels in window coordinates
+};
+
+// Shades the tile: for every pixel with a non-zero shade id (1 + index into `shades`).
+// Returns the number of pixels shaded.
+uint64_t shadeTile(const uint32_t* shade_ids, const float* const* slots, const ShadeState* shades,
+                   const ShadeTarget& target);
+
+// Float colour component -> 8 bits: clamp to [0, 1], scale, round to nearest (as GL does).
+inline uint8_t toUnorm8(float c) {
+  if (!(c > 0.0f)) return 0;  // also NaN
+  if (c >= 1.0f) return 255;
+  return static_cast<uint8_t>(c * 255.0f + 0.5f);
+}
+
+}  // namespace pf

@@ -1,0 +1,85 @@
+// The rasterizer's thread pool (see worker_pool.h). Job indices are taken under the mutex:
+// tiles are coarse (64x64 pixels), so the lock is never the bottleneck, and TSan sees plainly
+// ordered accesses.
+#include "raster/worker_pool.h"
+
+#include <cstdlib>
+
+namespace pf {
+
+int defaultThreadCount() {
+  if (const char* env = std::getenv("PF_NUM_THREADS")) {
+    char* end = nullptr;
+    long n = std::strtol(env, &end, 10);
+    if (end != env && n >= 1 && n <= 256) return static_cast<int>(n);
+  }
+  unsigned hc = std::thread::hardware_concurrency();
+  return hc == 0 ? 1 : static_cast<int>(hc > 256 ? 256 : hc);
+}
+
+WorkerPool::WorkerPool(int threads) {
+  if (threads < 1) threads = 1;
+  for (int i = 1; i < threads; ++i) workers_.emplace_back([this, i] { workerLoop(i); });
+}
+
+WorkerPool::~WorkerPool() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stopping_ = true;
+  }
+  wake_.notify_all();
+  for (std::thread& t : workers_) t.join();
+}
+
+void WorkerPool::drain(int worker) {
+  for (;;) {
+    int job;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (next_job_ >= jobs_) return;
+      job = next_job_++;
+    }
+    (*fn_)(job, worker);
+  }
+}
+
+void WorkerPool::workerLoop(int worker) {
+  unsigned seen = 0;
+  for (;;) {
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
+      if (stopping_) return;
+      seen = generation_;
+      ++busy_;
+    }
+    drain(worker);
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      --busy_;
+    }
+    done_.notify_all();
+  }
+}
+
+void WorkerPool::parallelFor(int jobs, const std::function<void(int, int)>& fn) {
+  if (jobs <= 0) return;
+  if (workers_.empty() || jobs == 1) {
+    for (int j = 0; j < jobs; ++j) fn(j, 0);
+    return;
+  }
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    fn_ = &fn;
+    jobs_ = jobs;
+    next_job_ = 0;
+    ++generation_;
+  }
+  wake_.notify_all();
+  drain(0);
+  std::unique_lock<std::mutex> lock(mutex_);
+  done_.wait(lock, [&] { return next_job_ >= jobs_ && busy_ == 0; });
+  fn_ = nullptr;
+}
+
+}  // namespace pf
