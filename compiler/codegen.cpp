@@ -195,7 +195,7 @@ class Generator {
         if (varying_depth == 0) setup_.code.push_back(Instr{Op::Kill});
       } else if (in.dst >= 0 && needed_.count(in.dst)) {
         Instr out{in.op, static_cast<uint16_t>(in.imm), setupOperand(in.dst), setupOperand(in.a),
-                  setupOperand(in.b), setupOperand(in.c)};
+                  setupOperand(in.b), setupOperand(in.c), setupOperand(in.d)};
         setup_.code.push_back(out);
       }
     }
@@ -264,7 +264,7 @@ class Generator {
       const IrInst& in = n.inst;
       if (!pixelInst(in, varying_depth)) continue;
       Instr out{in.op, static_cast<uint16_t>(in.imm), pixelOperand(in.dst), pixelOperand(in.a),
-                pixelOperand(in.b), pixelOperand(in.c)};
+                pixelOperand(in.b), pixelOperand(in.c), pixelOperand(in.d)};
       pixel_.code.push_back(out);
     }
   }

@@ -9,7 +9,7 @@ const char* opName(Op op) {
   static const char* names[] = {
       "fadd", "fsub", "fmul", "fdiv", "fmin", "fmax", "fneg", "fabs", "ffloor", "fceil", "fsqrt",
       "fsign", "iadd", "isub", "imul", "idiv", "imod", "ineg", "imin", "imax", "iabs", "i2f",
-      "f2i", "flt", "fle", "feq", "fne", "ilt", "ile", "ieq", "ine", "band", "bor", "bnot", "sel",
+      "f2i", "flt", "fle", "feq", "fne", "ilt", "ile", "ieq", "ine", "band", "bor", "bnot", "sel", "cross_sign",
       "mov", "xadd", "xsub", "xneg", "xmulf", "xdivf", "xmov", "xloadvertex", "loadstate",
       "bound", "kill", "retire", "ztest", "interp_return", "interp_shared", "zcommit", "jmp",
       "jmpifnot", "maskif", "maskelse", "maskend", "jmpifnone"};
@@ -70,6 +70,7 @@ std::string disassemble(const Bytecode& b, bool pixel) {
     bool b_is_float = in.op == Op::XMulF || in.op == Op::XDivF;
     if (in.b != kNoOperand) parts.push_back(operandText(in.b, b, pixel, xi && !b_is_float));
     if (in.c != kNoOperand) parts.push_back(operandText(in.c, b, pixel, false));
+    if (in.d != kNoOperand) parts.push_back(operandText(in.d, b, pixel, false));
     if (in.op == Op::Bound) parts.push_back(operandText(in.dst, b, pixel, false));
     if (in.op == Op::XLoadVertex || in.op == Op::LoadState || in.op == Op::InterpReturn ||
         in.op == Op::InterpShared)

@@ -22,6 +22,7 @@ enum class Op : uint8_t {
   FLt, FLe, FEq, FNe, ILt, ILe, IEq, INe,
   BAnd, BOr, BNot,
   Sel,  // dst = a ? b : c  (any 32-bit class)
+  CrossSign,  // dst = sign(a * d - b * c) as -1, 0, 1, exact (evaluated in double)
   Mov,
   // interpolator_data: one value per shading-parameter channel of the instance
   XAdd, XSub, XNeg, XMulF, XDivF, XMov,
@@ -67,7 +68,7 @@ struct Instr {
   Op op;
   uint16_t imm = 0;
   uint32_t dst = kNoOperand;
-  uint32_t a = kNoOperand, b = kNoOperand, c = kNoOperand;
+  uint32_t a = kNoOperand, b = kNoOperand, c = kNoOperand, d = kNoOperand;
 };
 
 // The registers of the pixel program that hold the built-ins before the first instruction.

@@ -483,6 +483,19 @@ class Lowerer {
       int x = int_result ? arg(0) : farg(0), y = int_result ? arg(1) : farg(1);
       return scalar(e.type, emit(o, int_result ? ValueClass::I32 : ValueClass::F32, false, x, y));
     }
+    if (f == "cross_sign") {
+      // sign(a * d - b * c), exact: the robust orientation test for edges.
+      Value v;
+      v.cls = ValueClass::F32;
+      int dst = -1;
+      int a0 = farg(0), a1 = farg(1), a2 = farg(2), a3 = farg(3);
+      v.varying = isVarying(a0) || isVarying(a1) || isVarying(a2) || isVarying(a3);
+      dst = newValue(v);
+      IrNode n;
+      n.inst = IrInst{Op::CrossSign, dst, a0, a1, a2, a3, 0, e.loc};
+      blocks_.back()->push_back(std::move(n));
+      return scalar(e.type, dst);
+    }
     if (f == "clamp") {
       int lo = emit(Op::FMax, ValueClass::F32, false, farg(0), farg(1));
       return scalar(e.type, emit(Op::FMin, ValueClass::F32, false, lo, farg(2)));

@@ -403,8 +403,8 @@ class Parser {
   ExprPtr postfix(ExprPtr e) {
     for (;;) {
       if (at(Tok::LBracket)) {
-        SourceLoc loc = take().loc;
-        auto ix = makeExpr(ExprKind::Index, loc);
+        take();
+        auto ix = makeExpr(ExprKind::Index, e->loc);  // located where the indexed value starts
         ix->args.push_back(std::move(e));
         ix->args.push_back(expression());
         expect(Tok::RBracket, "after the index");

@@ -585,6 +585,9 @@ class Analyzer {
       if (!arity(2, 2) || any_void || !needScalars()) return;
       bool all_int = e.args[0]->type.base == BaseType::Int && e.args[1]->type.base == BaseType::Int;
       e.type = Type::of(all_int ? BaseType::Int : BaseType::Float);
+    } else if (f == "cross_sign") {
+      if (!arity(4, 4) || any_void || !needScalars()) return;
+      e.type = Type::of(BaseType::Float);
     } else if (f == "clamp") {
       if (!arity(3, 3) || any_void || !needScalars()) return;
       e.type = Type::of(BaseType::Float);
@@ -633,7 +636,7 @@ class Analyzer {
 
 bool isBuiltinFunction(const std::string& name) {
   static const std::set<std::string> names = {"min", "max", "clamp", "abs", "floor", "ceil", "sqrt",
-                                              "sign", "screen", "depth_range", "ztest", "float",
+                                              "sign", "cross_sign", "screen", "depth_range", "ztest", "float",
                                               "int", "point", "vector", "normal", "color"};
   return names.count(name) > 0;
 }

@@ -16,24 +16,23 @@
 namespace pf {
 namespace {
 
-using Kernel = void (*)(uint32_t* __restrict, const uint32_t*, const uint32_t*, const uint32_t*);
+using Kernel = void (*)(uint32_t* __restrict, const uint32_t*, const uint32_t*, const uint32_t*, const uint32_t*);
 
-template <Op OP, bool VA, bool VB, bool VC>
-void kernel(uint32_t* __restrict d, const uint32_t* a, const uint32_t* b, const uint32_t* c) {
-  for (int i = 0; i < kLanes; ++i) d[i] = evalScalar(OP, VA ? a[i] : a[0], VB ? b[i] : b[0], VC ? c[i] : c[0]);
+template <Op OP, unsigned WIDE>  // bit k set: operand k (a, b, c, d) has one value per lane
+void kernel(uint32_t* __restrict r, const uint32_t* a, const uint32_t* b, const uint32_t* c, const uint32_t* d) {
+  for (int i = 0; i < kLanes; ++i)
+    r[i] = evalScalar(OP, (WIDE & 1) ? a[i] : a[0], (WIDE & 2) ? b[i] : b[0], (WIDE & 4) ? c[i] : c[0],
+                      (WIDE & 8) ? d[i] : d[0]);
 }
 
-template <Op OP>
-constexpr std::array<Kernel, 8> kernelsFor() {
-  return {kernel<OP, false, false, false>, kernel<OP, true, false, false>,
-          kernel<OP, false, true, false>,  kernel<OP, true, true, false>,
-          kernel<OP, false, false, true>,  kernel<OP, true, false, true>,
-          kernel<OP, false, true, true>,   kernel<OP, true, true, true>};
+template <Op OP, size_t... W>
+constexpr std::array<Kernel, 16> kernelsFor(std::index_sequence<W...>) {
+  return {kernel<OP, static_cast<unsigned>(W)>...};
 }
 
 template <size_t... I>
-constexpr std::array<std::array<Kernel, 8>, sizeof...(I)> kernelTable(std::index_sequence<I...>) {
-  return {kernelsFor<static_cast<Op>(I)>()...};
+constexpr std::array<std::array<Kernel, 16>, sizeof...(I)> kernelTable(std::index_sequence<I...>) {
+  return {kernelsFor<static_cast<Op>(I)>(std::make_index_sequence<16>{})...};
 }
 
 // Kernels for every op up to Mov (the value-producing scalar instructions).
@@ -135,12 +134,12 @@ void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* reco
   alignas(64) uint32_t tmp[kLanes];
 
   auto run = [&](Op op, uint32_t* dst, const uint32_t* a, bool wa, const uint32_t* b, bool wb,
-                 const uint32_t* c, bool wc, uint64_t exec) {
-    Kernel k = kKernels[static_cast<size_t>(op)][(wa ? 1 : 0) | (wb ? 2 : 0) | (wc ? 4 : 0)];
+                 const uint32_t* c, bool wc, uint64_t exec, const uint32_t* d = kZeroLanes, bool wd = false) {
+    Kernel k = kKernels[static_cast<size_t>(op)][(wa ? 1 : 0) | (wb ? 2 : 0) | (wc ? 4 : 0) | (wd ? 8 : 0)];
     if (exec == ~0ull) {
-      k(dst, a, b, c);
+      k(dst, a, b, c, d);
     } else {
-      k(tmp, a, b, c);
+      k(tmp, a, b, c, d);
       blend(dst, tmp, exec);
     }
   };
@@ -236,12 +235,13 @@ void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* reco
         continue;
       }
       default: {
-        bool wa = false, wb = false, wc = false;
+        bool wa = false, wb = false, wc = false, wd = false;
         const uint32_t* a = ins.a == kNoOperand ? kZeroLanes : src(ins.a, wa);
         const uint32_t* b = ins.b == kNoOperand ? kZeroLanes : src(ins.b, wb);
         const uint32_t* c = ins.c == kNoOperand ? kZeroLanes : src(ins.c, wc);
-        uint32_t* d = R + static_cast<size_t>(operandIndex(ins.dst)) * kLanes;
-        run(ins.op, d, a, wa, b, wb, c, wc, exec);
+        const uint32_t* d = ins.d == kNoOperand ? kZeroLanes : src(ins.d, wd);
+        uint32_t* r = R + static_cast<size_t>(operandIndex(ins.dst)) * kLanes;
+        run(ins.op, r, a, wa, b, wb, c, wc, exec, d, wd);
       }
     }
   }

@@ -24,7 +24,7 @@ inline int32_t saturatingToInt(float f) {
   return static_cast<int32_t>(f);
 }
 
-inline uint32_t evalScalar(Op op, uint32_t a, uint32_t b, uint32_t c) {
+inline uint32_t evalScalar(Op op, uint32_t a, uint32_t b, uint32_t c, uint32_t d = 0) {
   switch (op) {
     case Op::FAdd: return fromF(asF(a) + asF(b));
     case Op::FSub: return fromF(asF(a) - asF(b));
@@ -66,6 +66,12 @@ inline uint32_t evalScalar(Op op, uint32_t a, uint32_t b, uint32_t c) {
     case Op::BOr: return (a | b) & 1u;
     case Op::BNot: return a ^ 1u;
     case Op::Sel: return a ? b : c;
+    case Op::CrossSign: {
+      // Products of two floats are exact in double, and the sign of a difference is never
+      // rounded away: an exact orientation predicate for float inputs.
+      double p = static_cast<double>(asF(a)) * asF(d), q = static_cast<double>(asF(b)) * asF(c);
+      return fromF(p > q ? 1.0f : p < q ? -1.0f : 0.0f);
+    }
     case Op::Mov: return a;
     default: return 0;
   }

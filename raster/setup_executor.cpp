@@ -89,7 +89,7 @@ SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& 
       }
       default: {
         uint32_t r = evalScalar(ins.op, read(ins.a), ins.b == kNoOperand ? 0 : read(ins.b),
-                                ins.c == kNoOperand ? 0 : read(ins.c));
+                                ins.c == kNoOperand ? 0 : read(ins.c), ins.d == kNoOperand ? 0 : read(ins.d));
         regs_[operandIndex(ins.dst)] = r;
       }
     }

@@ -1,0 +1,88 @@
+// Test helpers: compile a source string, run one instance of a primitive over one pixel block.
+#pragma once
+
+#include <bit>
+#include <string>
+#include <vector>
+
+#include "compiler/compiler.h"
+#include "raster/pixel_executor.h"
+#include "raster/setup_executor.h"
+
+namespace pf::test {
+
+struct Compiled {
+  bool ok = false;
+  std::string diagnostics;
+  CompiledModule module;
+  const CompiledPrimitive* find(const std::string& name) const {
+    for (auto& p : module.primitives)
+      if (p->name == name) return p.get();
+    return nullptr;
+  }
+};
+
+inline Compiled compile(const std::string& source, const std::string& name = "test.pfl") {
+  Compiled c;
+  DiagnosticLog log;
+  c.ok = compileSource(name, source, c.module, log);
+  c.diagnostics = log.format();
+  return c;
+}
+
+inline uint32_t f2u(float f) { return std::bit_cast<uint32_t>(f); }
+
+// Runs setup and then the pixel program of `prim` over the 8x8 block at (0, 0) of an 8x8
+// framebuffer whose depth starts at `initial_depth`. Results: depth and channel values.
+struct BlockRun {
+  bool killed = false;
+  SetupOutput setup;
+  std::vector<float> depth = std::vector<float>(64, 1.0f);
+  std::vector<uint32_t> shade_ids = std::vector<uint32_t>(64 * 64, 0);
+  std::vector<float> channels;  // slot-major planes of 64*64
+  float channel(int slot, int x, int y) const { return channels[static_cast<size_t>(slot) * 4096 + y * 64 + x]; }
+  bool drawn(int x, int y) const { return shade_ids[y * 64 + x] != 0; }
+};
+
+inline BlockRun runBlock(const CompiledPrimitive& prim, const std::vector<float>& params,
+                         const std::vector<float>& vertex_channels, int nch, bool depth_test = true,
+                         float initial_depth = 1.0f, InterpKind kind = InterpKind::PerspectiveLinear) {
+  BlockRun r;
+  std::fill(r.depth.begin(), r.depth.end(), initial_depth);
+  std::vector<uint32_t> p(params.size());
+  for (size_t i = 0; i < params.size(); ++i) p[i] = f2u(params[i]);
+  ChannelLayout layout;
+  layout.count = nch;
+  int k = static_cast<int>(kind);
+  for (int i = 0; i < kInterpKindCount; ++i) layout.kind_begin[i] = layout.kind_end[i] = i <= k ? 0 : nch;
+  layout.kind_begin[k] = 0;
+  layout.kind_end[k] = nch;
+  for (int i = k + 1; i < kInterpKindCount; ++i) layout.kind_begin[i] = layout.kind_end[i] = nch;
+  for (int i = 0; i < nch; ++i) layout.gbuffer_slot.push_back(i);
+  RasterState st;
+  st.vp_scale_x = 4;
+  st.vp_offset_x = 4;
+  st.vp_scale_y = 4;
+  st.vp_offset_y = 4;
+  st.vp_x1 = 8;
+  st.vp_y1 = 8;
+  st.depth_test = depth_test;
+  std::vector<uint32_t> record(SetupExecutor::recordWords(prim, nch) + 1);
+  SetupExecutor setup;
+  r.setup = setup.run(prim, SetupInput{p.data(), vertex_channels.data(), &layout, &st}, record.data());
+  r.killed = r.setup.killed;
+  if (r.killed) return r;
+  r.channels.assign(static_cast<size_t>(std::max(nch, 1)) * 4096, 0.0f);
+  std::vector<float*> planes;
+  for (int i = 0; i < std::max(nch, 1); ++i) planes.push_back(r.channels.data() + static_cast<size_t>(i) * 4096);
+  BlockTarget t;
+  t.depth = r.depth.data();
+  t.depth_stride = 8;
+  t.shade_ids = r.shade_ids.data();
+  t.slots = planes.data();
+  PixelExecutor ex;
+  ex.runBlock(prim, record.data(), layout, st, 1, 0, 0, ~0ull, t);
+  return r;
+}
+
+}  // namespace pf::test
