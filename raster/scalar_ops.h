@@ -24,7 +24,9 @@ inline int32_t saturatingToInt(float f) {
   return static_cast<int32_t>(f);
 }
 
-inline uint32_t evalScalar(Op op, uint32_t a, uint32_t b, uint32_t c, uint32_t d = 0) {
+// Always inlined: with `op` a constant (the pixel kernels are instantiated per op), the switch
+// folds away and the lane loop around it vectorizes.
+[[gnu::always_inline]] inline uint32_t evalScalar(Op op, uint32_t a, uint32_t b, uint32_t c, uint32_t d = 0) {
   switch (op) {
     case Op::FAdd: return fromF(asF(a) + asF(b));
     case Op::FSub: return fromF(asF(a) - asF(b));

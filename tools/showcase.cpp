@@ -86,7 +86,7 @@ void drawShowcase(int width, int height) {
       auto v = [&](float u, float w, float shade) {
         float s = dark ? 0.55f : 0.95f;
         glColor4f(s * (0.95f - 0.1f * shade), s * (0.55f + 0.2f * shade), s * 0.25f, 1.0f);
-        vertex(u, 0.05f + 0.16f * u - 0.05f * w, w);
+        vertex(u, 0.1f + 0.32f * u - 0.12f * w, w);
       };
       float s0 = (w0 + 2.6f) / 5.2f, s1 = (w1 + 2.6f) / 5.2f;
       v(u0, w0, s0); v(u1, w0, s0); v(u1, w1, s1);
