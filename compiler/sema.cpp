@@ -373,7 +373,7 @@ class Analyzer {
       if (vi >= 0) {
         const Var& v = vars_[vi];
         if (vi < static_cast<int>(builtin_count_)) return v.why;
-        return "it depends on '" + v.name + "' (declared at line " + std::to_string(v.loc.line) + "), which is varying because " + stripIt(v.why);
+        return "it depends on '" + v.name + "' (declared at line " + std::to_string(v.loc.line) + "), which " + stripIt(v.why);
       }
     }
     if (e.kind == ExprKind::Call && e.name == "ztest") return "it depends on ztest(), which reads the depth buffer";
