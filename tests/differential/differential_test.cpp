@@ -1,0 +1,258 @@
+// Differential tests: one GL-1.x source (fan_scene.inc) rendered by OSMesa, the reference, and
+// by primflow; the images must agree. Labels: differential, conformance.
+//   - coverage: exactly the same pixels covered, each by the same triangle (so in primflow no
+//     pixel is drawn twice by the wrong triangle and none is missed), the rest left clear;
+//   - Gouraud colours within 2/255 per channel;
+//   - depth testing, in both drawing orders, and the depth buffer's values;
+//   - primflow's output is byte-identical for 1, 2, 3 and 8 rasterizer threads.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "differential/scenes.h"
+
+using pfdiff::Image;
+using pfdiff::kSize;
+using pfdiff::Scene;
+
+namespace {
+
+const char* sceneName(Scene s) {
+  switch (s) {
+    case Scene::FanIds: return "FanIds";
+    case Scene::MeshIds: return "MeshIds";
+    case Scene::FanGouraud: return "FanGouraud";
+    case Scene::DepthFarThenNear: return "DepthFarThenNear";
+    case Scene::DepthNearThenFar: return "DepthNearThenFar";
+  }
+  return "?";
+}
+
+const uint8_t* pixel(const Image& img, int x, int y) {
+  return &img.rgba[(static_cast<size_t>(y) * img.width + x) * 4];
+}
+
+bool isClear(const uint8_t* p) {
+  return p[0] == pfdiff::kClear[0] && p[1] == pfdiff::kClear[1] && p[2] == pfdiff::kClear[2] &&
+         p[3] == pfdiff::kClear[3];
+}
+
+std::string rgba(const uint8_t* p) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "(%d, %d, %d, %d)", p[0], p[1], p[2], p[3]);
+  return buf;
+}
+
+// The triangle whose ID colour the pixel has; kNoId for the clear colour; -2 for any other colour.
+int idOf(const uint8_t* p, int triangles) {
+  if (isClear(p)) return pfdiff::kNoId;
+  int n = p[0] + 256 * p[1];
+  int id = n - 1;
+  if (id < 0 || id >= triangles || p[2] != ((id * 37) & 255) || p[3] != 255) return -2;
+  return id;
+}
+
+// With PF_DIFF_DUMP=DIR in the environment, every rendered image is also written to
+// DIR/<renderer>_<scene>.ppm (top row first) for looking at.
+void dump(const Image& img, const std::string& name) {
+  const char* dir = std::getenv("PF_DIFF_DUMP");
+  if (!dir || !*dir || img.rgba.empty()) return;
+  std::string path = std::string(dir) + "/" + name + ".ppm";
+  FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) return;
+  std::fprintf(f, "P6\n%d %d\n255\n", img.width, img.height);
+  for (int y = img.height - 1; y >= 0; --y)
+    for (int x = 0; x < img.width; ++x) std::fwrite(&img.rgba[(size_t(y) * img.width + x) * 4], 1, 3, f);
+  std::fclose(f);
+}
+
+// OSMesa draws; a machine without a working OSMesa cannot run these tests at all.
+Image reference(Scene s) {
+  Image img = pfdiff::renderOsmesa(s, kSize, kSize);
+  if (!img.ok) ADD_FAILURE() << "OSMesa could not render " << sceneName(s);
+  dump(img, std::string("osmesa_") + sceneName(s));
+  return img;
+}
+
+Image primflow(Scene s, int threads) {
+  Image img = pfdiff::renderPrimflow(s, kSize, kSize, threads);
+  if (!img.ok) ADD_FAILURE() << "primflow failed (no context or a GL error) on " << sceneName(s);
+  dump(img, std::string("primflow_") + sceneName(s) + "_t" + std::to_string(threads));
+  return img;
+}
+
+// Every pixel: the same triangle ID in both images.
+void expectSameCoverage(Scene s, int triangles) {
+  Image ref = reference(s);
+  Image got = primflow(s, 1);
+  ASSERT_TRUE(ref.ok && got.ok);
+
+  int mismatches = 0, foreign = 0, covered_ref = 0, covered_got = 0;
+  std::map<int, int> count_ref, count_got;
+  std::ostringstream examples;
+  for (int y = 0; y < kSize; ++y) {
+    for (int x = 0; x < kSize; ++x) {
+      int a = idOf(pixel(ref, x, y), triangles);
+      int b = idOf(pixel(got, x, y), triangles);
+      ASSERT_NE(a, -2) << "OSMesa wrote a colour that is no ID at (" << x << ", " << y
+                       << "): " << rgba(pixel(ref, x, y));
+      if (b == -2) {
+        if (++foreign <= 10)
+          examples << "  (" << x << ", " << y << "): primflow " << rgba(pixel(got, x, y))
+                   << " is no ID colour, OSMesa triangle " << a << "\n";
+        continue;
+      }
+      count_ref[a]++;
+      count_got[b]++;
+      covered_ref += a != pfdiff::kNoId;
+      covered_got += b != pfdiff::kNoId;
+      if (a != b && ++mismatches <= 20)
+        examples << "  (" << x << ", " << y << ") centre (" << x + 0.5 << ", " << y + 0.5
+                 << "): OSMesa triangle " << a << ", primflow triangle " << b
+                 << " (-1 = not covered)\n";
+    }
+  }
+  EXPECT_EQ(foreign, 0) << "pixels of colours that are no triangle's ID colour\n" << examples.str();
+  EXPECT_EQ(mismatches, 0) << "pixels covered by a different triangle (or by none) than in OSMesa; "
+                           << "covered pixels: OSMesa " << covered_ref << ", primflow " << covered_got
+                           << "\n" << examples.str();
+  for (int id = 0; id < triangles; ++id)
+    EXPECT_EQ(count_got[id], count_ref[id]) << "pixels of triangle " << id;
+  EXPECT_GT(covered_ref, kSize * kSize / 4) << "the reference drew (almost) nothing";
+}
+
+// Every pixel: each channel within `tolerance` of OSMesa's.
+void expectSameColours(const Image& ref, const Image& got, int tolerance, const char* what) {
+  int bad = 0, worst = 0;
+  std::ostringstream examples;
+  for (int y = 0; y < kSize; ++y) {
+    for (int x = 0; x < kSize; ++x) {
+      const uint8_t* a = pixel(ref, x, y);
+      const uint8_t* b = pixel(got, x, y);
+      int d = 0;
+      for (int c = 0; c < 4; ++c) d = std::max(d, std::abs(int(a[c]) - int(b[c])));
+      worst = std::max(worst, d);
+      if (d > tolerance && ++bad <= 20)
+        examples << "  (" << x << ", " << y << "): OSMesa " << rgba(a) << ", primflow " << rgba(b) << "\n";
+    }
+  }
+  EXPECT_EQ(bad, 0) << what << ": pixels off by more than " << tolerance
+                    << "/255 in a channel (largest difference " << worst << ")\n" << examples.str();
+}
+
+}  // namespace
+
+namespace pfdiff {
+void PrintTo(Scene s, std::ostream* os) { *os << sceneName(s); }  // test names in ctest
+}  // namespace pfdiff
+
+TEST(Differential, FanCoverageMatchesOsmesa) { expectSameCoverage(Scene::FanIds, pfdiff::kFanTriangles); }
+
+TEST(Differential, MeshCoverageMatchesOsmesa) { expectSameCoverage(Scene::MeshIds, pfdiff::kMeshTriangles); }
+
+// Pixels well outside the fan (centre farther than radius + 2 from the fan's centre) keep the
+// clear colour in both; and the named functions of the brief give the same pixels.
+TEST(Differential, OutsideTheFanStaysClear) {
+  std::vector<uint8_t> ref = renderFanOsmesa(kSize, kSize);
+  std::vector<uint8_t> got = renderFanPrimflow(kSize, kSize, 1);
+  ASSERT_EQ(ref.size(), size_t(kSize) * kSize * 4);
+  ASSERT_EQ(got.size(), ref.size());
+  int outside = 0, not_clear_ref = 0, not_clear_got = 0;
+  for (int y = 0; y < kSize; ++y) {
+    for (int x = 0; x < kSize; ++x) {
+      double dx = x + 0.5 - 128.5, dy = y + 0.5 - 128.5;
+      if (std::sqrt(dx * dx + dy * dy) <= 102.0) continue;
+      ++outside;
+      size_t i = (size_t(y) * kSize + x) * 4;
+      not_clear_ref += !isClear(&ref[i]);
+      if (!isClear(&got[i]) && ++not_clear_got <= 5)
+        ADD_FAILURE() << "primflow drew outside the fan at (" << x << ", " << y << "): " << rgba(&got[i]);
+    }
+  }
+  EXPECT_GT(outside, 20000);
+  EXPECT_EQ(not_clear_ref, 0);
+  EXPECT_EQ(not_clear_got, 0);
+  // The four corners, explicitly.
+  for (int corner : {0, kSize - 1, (kSize - 1) * kSize, kSize * kSize - 1})
+    EXPECT_TRUE(isClear(&got[size_t(corner) * 4])) << "corner pixel " << corner;
+}
+
+TEST(Differential, GouraudColoursWithinTwoLevels) {
+  Image ref = reference(Scene::FanGouraud);
+  Image got = primflow(Scene::FanGouraud, 1);
+  ASSERT_TRUE(ref.ok && got.ok);
+  expectSameColours(ref, got, 2, "Gouraud fan");
+}
+
+class DifferentialDepth : public ::testing::TestWithParam<Scene> {};
+
+TEST_P(DifferentialDepth, ImageMatchesOsmesa) {
+  Image ref = reference(GetParam());
+  Image got = primflow(GetParam(), 1);
+  ASSERT_TRUE(ref.ok && got.ok);
+  expectSameColours(ref, got, 0, sceneName(GetParam()));
+}
+
+TEST_P(DifferentialDepth, DepthBufferMatchesOsmesa) {
+  Image ref = reference(GetParam());
+  Image got = primflow(GetParam(), 1);
+  ASSERT_TRUE(ref.ok && got.ok);
+  ASSERT_EQ(ref.depth.size(), size_t(kSize) * kSize) << "OSMesa's depth buffer could not be read";
+  ASSERT_EQ(got.depth.size(), size_t(kSize) * kSize) << "pfGetDepthBuffer failed";
+  // OSMesa keeps 24-bit integers, rounded to nearest; primflow floats.
+  const double tolerance = 1.0 / (1 << 20);
+  int bad = 0;
+  double worst = 0;
+  std::ostringstream examples;
+  for (int y = 0; y < kSize; ++y) {
+    for (int x = 0; x < kSize; ++x) {
+      size_t i = size_t(y) * kSize + x;
+      double d = std::abs(ref.depth[i] - got.depth[i]);
+      worst = std::max(worst, d);
+      if (d > tolerance && ++bad <= 20)
+        examples << "  (" << x << ", " << y << "): OSMesa " << ref.depth[i] << ", primflow "
+                 << got.depth[i] << "\n";
+    }
+  }
+  EXPECT_EQ(bad, 0) << "depth values off by more than 2^-20 (largest difference " << worst << ")\n"
+                    << examples.str();
+}
+
+// Both drawing orders give the same picture.
+TEST(Differential, DepthOrderDoesNotMatter) {
+  Image a = primflow(Scene::DepthFarThenNear, 1);
+  Image b = primflow(Scene::DepthNearThenFar, 1);
+  ASSERT_TRUE(a.ok && b.ok);
+  expectSameColours(a, b, 0, "far-then-near against near-then-far");
+}
+
+INSTANTIATE_TEST_SUITE_P(Orders, DifferentialDepth,
+                         ::testing::Values(Scene::DepthFarThenNear, Scene::DepthNearThenFar),
+                         [](const ::testing::TestParamInfo<Scene>& info) { return sceneName(info.param); });
+
+class DifferentialThreads : public ::testing::TestWithParam<Scene> {};
+
+TEST_P(DifferentialThreads, ByteIdenticalForAnyThreadCount) {
+  Image one = primflow(GetParam(), 1);
+  ASSERT_TRUE(one.ok);
+  for (int threads : {2, 3, 8}) {
+    Image many = primflow(GetParam(), threads);
+    ASSERT_TRUE(many.ok);
+    size_t differing = 0;
+    for (size_t i = 0; i < one.rgba.size(); ++i) differing += one.rgba[i] != many.rgba[i];
+    EXPECT_EQ(differing, 0u) << threads << " threads: bytes differing from 1 thread";
+    EXPECT_TRUE(one.depth == many.depth) << threads << " threads: the depth buffer differs from 1 thread";
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, DifferentialThreads,
+                         ::testing::Values(Scene::FanIds, Scene::MeshIds, Scene::FanGouraud,
+                                           Scene::DepthFarThenNear, Scene::DepthNearThenFar),
+                         [](const ::testing::TestParamInfo<Scene>& info) { return sceneName(info.param); });

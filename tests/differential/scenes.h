@@ -1,0 +1,44 @@
+// The differential tests' scenes, rendered by two GL implementations from one GL-1.x source
+// (fan_scene.inc): OSMesa, the reference (osmesa_render.cpp), and primflow through
+// <primflow/gl_mangle.h> (primflow_render.cpp).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace pfdiff {
+
+enum class Scene : int {
+  FanIds,            // 64 triangles around a pixel centre, each in its own ID colour
+  MeshIds,           // a jittered grid of 288 triangles sharing edges, each in its own ID colour
+  FanGouraud,        // the fan with a different colour at every vertex
+  DepthFarThenNear,  // three overlapping triangles at different depths, drawn far to near
+  DepthNearThenFar,  // the same, drawn near to far
+};
+
+constexpr int kSize = 256;  // the scenes are drawn at 256 x 256, glOrtho(0, 256, 0, 256, -1, 1)
+
+// The clear colour of every scene, as bytes.
+constexpr uint8_t kClear[4] = {16, 32, 48, 255};
+
+// Number of triangles of the ID scenes, and the ID colour of triangle `id`:
+// R = (id + 1) & 255, G = (id + 1) >> 8, B = (id * 37) & 255 (for the eye only), A = 255.
+constexpr int kFanTriangles = 64;
+constexpr int kMeshTriangles = 288;
+constexpr int kNoId = -1;
+
+struct Image {
+  int width = 0, height = 0;
+  std::vector<uint8_t> rgba;   // row 0 at the bottom
+  std::vector<double> depth;   // window depth in [0, 1], row 0 at the bottom; empty if unread
+  bool ok = false;             // false: the context could not be made
+};
+
+Image renderOsmesa(Scene scene, int width, int height);
+Image renderPrimflow(Scene scene, int width, int height, int threads);
+
+}  // namespace pfdiff
+
+// The fan of ID colours, as pixels (RGBA, row 0 at the bottom).
+std::vector<uint8_t> renderFanOsmesa(int w, int h);
+std::vector<uint8_t> renderFanPrimflow(int w, int h, int threads);
