@@ -14,6 +14,7 @@ enum class Scene : int {
   FanGouraud,        // the fan with a different colour at every vertex
   DepthFarThenNear,  // three overlapping triangles at different depths, drawn far to near
   DepthNearThenFar,  // the same, drawn near to far
+  Showcase,          // pfrender's showcase (tools/showcase_scene.inc): perspective, depth, Gouraud
 };
 
 constexpr int kSize = 256;  // the scenes are drawn at 256 x 256, glOrtho(0, 256, 0, 256, -1, 1)
