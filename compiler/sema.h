@@ -11,10 +11,6 @@
 
 namespace pf {
 
-// The built-in functions: name, fixed argument count range, and whether the result is always
-// varying (ztest reads the depth buffer). Types are checked in sema.cpp.
-bool isBuiltinFunction(const std::string& name);
-
 // Analyses every unit of the program in place (Expr::type, Expr::varying). Returns false if
 // any error was logged.
 bool analyze(Program& program, DiagnosticLog& log);

@@ -1,0 +1,16 @@
+// The built-in functions of the language: their argument rules and result types.
+// (Their meaning is in lower.cpp, which expands each call into instructions.)
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "compiler/ast.h"
+
+namespace pf {
+
+// Types a call to a built-in function whose arguments are already typed: sets e.type (Void on
+// error) and e.varying. Reports through `err`; an unknown name is an error.
+void typeBuiltinCall(Expr& e, UnitKind unit, const std::function<void(SourceLoc, const std::string&)>& err);
+
+}  // namespace pf
