@@ -31,7 +31,8 @@ struct Expr {
   bool varying = false;
 };
 
-enum class StmtKind { Block, Decl, Assign, ExprStmt, If, Return, Bound, Interpolation, InterpReturn };
+enum class StmtKind { Block, Decl, Assign, ExprStmt, If, Return, Bound, Interpolation, InterpReturn,
+                      Loop, Break, Continue };
 
 // One branch of an `interpolation { ... }` construct: its labels and its statements.
 struct InterpolationCase {
@@ -47,6 +48,8 @@ struct Stmt {
   Qualifier qualifier = Qualifier::None;
   Type decl_type;
   std::string name;
+  // Decl, filled in by semantic analysis: whether the variable may hold varying values.
+  bool inferred_varying = false;
   // Decl initializer / Assign value / ExprStmt / If condition / InterpReturn value (may be null)
   ExprPtr value;
   // Assign: target (a Name, or Index/Member chain on a Name) and operator ("=", "+=", ...)
@@ -61,6 +64,13 @@ struct Stmt {
   std::vector<ExprPtr> bound_args;
   // Interpolation
   std::vector<InterpolationCase> cases;
+  // Loop (`for` and `while`): init (a statement or null), `value` = condition (null: always
+  // true), step (a statement or null), `body`. `for` scopes its init to the loop.
+  StmtPtr init, step;
+
+  // Filled in by semantic analysis: a loop whose iteration count can differ between pixels
+  // (varying condition, or a break / continue under varying control).
+  bool varying_loop = false;
 };
 
 struct Param {

@@ -97,6 +97,25 @@ void stmt(const Stmt& s, int depth, std::string& out) {
       }
       return;
     case StmtKind::Return: out += pad + "return\n"; return;
+    case StmtKind::Break: out += pad + "break\n"; return;
+    case StmtKind::Continue: out += pad + "continue\n"; return;
+    case StmtKind::Loop:
+      out += pad + (s.op == "for" ? "for" : "while");
+      if (s.value) {
+        out += " ";
+        expr(*s.value, out);
+      }
+      out += s.varying_loop ? "  (varying)\n" : "\n";
+      if (s.init) {
+        out += pad + " init\n";
+        stmt(*s.init, depth + 2, out);
+      }
+      if (s.step) {
+        out += pad + " step\n";
+        stmt(*s.step, depth + 2, out);
+      }
+      stmts(s.body, depth + 1, out);
+      return;
     case StmtKind::Bound:
       out += pad + "bound";
       for (const ExprPtr& a : s.bound_args) { out += " "; expr(*a, out); }

@@ -17,13 +17,14 @@ class Generator {
   explicit Generator(const IrFunction& f) : f_(f) {}
 
   CodegenResult run() {
+    findPixelLoops(f_.body, false);
     collect(f_.body, {});
     markNeeded();
     // Setup.
     emitSetup(f_.body, 0);
     // Pixel (assigns the exports as it meets uniform operands).
     pixel_.num_regs = kFirstFreePixelReg;
-    emitPixel(f_.body, 0);
+    emitPixel(f_.body, 0, false);
     // Exports.
     result_.setup.scalar_exports.resize(scalar_slots_.size());
     for (auto& [value, slot] : scalar_slots_) result_.setup.scalar_exports[slot] = setupOperand(value);
@@ -50,8 +51,19 @@ class Generator {
     std::vector<int> conds;
   };
   std::map<int, std::vector<Def>> defs_;
-  std::vector<std::pair<const IrInst*, std::vector<int>>> roots_;
+  // What setup must compute for: its own effects (roots_), and the pixel program's operands
+  // and conditions (pixel_roots_), except the values the pixel program computes itself.
+  std::vector<std::pair<const IrInst*, std::vector<int>>> roots_, pixel_roots_;
   std::set<int> needed_;  // uniform values setup must compute
+  // Uniform values defined inside a loop that holds per-pixel work: they change from one
+  // iteration to the next, so the pixel program computes them itself.
+  std::set<int> pixel_uniform_;
+  // Setup loops being emitted: where their break / continue jumps must land (null: a loop
+  // flattened because it is varying).
+  struct JumpPatches {
+    std::vector<size_t> breaks, continues;
+  };
+  std::vector<JumpPatches*> setup_loops_;
   std::map<int, uint32_t> setup_regs_, pixel_regs_, setup_consts_, pixel_consts_;
   std::map<int, uint32_t> scalar_slots_, interp_slots_;
 
@@ -68,10 +80,20 @@ class Generator {
         collect(*n.else_block, inner);
         continue;
       }
+      if (n.kind == IrNode::Kind::Loop) {
+        collect(*n.cond_block, conds);
+        std::vector<int> inner = conds;
+        inner.push_back(n.cond);
+        collect(*n.body_block, inner);
+        collect(*n.step_block, inner);
+        continue;
+      }
       const IrInst& in = n.inst;
       if (in.dst >= 0) defs_[in.dst].push_back({&in, conds});
-      bool pixel = (in.dst >= 0 && varying(in.dst)) || isPixelEffect(in.op);
-      if (pixel || in.op == Op::Bound || in.op == Op::Retire) roots_.push_back({&in, conds});
+      bool pixel = (in.dst >= 0 && pixelValue(in.dst)) || isPixelEffect(in.op);
+      if (pixel) pixel_roots_.push_back({&in, conds});
+      if (in.op == Op::Bound || in.op == Op::Retire || in.op == Op::Break || in.op == Op::Continue)
+        roots_.push_back({&in, conds});
     }
   }
 
@@ -86,6 +108,12 @@ class Generator {
     for (auto& [in, conds] : roots_) {
       for (int o : {in->a, in->b, in->c, in->d}) need(o, work);
       for (int c : conds) need(c, work);
+    }
+    for (auto& [in, conds] : pixel_roots_) {
+      for (int o : {in->a, in->b, in->c, in->d})
+        if (!pixel_uniform_.count(o)) need(o, work);
+      for (int c : conds)
+        if (!pixel_uniform_.count(c)) need(c, work);
     }
     while (!work.empty()) {
       int v = work.back();
@@ -128,7 +156,7 @@ class Generator {
     if (x.origin == Value::Origin::Const)
       return makeOperand(OperandKind::Const, constIndex(pixel_consts_, pixel_, v, x.bits));
     if (x.origin == Value::Origin::Builtin) return makeOperand(OperandKind::Reg, static_cast<uint32_t>(x.index));
-    if (!x.varying) {
+    if (!x.varying && !pixel_uniform_.count(v)) {
       auto& slots = x.cls == ValueClass::Interp ? interp_slots_ : scalar_slots_;
       auto it = slots.find(v);
       uint32_t slot;
@@ -155,6 +183,11 @@ class Generator {
         if (setupWork(*n.then_block, d) || setupWork(*n.else_block, d)) return true;
         continue;
       }
+      if (n.kind == IrNode::Kind::Loop) {
+        int d = varying_depth + (n.varying_loop ? 1 : 0);
+        if (setupWork(*n.cond_block, d) || setupWork(*n.body_block, d) || setupWork(*n.step_block, d)) return true;
+        continue;
+      }
       const IrInst& in = n.inst;
       if (in.op == Op::Bound || (in.op == Op::Retire && varying_depth == 0)) return true;
       if (in.dst >= 0 && needed_.count(in.dst)) return true;
@@ -162,8 +195,43 @@ class Generator {
     return false;
   }
 
+  void emitSetupLoop(const IrNode& n, int varying_depth) {
+    if (n.varying_loop) {
+      // Pixels iterate differently: its uniform contents are loop-invariant and pure.
+      setup_loops_.push_back(nullptr);
+      emitSetup(*n.cond_block, varying_depth + 1);
+      emitSetup(*n.body_block, varying_depth + 1);
+      emitSetup(*n.step_block, varying_depth + 1);
+      setup_loops_.pop_back();
+      return;
+    }
+    if (!setupWork(*n.cond_block, varying_depth) && !setupWork(*n.body_block, varying_depth) &&
+        !setupWork(*n.step_block, varying_depth))
+      return;
+    auto here = [&] { return static_cast<uint32_t>(setup_.code.size()); };
+    setup_.code.push_back(Instr{Op::LoopBegin});
+    uint32_t top = here();
+    emitSetup(*n.cond_block, varying_depth);
+    size_t exit_jump = setup_.code.size();
+    setup_.code.push_back(Instr{Op::JmpIfNot, 0, kNoOperand, 0, setupOperand(n.cond)});
+    JumpPatches patches;
+    setup_loops_.push_back(&patches);
+    emitSetup(*n.body_block, varying_depth);
+    for (size_t c : patches.continues) setup_.code[c].a = here();
+    emitSetup(*n.step_block, varying_depth);
+    setup_loops_.pop_back();
+    setup_.code.push_back(Instr{Op::LoopBack, 0, kNoOperand, top});
+    setup_.code[exit_jump].a = here();
+    for (size_t b : patches.breaks) setup_.code[b].a = here();
+    setup_.code.push_back(Instr{Op::LoopEnd});
+  }
+
   void emitSetup(const IrBlock& b, int varying_depth) {
     for (const IrNode& n : b) {
+      if (n.kind == IrNode::Kind::Loop) {
+        emitSetupLoop(n, varying_depth);
+        continue;
+      }
       if (n.kind == IrNode::Kind::If) {
         if (varying(n.cond)) {
           // Varying control: the uniform values inside are pure, so compute them unconditionally.
@@ -193,6 +261,13 @@ class Generator {
         setup_.code.push_back(out);
       } else if (in.op == Op::Retire) {
         if (varying_depth == 0) setup_.code.push_back(Instr{Op::Kill});
+      } else if (in.op == Op::Break || in.op == Op::Continue) {
+        // Only uniform loops reach here with their own break / continue: a jump.
+        JumpPatches* p = setup_loops_.empty() ? nullptr : setup_loops_.back();
+        if (p && varying_depth == 0) {
+          (in.op == Op::Break ? p->breaks : p->continues).push_back(setup_.code.size());
+          setup_.code.push_back(Instr{Op::Jmp, 0, kNoOperand, 0});
+        }
       } else if (in.dst >= 0 && needed_.count(in.dst)) {
         Instr out{in.op, static_cast<uint16_t>(in.imm), setupOperand(in.dst), setupOperand(in.a),
                   setupOperand(in.b), setupOperand(in.c), setupOperand(in.d)};
@@ -204,39 +279,113 @@ class Generator {
   // ---- pixel ----
   // A `return` under uniform control flow is the setup program's Kill: the pixel program never
   // runs for an instance that takes it, so it has nothing to do there.
-  bool pixelInst(const IrInst& in, int varying_depth) const {
+  bool pixelValue(int v) const { return varying(v) || pixel_uniform_.count(v) > 0; }
+
+  // `in_loop`: inside a loop the pixel program runs, whose break / continue it must run too.
+  bool pixelInst(const IrInst& in, int varying_depth, bool in_loop) const {
     if (in.op == Op::Retire) return varying_depth > 0;
-    return (in.dst >= 0 && varying(in.dst)) || isPixelEffect(in.op);
+    if (in.op == Op::Break || in.op == Op::Continue) return in_loop;
+    return (in.dst >= 0 && pixelValue(in.dst)) || isPixelEffect(in.op);
   }
 
-  bool pixelWork(const IrBlock& b, int varying_depth) const {
+  // Marks the uniform values defined inside loops that hold per-pixel work.
+  void markDefinedIn(const IrBlock& b) {
+    for (const IrNode& n : b) {
+      if (n.kind == IrNode::Kind::If) {
+        markDefinedIn(*n.then_block);
+        markDefinedIn(*n.else_block);
+      } else if (n.kind == IrNode::Kind::Loop) {
+        markDefinedIn(*n.cond_block);
+        markDefinedIn(*n.body_block);
+        markDefinedIn(*n.step_block);
+      } else if (n.inst.dst >= 0 && !varying(n.inst.dst)) {
+        pixel_uniform_.insert(n.inst.dst);
+      }
+    }
+  }
+
+  bool loopHasPixelWork(const IrNode& n, int varying_depth) const {
+    int d = varying_depth + (n.varying_loop ? 1 : 0);
+    return pixelWork(*n.cond_block, d, false) || pixelWork(*n.body_block, d, false) ||
+           pixelWork(*n.step_block, d, false);
+  }
+
+  void findPixelLoops(const IrBlock& b, bool inside_pixel_loop) {
+    for (const IrNode& n : b) {
+      if (n.kind == IrNode::Kind::If) {
+        findPixelLoops(*n.then_block, inside_pixel_loop);
+        findPixelLoops(*n.else_block, inside_pixel_loop);
+      } else if (n.kind == IrNode::Kind::Loop) {
+        if (!inside_pixel_loop && loopHasPixelWork(n, 0)) {
+          markDefinedIn(*n.cond_block);
+          markDefinedIn(*n.body_block);
+          markDefinedIn(*n.step_block);
+          findPixelLoops(*n.body_block, true);
+        } else {
+          findPixelLoops(*n.body_block, inside_pixel_loop);
+        }
+      }
+    }
+  }
+
+  bool pixelWork(const IrBlock& b, int varying_depth, bool in_loop) const {
     for (const IrNode& n : b) {
       if (n.kind == IrNode::Kind::If) {
         int d = varying_depth + (varying(n.cond) ? 1 : 0);
-        if (pixelWork(*n.then_block, d) || pixelWork(*n.else_block, d)) return true;
+        if (pixelWork(*n.then_block, d, in_loop) || pixelWork(*n.else_block, d, in_loop)) return true;
         continue;
       }
-      if (pixelInst(n.inst, varying_depth)) return true;
+      if (n.kind == IrNode::Kind::Loop) {
+        if (loopHasPixelWork(n, varying_depth)) return true;
+        continue;
+      }
+      if (pixelInst(n.inst, varying_depth, in_loop)) return true;
     }
     return false;
   }
 
-  void emitPixel(const IrBlock& b, int varying_depth) {
+  void emitPixelLoop(const IrNode& n, int varying_depth) {
+    if (!loopHasPixelWork(n, varying_depth)) return;
+    int d = varying_depth + (n.varying_loop ? 1 : 0);
+    auto here = [&] { return static_cast<uint32_t>(pixel_.code.size()); };
+    pixel_.code.push_back(Instr{Op::LoopBegin});
+    uint32_t top = here();
+    emitPixel(*n.cond_block, d, true);
+    pixel_.code.push_back(Instr{Op::LoopTest, 0, kNoOperand, kNoOperand, pixelOperand(n.cond)});
+    size_t exit_jump = pixel_.code.size();
+    pixel_.code.push_back(Instr{Op::JmpIfNone, 0, kNoOperand, 0});
+    emitPixel(*n.body_block, d, true);
+    pixel_.code.push_back(Instr{Op::LoopContinue});
+    emitPixel(*n.step_block, d, true);
+    pixel_.code.push_back(Instr{Op::LoopBack, 0, kNoOperand, top});
+    pixel_.code[exit_jump].a = here();
+    pixel_.code.push_back(Instr{Op::LoopEnd});
+  }
+
+  void emitPixel(const IrBlock& b, int varying_depth, bool in_loop) {
     for (const IrNode& n : b) {
+      if (n.kind == IrNode::Kind::Loop) {
+        emitPixelLoop(n, varying_depth);
+        continue;
+      }
+      if (n.kind == IrNode::Kind::Inst && (n.inst.op == Op::Break || n.inst.op == Op::Continue)) {
+        if (in_loop) pixel_.code.push_back(Instr{n.inst.op});
+        continue;
+      }
       if (n.kind == IrNode::Kind::If) {
         int d = varying_depth + (varying(n.cond) ? 1 : 0);
-        bool t = pixelWork(*n.then_block, d), e = pixelWork(*n.else_block, d);
+        bool t = pixelWork(*n.then_block, d, in_loop), e = pixelWork(*n.else_block, d, in_loop);
         if (!t && !e) continue;
         auto here = [&] { return static_cast<uint32_t>(pixel_.code.size()); };
         if (!varying(n.cond)) {
           size_t jf = pixel_.code.size();
           pixel_.code.push_back(Instr{Op::JmpIfNot, 0, kNoOperand, 0, pixelOperand(n.cond)});
-          emitPixel(*n.then_block, d);
+          emitPixel(*n.then_block, d, in_loop);
           if (e) {
             size_t je = pixel_.code.size();
             pixel_.code.push_back(Instr{Op::Jmp, 0, kNoOperand, 0});
             pixel_.code[jf].a = here();
-            emitPixel(*n.else_block, d);
+            emitPixel(*n.else_block, d, in_loop);
             pixel_.code[je].a = here();
           } else {
             pixel_.code[jf].a = here();
@@ -247,13 +396,13 @@ class Generator {
         pixel_.code.push_back(Instr{Op::MaskIf, 0, kNoOperand, kNoOperand, cond});
         size_t j1 = pixel_.code.size();
         pixel_.code.push_back(Instr{Op::JmpIfNone, 0, kNoOperand, 0});
-        emitPixel(*n.then_block, d);
+        emitPixel(*n.then_block, d, in_loop);
         if (e) {
           pixel_.code[j1].a = here();
           pixel_.code.push_back(Instr{Op::MaskElse, 0, kNoOperand, kNoOperand, cond});
           size_t j2 = pixel_.code.size();
           pixel_.code.push_back(Instr{Op::JmpIfNone, 0, kNoOperand, 0});
-          emitPixel(*n.else_block, d);
+          emitPixel(*n.else_block, d, in_loop);
           pixel_.code[j2].a = here();
         } else {
           pixel_.code[j1].a = here();
@@ -262,7 +411,7 @@ class Generator {
         continue;
       }
       const IrInst& in = n.inst;
-      if (!pixelInst(in, varying_depth)) continue;
+      if (!pixelInst(in, varying_depth, in_loop)) continue;
       Instr out{in.op, static_cast<uint16_t>(in.imm), pixelOperand(in.dst), pixelOperand(in.a),
                 pixelOperand(in.b), pixelOperand(in.c), pixelOperand(in.d)};
       pixel_.code.push_back(out);

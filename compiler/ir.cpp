@@ -30,6 +30,16 @@ std::string valueName(const IrFunction& f, int v) {
 void dumpBlock(const IrFunction& f, const IrBlock& b, int depth, std::string& out) {
   std::string pad(static_cast<size_t>(depth) * 2 + 2, ' ');
   for (const IrNode& n : b) {
+    if (n.kind == IrNode::Kind::Loop) {
+      out += pad + (n.varying_loop ? "loop  (varying: masked)\n" : "loop  (uniform)\n");
+      dumpBlock(f, *n.cond_block, depth + 1, out);
+      out += pad + "  while " + valueName(f, n.cond) + "\n";
+      dumpBlock(f, *n.body_block, depth + 1, out);
+      out += pad + "continue:\n";
+      dumpBlock(f, *n.step_block, depth + 1, out);
+      out += pad + "end loop\n";
+      continue;
+    }
     if (n.kind == IrNode::Kind::If) {
       out += pad + "if " + valueName(f, n.cond) + (f.values[n.cond].varying ? "  (varying: masked)" : "  (uniform: branch)") + "\n";
       dumpBlock(f, *n.then_block, depth + 1, out);

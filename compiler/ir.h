@@ -38,11 +38,17 @@ struct IrInst {
 struct IrNode;
 using IrBlock = std::vector<IrNode>;
 
+// An instruction, an if, or a loop. A loop runs cond_block, leaves when `cond` is false, runs
+// body_block then step_block (a `continue` goes to step_block), and repeats. Values carried from
+// one iteration to the next are merge values assigned before the loop and at the end of body,
+// step, `continue` and `break` (Op::Break / Op::Continue).
 struct IrNode {
-  enum class Kind { Inst, If } kind = Kind::Inst;
+  enum class Kind { Inst, If, Loop } kind = Kind::Inst;
   IrInst inst;
-  int cond = -1;  // If: a Bool value
-  std::unique_ptr<IrBlock> then_block, else_block;
+  int cond = -1;  // If, Loop: a Bool value
+  std::unique_ptr<IrBlock> then_block, else_block;   // If
+  std::unique_ptr<IrBlock> cond_block, body_block, step_block;  // Loop
+  bool varying_loop = false;  // Loop: the iteration count can differ between pixels
 };
 
 // A parameter of a primitive, as the API must supply it.

@@ -11,7 +11,8 @@ const char* opName(Op op) {
       "fsign", "iadd", "isub", "imul", "idiv", "imod", "ineg", "imin", "imax", "iabs", "i2f",
       "f2i", "flt", "fle", "feq", "fne", "ilt", "ile", "ieq", "ine", "band", "bor", "bnot", "sel", "cross_sign",
       "mov", "xadd", "xsub", "xneg", "xmulf", "xdivf", "xmov", "xloadvertex", "loadstate",
-      "bound", "kill", "retire", "ztest", "interp_return", "interp_shared", "zcommit", "jmp",
+      "bound", "kill", "retire", "ztest", "interp_return", "interp_shared", "zcommit",
+      "loopbegin", "looptest", "break", "continue", "loopcontinue", "loopback", "loopend", "jmp",
       "jmpifnot", "maskif", "maskelse", "maskend", "jmpifnone"};
   static_assert(sizeof(names) / sizeof(names[0]) == static_cast<size_t>(Op::OpCount));
   return names[static_cast<size_t>(op)];
@@ -40,7 +41,11 @@ std::string operandText(uint32_t o, const Bytecode& b, bool pixel, bool interp) 
       float f;
       std::memcpy(&f, &bits, 4);
       char buf[48];
-      std::snprintf(buf, sizeof buf, "#%g", static_cast<double>(f));
+      // Constants are untyped bits: small integers (denormal as floats) print as integers.
+      if (bits != 0 && bits < 0x00800000u)
+        std::snprintf(buf, sizeof buf, "#%u", bits);
+      else
+        std::snprintf(buf, sizeof buf, "#%g", static_cast<double>(f));
       return buf;
     }
   }
@@ -59,7 +64,7 @@ std::string disassemble(const Bytecode& b, bool pixel) {
     out += opName(in.op);
     bool xi = isInterpOp(in.op);
     std::vector<std::string> parts;
-    bool is_jump = in.op == Op::Jmp || in.op == Op::JmpIfNot || in.op == Op::JmpIfNone;
+    bool is_jump = in.op == Op::Jmp || in.op == Op::JmpIfNot || in.op == Op::JmpIfNone || in.op == Op::LoopBack;
     if (in.dst != kNoOperand && in.op != Op::Bound)
       parts.push_back(operandText(in.dst, b, pixel, xi && in.op != Op::InterpReturn));
     if (is_jump) {

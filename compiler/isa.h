@@ -37,6 +37,12 @@ enum class Op : uint8_t {
   InterpReturn,  // pixel: write channels of kinds `imm` (bit set) from interp operand a
   InterpShared,  // pixel: run the shared interpolators bound to channels of kinds `imm`
   ZCommit,       // pixel: a is the Z to write for lanes alive at the end
+  // loops (setup: jumps and a counter; pixel: masks). LoopBegin pushes a loop frame; LoopTest
+  // removes the lanes whose b is false from the loop; Break / Continue remove the active lanes
+  // for good / for this iteration; LoopContinue brings the continuing lanes back; LoopBack
+  // counts an iteration (past the context's cap the remaining lanes, or the instance, stop and
+  // the hit is reported) and jumps to a; LoopEnd pops the frame.
+  LoopBegin, LoopTest, Break, Continue, LoopContinue, LoopBack, LoopEnd,
   // control flow (targets are instruction indices)
   Jmp,           // to a
   JmpIfNot,      // if uniform b is false, to a

@@ -25,6 +25,10 @@ const char* tokenName(Tok t) {
     case Tok::KwBound: return "'bound'";
     case Tok::KwTrue: return "'true'";
     case Tok::KwFalse: return "'false'";
+    case Tok::KwFor: return "'for'";
+    case Tok::KwWhile: return "'while'";
+    case Tok::KwBreak: return "'break'";
+    case Tok::KwContinue: return "'continue'";
     case Tok::KwFloat: return "'float'";
     case Tok::KwInt: return "'int'";
     case Tok::KwBool: return "'bool'";
@@ -87,6 +91,10 @@ const std::unordered_map<std::string, Tok>& keywords() {
       {"bound", Tok::KwBound},
       {"true", Tok::KwTrue},
       {"false", Tok::KwFalse},
+      {"for", Tok::KwFor},
+      {"while", Tok::KwWhile},
+      {"break", Tok::KwBreak},
+      {"continue", Tok::KwContinue},
       {"float", Tok::KwFloat},
       {"int", Tok::KwInt},
       {"bool", Tok::KwBool},

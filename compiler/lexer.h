@@ -12,7 +12,7 @@ enum class Tok {
   End, Ident, IntLit, FloatLit,
   // keywords
   KwPrimitive, KwInterpolator, KwUniform, KwVarying, KwInout, KwIf, KwElse, KwReturn,
-  KwInterpolation, KwInterpolatorReturn, KwBound, KwTrue, KwFalse,
+  KwInterpolation, KwInterpolatorReturn, KwBound, KwTrue, KwFalse, KwFor, KwWhile, KwBreak, KwContinue,
   KwFloat, KwInt, KwBool, KwPoint, KwVector, KwNormal, KwColor, KwInterpolatorData,
   KwPerspectiveLinear, KwLinear, KwDefault,
   // punctuation and operators

@@ -4,6 +4,7 @@
 // `return` contributes nothing to the merge: its pixels (or, when uniform, its instance) are gone.
 #include "compiler/lower.h"
 
+#include <algorithm>
 #include <bit>
 #include <map>
 
@@ -14,7 +15,29 @@ struct Binding {
   Type type;
   std::vector<int> comps;  // Value ids, one per scalar slot (per element for interpolator_data)
   bool writable = true;
+  bool may_vary = false;   // sema's (conservative) verdict on the variable
 };
+
+// A loop being lowered: the values it carries from one iteration to the next.
+struct LoopContext {
+  std::vector<std::pair<int, int>> slots;  // (binding, component)
+  std::vector<int> merge;                   // the carried value of each slot
+};
+
+// Names assigned anywhere in a statement (targets' root variables).
+void assignedNames(const Stmt& s, std::vector<std::string>& out) {
+  if (s.kind == StmtKind::Assign) {
+    const Expr* root = s.target.get();
+    while (root->kind == ExprKind::Index || root->kind == ExprKind::Member) root = root->args[0].get();
+    if (root->kind == ExprKind::Name) out.push_back(root->name);
+  }
+  for (const StmtPtr& c : s.body) assignedNames(*c, out);
+  for (const StmtPtr& c : s.else_body) assignedNames(*c, out);
+  for (const InterpolationCase& c : s.cases)
+    for (const StmtPtr& b : c.body) assignedNames(*b, out);
+  if (s.init) assignedNames(*s.init, out);
+  if (s.step) assignedNames(*s.step, out);
+}
 
 class Lowerer {
  public:
@@ -95,6 +118,7 @@ class Lowerer {
   std::vector<std::map<std::string, int>> scopes_;
   std::vector<Binding> bindings_;
   std::vector<IrBlock*> blocks_;
+  std::vector<LoopContext> loops_;
   int varying_depth_ = 0;
   InterpKindSet interp_kinds_ = kAllInterpKinds;
   int z_initial_ = -1;
@@ -115,6 +139,7 @@ class Lowerer {
     b.type = Type::of(BaseType::Float);
     b.comps.push_back(newValue(v));
     b.writable = writable;
+    b.may_vary = true;
     scopes_.back()[name] = static_cast<int>(bindings_.size());
     bindings_.push_back(std::move(b));
   }
@@ -200,6 +225,7 @@ class Lowerer {
       case StmtKind::Decl: {
         Binding b;
         b.type = s.decl_type;
+        b.may_vary = s.inferred_varying;
         if (s.value) {
           Binding v = expr(*s.value);
           b.comps = convert(v, s.decl_type);
@@ -222,6 +248,12 @@ class Lowerer {
       case StmtKind::If: return ifStatement(s);
       case StmtKind::Return:
         emitEffect(Op::Retire, -1, -1, -1, -1, 0, s.loc);
+        return true;
+      case StmtKind::Loop: loop(s); return false;
+      case StmtKind::Break:
+      case StmtKind::Continue:
+        carryCopies(s.loc);
+        emitEffect(s.kind == StmtKind::Break ? Op::Break : Op::Continue, -1, -1, -1, -1, 0, s.loc);
         return true;
       case StmtKind::Bound: {
         int v[4];
@@ -255,6 +287,80 @@ class Lowerer {
         return false;
     }
     return false;
+  }
+
+  // The carried values of the innermost loop take the current bindings.
+  void carryCopies(SourceLoc loc) {
+    if (loops_.empty()) return;
+    LoopContext& l = loops_.back();
+    for (size_t i = 0; i < l.slots.size(); ++i) {
+      int cur = bindings_[l.slots[i].first].comps[l.slots[i].second];
+      int m = l.merge[i];
+      if (cur == m) continue;
+      if (isVarying(cur) && !isVarying(m))
+        log_.error(loc, "internal compiler error: a varying value flows into a loop value classified uniform");
+      IrNode n;
+      n.inst = IrInst{cls(m) == ValueClass::Interp ? Op::XMov : Op::Mov, m, cur, -1, -1, -1,
+                      static_cast<int>(kAllInterpKinds), loc};
+      blocks_.back()->push_back(std::move(n));
+    }
+  }
+
+  void loop(const Stmt& s) {
+    scopes_.emplace_back();
+    if (s.init) statement(*s.init);
+    // Carried: every component of every variable the loop assigns (visible here).
+    std::vector<std::string> names;
+    assignedNames(s, names);
+    LoopContext ctx;
+    std::vector<int> seen;
+    for (const std::string& n : names) {
+      int b = lookup(n);
+      if (b < 0 || std::find(seen.begin(), seen.end(), b) != seen.end()) continue;
+      seen.push_back(b);
+      for (size_t k = 0; k < bindings_[b].comps.size(); ++k) {
+        int cur = bindings_[b].comps[k];
+        Value m;
+        m.cls = cls(cur);
+        m.varying = s.varying_loop || bindings_[b].may_vary || isVarying(cur);
+        int mid = newValue(m);
+        IrNode init;
+        init.inst = IrInst{m.cls == ValueClass::Interp ? Op::XMov : Op::Mov, mid, cur, -1, -1, -1,
+                           static_cast<int>(kAllInterpKinds), s.loc};
+        blocks_.back()->push_back(std::move(init));
+        bindings_[b].comps[k] = mid;
+        ctx.slots.push_back({b, static_cast<int>(k)});
+        ctx.merge.push_back(mid);
+      }
+    }
+    auto restoreCarried = [&] {
+      for (size_t i = 0; i < ctx.slots.size(); ++i) bindings_[ctx.slots[i].first].comps[ctx.slots[i].second] = ctx.merge[i];
+    };
+    IrNode node;
+    node.kind = IrNode::Kind::Loop;
+    node.inst.loc = s.loc;
+    node.varying_loop = s.varying_loop;
+    node.cond_block = std::make_unique<IrBlock>();
+    node.body_block = std::make_unique<IrBlock>();
+    node.step_block = std::make_unique<IrBlock>();
+    loops_.push_back(ctx);
+    if (s.varying_loop) ++varying_depth_;
+    blocks_.push_back(node.cond_block.get());
+    node.cond = s.value ? expr(*s.value).comps[0] : constB(true);
+    blocks_.pop_back();
+    blocks_.push_back(node.body_block.get());
+    if (!scoped(s.body)) carryCopies(s.loc);
+    blocks_.pop_back();
+    restoreCarried();  // the continue point
+    blocks_.push_back(node.step_block.get());
+    if (s.step) statement(*s.step);
+    carryCopies(s.loc);
+    blocks_.pop_back();
+    if (s.varying_loop) --varying_depth_;
+    loops_.pop_back();
+    restoreCarried();  // after the loop
+    blocks_.back()->push_back(std::move(node));
+    scopes_.pop_back();
   }
 
   bool ifStatement(const Stmt& s) {

@@ -234,6 +234,32 @@ class Parser {
       }
       return s;
     }
+    if (accept(Tok::KwWhile)) {
+      auto s = make(StmtKind::Loop, loc);
+      expect(Tok::LParen, "after 'while'");
+      s->value = expression();
+      expect(Tok::RParen, "after the loop condition");
+      s->body.push_back(statement());
+      return s;
+    }
+    if (accept(Tok::KwFor)) {
+      auto s = make(StmtKind::Loop, loc);
+      s->op = "for";
+      expect(Tok::LParen, "after 'for'");
+      if (!accept(Tok::Semi)) s->init = simpleStatement(true);  // consumes its ';'
+      if (!at(Tok::Semi)) s->value = expression();
+      expect(Tok::Semi, "after the loop condition");
+      if (!at(Tok::RParen)) s->step = simpleStatement(false);
+      expect(Tok::RParen, "to close 'for (...)'");
+      s->body.push_back(statement());
+      return s;
+    }
+    if (at(Tok::KwBreak) || at(Tok::KwContinue)) {
+      bool brk = take().kind == Tok::KwBreak;
+      auto s = make(brk ? StmtKind::Break : StmtKind::Continue, loc);
+      expect(Tok::Semi, brk ? "after 'break'" : "after 'continue'");
+      return s;
+    }
     if (accept(Tok::KwReturn)) {
       auto s = make(StmtKind::Return, loc);
       if (!at(Tok::Semi))
@@ -262,7 +288,17 @@ class Parser {
       return s;
     }
     if (accept(Tok::KwInterpolation)) return interpolation(loc);
-    // assignment or expression statement
+    return simpleStatement(true);
+  }
+
+  // A declaration, assignment or expression: the statements allowed in for (init; ; step).
+  // With `semicolon`, the terminating ';' is consumed.
+  StmtPtr simpleStatement(bool semicolon) {
+    SourceLoc loc = cur().loc;
+    if (isQualifierToken(cur().kind) || (isTypeToken(cur().kind) && next().kind != Tok::LParen)) {
+      if (!semicolon) fail(loc, "a declaration cannot be the step of a 'for' loop");
+      return declaration();
+    }
     ExprPtr e = expression();
     if (at(Tok::Assign) || at(Tok::PlusAssign) || at(Tok::MinusAssign) || at(Tok::StarAssign) ||
         at(Tok::SlashAssign)) {
@@ -270,12 +306,12 @@ class Parser {
       s->op = take().text;
       s->target = std::move(e);
       s->value = expression();
-      expect(Tok::Semi, "after the assignment");
+      if (semicolon) expect(Tok::Semi, "after the assignment");
       return s;
     }
     auto s = make(StmtKind::ExprStmt, loc);
     s->value = std::move(e);
-    expect(Tok::Semi, "after the expression");
+    if (semicolon) expect(Tok::Semi, "after the expression");
     return s;
   }
 

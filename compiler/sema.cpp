@@ -117,6 +117,13 @@ class Analyzer {
   std::string varying_control_why_;
   int interp_depth_ = 0;
   InterpKindSet interp_kinds_ = 0;
+  // Enclosing loops: the statement, and the varying-control depth at its entry.
+  struct LoopFrame {
+    Stmt* loop;
+    int control_depth;
+    int interp_depth;
+  };
+  std::vector<LoopFrame> loops_;
   bool return_seen_in_interp_ = false;
   size_t builtin_count_ = 0;
   size_t param_count_ = 0;
@@ -150,6 +157,7 @@ class Analyzer {
     scopes_.resize(1);
     varying_control_ = 0;
     interp_depth_ = 0;
+    loops_.clear();
     return_seen_in_interp_ = false;
   }
 
@@ -207,6 +215,25 @@ class Analyzer {
         scoped(s.else_body);
         if (vary) --varying_control_;
         varying_control_why_ = save_why;
+        break;
+      }
+      case StmtKind::Loop: loop(s); break;
+      case StmtKind::Break:
+      case StmtKind::Continue: {
+        const char* what = s.kind == StmtKind::Break ? "'break'" : "'continue'";
+        if (loops_.empty()) {
+          err(s.loc, std::string(what) + " is only allowed inside a loop");
+          break;
+        }
+        LoopFrame& f = loops_.back();
+        if (interp_depth_ > f.interp_depth)
+          err(s.loc, std::string(what) + " cannot leave an interpolation branch");
+        // Under varying control, some pixels leave the loop and others do not: the loop's
+        // iteration count becomes varying.
+        if (varying_control_ > f.control_depth && !f.loop->varying_loop) {
+          f.loop->varying_loop = true;
+          changed_ = true;
+        }
         break;
       }
       case StmtKind::Return:
@@ -270,6 +297,39 @@ class Analyzer {
     }
   }
 
+  // for (init; cond; step) body / while (cond) body. A varying loop puts everything in it under
+  // varying control (pixels iterate different numbers of times).
+  void loop(Stmt& s) {
+    scopes_.emplace_back();
+    if (s.init) statement(*s.init);
+    if (s.value) {
+      expr(*s.value);
+      if (s.value->type.base != BaseType::Void && !isBool(s.value->type))
+        err(s.value->loc, "the condition of a loop must be bool, not " + typeName(s.value->type));
+      if (s.value->varying && !s.varying_loop) {
+        s.varying_loop = true;
+        changed_ = true;
+      }
+    }
+    std::string save_why = varying_control_why_;
+    bool vary = s.varying_loop;
+    if (vary) {
+      if (varying_control_ == 0)
+        varying_control_why_ = "it is assigned in a loop whose number of iterations is varying (line " + std::to_string(s.loc.line) + ")";
+      ++varying_control_;
+    }
+    // The condition was typed before the loop was known to be varying: type it again so that
+    // variables it reads get their final classification.
+    if (s.value && vary) expr(*s.value);
+    loops_.push_back({&s, varying_control_ - (vary ? 1 : 0), interp_depth_});
+    scoped(s.body);
+    if (s.step) statement(*s.step);
+    loops_.pop_back();
+    if (vary) --varying_control_;
+    varying_control_why_ = save_why;
+    scopes_.pop_back();
+  }
+
   void declaration(Stmt& s) {
     if (lookupInInnermost(s.name) >= 0)
       err(s.loc, "'" + s.name + "' is already declared in this scope");
@@ -301,9 +361,8 @@ class Analyzer {
       expr(*s.value);
       checkAssignable(s.decl_type, *s.value, "initialise '" + s.name + "'");
       flowInto(vi, *s.value, s.value->loc);
-    } else if (varying_control_ > 0) {
-      markVarying(vi, varying_control_why_);
     }
+    s.inferred_varying = vars_[vi].varying;
   }
 
   int lookupInInnermost(const std::string& name) const {

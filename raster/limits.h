@@ -8,6 +8,7 @@ constexpr int kBlockSize = 8;          // pixel blocks: the unit of SIMD executi
 constexpr int kLanes = kBlockSize * kBlockSize;  // lanes of a wide register
 constexpr int kMaxFramebufferSize = 8192;
 constexpr int kMaxChannels = 64;       // per-vertex shading-parameter floats per instance
-constexpr int kMaxMaskDepth = 64;      // nesting of varying control flow in a pixel program
+constexpr int kMaxMaskDepth = 64;      // nesting of ifs and loops in a program
+constexpr unsigned kDefaultIterationCap = 65536;  // per pixel and loop; per context settable
 
 }  // namespace pf

@@ -124,13 +124,28 @@ void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* reco
   };
 
   uint64_t alive = mask;
-  uint64_t cur = ~0ull;  // the enclosing varying conditions
+  uint64_t cur = ~0ull;  // the lanes the enclosing ifs and loops let run
+  // One frame per open if (cond: its condition) or loop (cond: the lanes that took
+  // `continue` this iteration; iterations: its count). `saved` is `cur` before it opened.
   struct MaskFrame {
     uint64_t saved;
     uint64_t cond;
+    bool loop;
+    uint32_t iterations;
   };
   MaskFrame stack[kMaxMaskDepth];
   int depth = 0;
+  // Break / continue: the active lanes leave the innermost loop (and every if inside it).
+  auto leaveLoop = [&](uint64_t lanes, bool to_continue) {
+    for (int f = depth - 1; f >= 0; --f) {
+      if (stack[f].loop) {
+        if (to_continue) stack[f].cond |= lanes;
+        break;
+      }
+      stack[f].saved &= ~lanes;
+    }
+    cur &= ~lanes;
+  };
   alignas(64) uint32_t tmp[kLanes];
 
   auto run = [&](Op op, uint32_t* dst, const uint32_t* a, bool wa, const uint32_t* b, bool wb,
@@ -156,9 +171,11 @@ void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* reco
     switch (ins.op) {
       case Op::Jmp: pc = ins.a; continue;
       case Op::JmpIfNot: {
+        // A uniform condition: in a register (computed per iteration of a loop), every active
+        // lane holds the same value; read the first one.
         bool w;
         const uint32_t* c = src(ins.b, w);
-        if (!c[0]) pc = ins.a;
+        if (w ? (exec == 0 || !c[__builtin_ctzll(exec)]) : !c[0]) pc = ins.a;
         continue;
       }
       case Op::JmpIfNone:
@@ -168,10 +185,43 @@ void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* reco
         bool w;
         const uint32_t* c = src(ins.b, w);
         if (depth >= kMaxMaskDepth) return;  // the compiler bounds nesting; never reached
-        stack[depth++] = {cur, laneMaskOf(c, w)};
+        stack[depth++] = {cur, laneMaskOf(c, w), false, 0};
         cur &= stack[depth - 1].cond;
         continue;
       }
+      case Op::LoopBegin:
+        if (depth >= kMaxMaskDepth) return;  // the compiler bounds nesting; never reached
+        stack[depth++] = {cur, 0, true, 0};
+        continue;
+      case Op::LoopTest: {
+        bool w;
+        const uint32_t* c = src(ins.b, w);
+        cur &= laneMaskOf(c, w);
+        continue;
+      }
+      case Op::Break: leaveLoop(exec, false); continue;
+      case Op::Continue: leaveLoop(exec, true); continue;
+      case Op::LoopContinue:
+        if (depth > 0) {
+          cur |= stack[depth - 1].cond & alive;
+          stack[depth - 1].cond = 0;
+        }
+        continue;
+      case Op::LoopBack:
+        if (depth > 0 && ++stack[depth - 1].iterations >= state.iteration_cap) {
+          // Runaway: the lanes still looping stop here and draw nothing.
+          uint64_t stuck = alive & cur;
+          counters.iteration_cap_lanes += static_cast<uint64_t>(__builtin_popcountll(stuck));
+          counters.cap_primitive = &prim;
+          alive &= ~stuck;
+          cur = 0;
+          if (alive == 0) return;
+        }
+        pc = ins.a;
+        continue;
+      case Op::LoopEnd:
+        if (depth > 0) cur = stack[--depth].saved;
+        continue;
       case Op::MaskElse:
         if (depth > 0) cur = stack[depth - 1].saved & ~stack[depth - 1].cond;
         continue;
@@ -217,7 +267,7 @@ void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* reco
         // them; an instance whose layout has none (every instance the API builds today) has
         // an empty range here.
         continue;
-      case Op::LoadState: case Op::XLoadVertex: case Op::Bound: case Op::Kill:
+      case Op::LoadState: case Op::XLoadVertex: case Op::Bound: case Op::Kill: case Op::OpCount:
         continue;  // setup-only instructions never reach a pixel program
       case Op::XAdd: case Op::XSub: case Op::XMulF: case Op::XDivF: case Op::XNeg: case Op::XMov: {
         Op scalar_op = ins.op == Op::XAdd ? Op::FAdd : ins.op == Op::XSub ? Op::FSub

@@ -20,6 +20,9 @@ struct RasterState {
   bool depth_test = false;
   bool depth_write = true;
   DepthFunc depth_func = DepthFunc::Less;
+  // Iterations one loop may run per pixel (pixel program) or per instance (setup) before the
+  // pixel, or the instance, is stopped and the hit reported.
+  uint32_t iteration_cap = 65536;
 
   bool operator==(const RasterState&) const = default;
 };

@@ -68,6 +68,11 @@ bool Renderer::submit(const CompiledPrimitive& prim, const uint32_t* params, con
   if (out.killed) {
     scene_.records.resize(offset);
     ++stats_.instances_killed;
+    if (out.iteration_cap_hit) {
+      ++stats_.iteration_cap_instances;
+      ++cap_report_.instances;
+      cap_report_.primitive = prim.name;
+    }
     return false;
   }
   Instance inst;
@@ -184,6 +189,11 @@ void Renderer::flush() {
     stats_.lanes_committed += s->executor.counters.lanes_committed;
     stats_.pixels_shaded += s->pixels_shaded;
     stats_.tiles_run += s->tiles_run;
+    stats_.iteration_cap_pixels += s->executor.counters.iteration_cap_lanes;
+    if (s->executor.counters.iteration_cap_lanes) {
+      cap_report_.pixels += s->executor.counters.iteration_cap_lanes;
+      cap_report_.primitive = s->executor.counters.cap_primitive->name;
+    }
     stats_.gbuffer_bytes += (s->gbuffer.capacity() + s->shade_ids.capacity()) * 4;
     s->executor.counters = BlockCounters{};
     s->pixels_shaded = 0;

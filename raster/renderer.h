@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "raster/pixel_executor.h"
@@ -29,6 +30,14 @@ struct FrameStats {
   uint64_t lanes_committed = 0;
   uint64_t pixels_shaded = 0;
   uint64_t gbuffer_bytes = 0;         // G-buffer planes allocated for the last frame
+  uint64_t iteration_cap_pixels = 0;  // pixels stopped by the iteration cap
+  uint64_t iteration_cap_instances = 0;  // instances stopped by it in setup
+};
+
+// Runaway primitives since the last report: what the API turns into an error and a log line.
+struct IterationCapReport {
+  uint64_t pixels = 0, instances = 0;
+  std::string primitive;  // one of the primitives that hit the cap
 };
 
 class Renderer {
@@ -49,6 +58,13 @@ class Renderer {
   // Executes everything recorded: afterwards the colour and depth buffers hold the image.
   void flush();
   bool pending() const { return !scene_.empty(); }
+
+  // Takes (and clears) the iteration-cap hits since the last call.
+  IterationCapReport takeIterationCapReport() {
+    IterationCapReport r = cap_report_;
+    cap_report_ = IterationCapReport{};
+    return r;
+  }
 
   const FrameStats& stats() const { return stats_; }
   void resetStats() { stats_ = FrameStats{}; }
@@ -73,6 +89,7 @@ class Renderer {
   float* depth_ = nullptr;
   int width_ = 0, height_ = 0;
   FrameStats stats_;
+  IterationCapReport cap_report_;
 };
 
 }  // namespace pf

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "raster/limits.h"
 #include "raster/scalar_ops.h"
 
 namespace pf {
@@ -49,6 +50,9 @@ SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& 
         for (int c = in.layout->kind_begin[k]; c < in.layout->kind_end[k]; ++c) fn(c);
   };
 
+  uint32_t loop_counters[kMaxMaskDepth];
+  int loop_depth = 0;
+
   const size_t n = p.code.size();
   for (size_t pc = 0; pc < n;) {
     const Instr& ins = p.code[pc];
@@ -59,6 +63,24 @@ SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& 
         if (!read(ins.b)) pc = ins.a;
         continue;
       case Op::Kill: out.killed = true; return out;
+      case Op::LoopBegin:
+        if (loop_depth >= kMaxMaskDepth) {  // the compiler bounds nesting; never reached
+          out.killed = true;
+          return out;
+        }
+        loop_counters[loop_depth++] = 0;
+        continue;
+      case Op::LoopBack:
+        if (loop_depth > 0 && ++loop_counters[loop_depth - 1] >= in.state->iteration_cap) {
+          out.killed = true;
+          out.iteration_cap_hit = true;
+          return out;
+        }
+        pc = ins.a;
+        continue;
+      case Op::LoopEnd:
+        if (loop_depth > 0) --loop_depth;
+        continue;
       case Op::Bound:
         out.has_bound = true;
         out.bound[0] = rf(ins.a);

@@ -20,6 +20,7 @@ struct SetupInput {
 
 struct SetupOutput {
   bool killed = false;
+  bool iteration_cap_hit = false;  // killed because a loop ran past the context's cap
   bool has_bound = false;
   float bound[4] = {0, 0, 0, 0};  // xmin, ymin, xmax, ymax in window coordinates
 };

@@ -29,11 +29,12 @@ bool registerBuiltins(PFcontextRec& ctx) {
       std::fprintf(stderr, "primflow: built-in primitive failed to compile:\n%s", log.format().c_str());
       return false;
     }
-    for (auto& p : module.primitives) ctx.primitives.by_name[p->name] = p;
-  }
-  for (const ModeName& m : kModes) {
-    auto it = ctx.primitives.by_name.find(m.primitive);
-    if (it != ctx.primitives.by_name.end()) ctx.primitives.by_mode[m.mode] = it->second;
+    for (auto& p : module.primitives) {
+      GLenum mode = 0;
+      for (const ModeName& m : kModes)
+        if (p->name == m.primitive) mode = m.mode;
+      ctx.primitives.add(p, mode);
+    }
   }
   return true;
 }
@@ -41,6 +42,18 @@ bool registerBuiltins(PFcontextRec& ctx) {
 }  // namespace
 
 PFcontextRec* currentContext() { return g_current; }
+
+void PrimitiveRegistry::add(std::shared_ptr<const CompiledPrimitive> p, GLenum mode) {
+  auto known = mode_of.find(p->name);
+  if (mode == 0) mode = known != mode_of.end() ? known->second : next_mode++;
+  if (known != mode_of.end()) {
+    replaced.push_back(by_name[p->name]);
+    if (known->second != mode) by_mode.erase(known->second);
+  }
+  mode_of[p->name] = mode;
+  by_mode[mode] = p;
+  by_name[p->name] = std::move(p);
+}
 
 }  // namespace pf
 
@@ -50,20 +63,23 @@ PFcontext pfCreateContextAttribs(const int* attribs) {
   GLenum format = GL_RGBA;
   int depth_bits = 0;
   int threads = 0;
+  int cap = 0;
   for (const int* a = attribs; a && a[0] != 0; a += 2) {
     switch (a[0]) {
       case PF_FORMAT: format = static_cast<GLenum>(a[1]); break;
       case PF_DEPTH_BITS: depth_bits = a[1]; break;
       case PF_THREADS: threads = a[1]; break;
+      case PF_ITERATION_CAP: cap = a[1]; break;
       default: return nullptr;  // unknown attribute
     }
   }
-  if (format != GL_RGBA || depth_bits < 0 || threads < 0 || threads > 256) return nullptr;
+  if (format != GL_RGBA || depth_bits < 0 || threads < 0 || threads > 256 || cap < 0) return nullptr;
   if (threads == 0) threads = pf::defaultThreadCount();
   try {
     auto* ctx = new PFcontextRec(threads);
     ctx->format = format;
     ctx->depth_bits = depth_bits;
+    ctx->iteration_cap = cap > 0 ? static_cast<unsigned>(cap) : pf::kDefaultIterationCap;
     if (!pf::registerBuiltins(*ctx)) {
       delete ctx;
       return nullptr;
@@ -122,7 +138,7 @@ GLboolean pfGetDepthBuffer(PFcontext ctx, GLint* width, GLint* height, GLint* by
     if (buffer) *buffer = nullptr;
     return GL_FALSE;
   }
-  ctx->renderer.flush();
+  ctx->finish();
   if (width) *width = ctx->width;
   if (height) *height = ctx->height;
   if (bytesPerValue) *bytesPerValue = static_cast<GLint>(sizeof(float));

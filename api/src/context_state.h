@@ -26,6 +26,17 @@ struct SequencePoint {
 struct PrimitiveRegistry {
   std::map<std::string, std::shared_ptr<const CompiledPrimitive>> by_name;
   std::map<GLenum, std::shared_ptr<const CompiledPrimitive>> by_mode;
+  std::map<std::string, GLenum> mode_of;  // the glBegin mode of each name
+  GLenum next_mode = 0x31800;             // GL_FIRST_PRIMITIVE_MODE_EXT
+  // Compiled modules: their diagnostics (id - 1), and the last failed compilation's.
+  std::vector<std::string> module_logs;
+  std::string failed_log;
+  // Replaced programs stay alive: instances already recorded point at them.
+  std::vector<std::shared_ptr<const CompiledPrimitive>> replaced;
+
+  // Registers a compiled primitive under its name: a new name gets the next mode, a known
+  // name keeps its mode (a built-in GL mode, or an earlier one) and gets the new program.
+  void add(std::shared_ptr<const CompiledPrimitive> p, GLenum mode = 0);
 };
 
 }  // namespace pf
@@ -40,6 +51,7 @@ struct PFcontextRec {
   int width = 0, height = 0;
   std::vector<float> depth;
   bool ever_bound = false;
+  unsigned iteration_cap = 65536;
 
   pf::PrimitiveRegistry primitives;
   pf::Renderer renderer;
@@ -68,6 +80,9 @@ struct PFcontextRec {
   void setError(GLenum e) {
     if (error == GL_NO_ERROR) error = e;
   }
+  // Runs all recorded drawing, then reports runaway primitives: GL_TOO_MANY_ITERATIONS_EXT and
+  // a line on stderr.
+  void finish();
   pf::RasterState rasterState() const;
 };
 

@@ -4,6 +4,7 @@
 // to the renderer. Nothing here knows what a triangle is: the primitive's declaration says how
 // many sequence points an instance takes and which parameters it wants.
 #include <bit>
+#include <cstdio>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -94,6 +95,18 @@ bool feedable(const pf::CompiledPrimitive& prim) {
 
 }  // namespace
 
+void PFcontextRec::finish() {
+  renderer.flush();
+  pf::IterationCapReport r = renderer.takeIterationCapReport();
+  if (r.pixels == 0 && r.instances == 0) return;
+  setError(GL_TOO_MANY_ITERATIONS_EXT);
+  std::fprintf(stderr,
+               "primflow: primitive '%s' ran a loop past the iteration cap (%u): %llu pixel(s) and "
+               "%llu instance(s) stopped and not drawn\n",
+               r.primitive.c_str(), iteration_cap, static_cast<unsigned long long>(r.pixels),
+               static_cast<unsigned long long>(r.instances));
+}
+
 pf::RasterState PFcontextRec::rasterState() const {
   pf::RasterState s;
   const float x = static_cast<float>(viewport[0]), y = static_cast<float>(viewport[1]);
@@ -113,6 +126,7 @@ pf::RasterState PFcontextRec::rasterState() const {
   s.depth_test = depth_test && depth_bits > 0;
   s.depth_write = depth_write;
   s.depth_func = toDepthFunc(depth_func);
+  s.iteration_cap = iteration_cap;
   return s;
 }
 
@@ -145,11 +159,11 @@ const GLubyte* pfglGetString(GLenum name) {
 }
 
 void pfglFinish(void) {
-  if (PFcontextRec* ctx = outsideBegin()) ctx->renderer.flush();
+  if (PFcontextRec* ctx = outsideBegin()) ctx->finish();
 }
 
 void pfglFlush(void) {
-  if (PFcontextRec* ctx = outsideBegin()) ctx->renderer.flush();
+  if (PFcontextRec* ctx = outsideBegin()) ctx->finish();
 }
 
 void pfglClear(GLbitfield mask) {

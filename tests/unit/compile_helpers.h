@@ -37,6 +37,7 @@ inline uint32_t f2u(float f) { return std::bit_cast<uint32_t>(f); }
 struct BlockRun {
   bool killed = false;
   SetupOutput setup;
+  BlockCounters counters;
   std::vector<float> depth = std::vector<float>(64, 1.0f);
   std::vector<uint32_t> shade_ids = std::vector<uint32_t>(64 * 64, 0);
   std::vector<float> channels;  // slot-major planes of 64*64
@@ -46,7 +47,8 @@ struct BlockRun {
 
 inline BlockRun runBlock(const CompiledPrimitive& prim, const std::vector<float>& params,
                          const std::vector<float>& vertex_channels, int nch, bool depth_test = true,
-                         float initial_depth = 1.0f, InterpKind kind = InterpKind::PerspectiveLinear) {
+                         float initial_depth = 1.0f, InterpKind kind = InterpKind::PerspectiveLinear,
+                         uint32_t iteration_cap = 65536) {
   BlockRun r;
   std::fill(r.depth.begin(), r.depth.end(), initial_depth);
   std::vector<uint32_t> p(params.size());
@@ -67,6 +69,7 @@ inline BlockRun runBlock(const CompiledPrimitive& prim, const std::vector<float>
   st.vp_x1 = 8;
   st.vp_y1 = 8;
   st.depth_test = depth_test;
+  st.iteration_cap = iteration_cap;
   std::vector<uint32_t> record(SetupExecutor::recordWords(prim, nch) + 1);
   SetupExecutor setup;
   r.setup = setup.run(prim, SetupInput{p.data(), vertex_channels.data(), &layout, &st}, record.data());
@@ -82,6 +85,7 @@ inline BlockRun runBlock(const CompiledPrimitive& prim, const std::vector<float>
   t.slots = planes.data();
   PixelExecutor ex;
   ex.runBlock(prim, record.data(), layout, st, 1, 0, 0, ~0ull, t);
+  r.counters = ex.counters;
   return r;
 }
 

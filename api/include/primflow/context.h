@@ -16,6 +16,8 @@ typedef struct PFcontextRec *PFcontext;
 #define PF_FORMAT      0x31100 /* colour format: GL_RGBA (the only one so far)            */
 #define PF_DEPTH_BITS  0x31101 /* 0 (no depth buffer) or any positive size: float depth    */
 #define PF_THREADS     0x31102 /* rasterizer threads; 0 = PF_NUM_THREADS env var, else all cores */
+#define PF_ITERATION_CAP 0x31103 /* iterations one loop of a primitive may run per pixel (and per
+                                    instance in setup); 0 = the default, 65536 */
 
 /* A context rendering GL_RGBA with a depth buffer when depthBits > 0; NULL on a bad format. */
 PFcontext pfCreateContext(GLenum format, GLint depthBits);

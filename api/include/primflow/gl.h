@@ -44,6 +44,20 @@ void pfglColor4f(GLfloat red, GLfloat green, GLfloat blue, GLfloat alpha);
 
 /* ---- PixelFlow extensions (tokens in primflow's own range, 0x31000-0x31FFF) ---------------- */
 #define GL_TOO_MANY_ITERATIONS_EXT 0x31001 /* error: a primitive program hit the iteration cap */
+#define GL_FIRST_PRIMITIVE_MODE_EXT 0x31800 /* glBegin modes of compiled primitives start here */
+
+/* Compiles primitive-language source (docs/language.md) and registers its primitives, as the
+ * built-in ones are registered. Returns a module id, or 0 if it does not compile (then
+ * pfglGetCompileLogEXT(0, ...) holds the diagnostics). NULL source: GL_INVALID_VALUE, 0.
+ * A primitive whose name is already registered replaces it for later glBegin calls. */
+GLuint pfglCompilePrimitivesEXT(const GLchar *source);
+/* The diagnostics of the last compilation (module 0: the last failed one), as
+ * glGetShaderInfoLog: at most bufSize - 1 characters and a NUL; *length (if not NULL) gets the
+ * count written. An unknown module id: GL_INVALID_VALUE. */
+void pfglGetCompileLogEXT(GLuint module, GLsizei bufSize, GLsizei *length, GLchar *log);
+/* The glBegin mode of a registered primitive by name (built-in ones included, e.g.
+ * "triangles" gives GL_TRIANGLES); 0 and GL_INVALID_VALUE if there is none. */
+GLenum pfglGetPrimitiveEXT(const GLchar *name);
 
 #ifdef __cplusplus
 }

@@ -1,0 +1,70 @@
+// The PixelFlow extensions for primitives compiled at run time (paper section 4: every
+// primitive, built-in or not, registers itself the same way): compile, read the log, look up
+// the glBegin mode of a primitive by name.
+#include <algorithm>
+#include <cstring>
+
+#include <primflow/gl.h>
+
+#include "api/src/context_state.h"
+
+using pf::currentContext;
+
+extern "C" {
+
+GLuint pfglCompilePrimitivesEXT(const GLchar* source) {
+  PFcontextRec* ctx = currentContext();
+  if (!ctx) return 0;
+  if (ctx->in_begin) {
+    ctx->setError(GL_INVALID_OPERATION);
+    return 0;
+  }
+  if (!source) {
+    ctx->setError(GL_INVALID_VALUE);
+    return 0;
+  }
+  pf::CompiledModule module;
+  pf::DiagnosticLog log;
+  std::string name = "module" + std::to_string(ctx->primitives.module_logs.size() + 1) + ".pfl";
+  if (!pf::compileSource(name, source, module, log)) {
+    ctx->primitives.failed_log = log.format();
+    return 0;
+  }
+  // Instances already recorded keep the programs they were submitted with (the registry keeps
+  // replaced programs alive), so replacing a primitive never changes pending drawing.
+  for (auto& p : module.primitives) ctx->primitives.add(p);
+  ctx->primitives.module_logs.push_back(log.format());
+  return static_cast<GLuint>(ctx->primitives.module_logs.size());
+}
+
+void pfglGetCompileLogEXT(GLuint module, GLsizei bufSize, GLsizei* length, GLchar* out) {
+  PFcontextRec* ctx = currentContext();
+  if (!ctx) return;
+  const std::string* text = nullptr;
+  if (module == 0) text = &ctx->primitives.failed_log;
+  else if (module <= ctx->primitives.module_logs.size()) text = &ctx->primitives.module_logs[module - 1];
+  if (!text || bufSize < 0) {
+    ctx->setError(GL_INVALID_VALUE);
+    return;
+  }
+  GLsizei n = 0;
+  if (out && bufSize > 0) {
+    n = static_cast<GLsizei>(std::min<size_t>(text->size(), static_cast<size_t>(bufSize - 1)));
+    std::memcpy(out, text->data(), static_cast<size_t>(n));
+    out[n] = '\0';
+  }
+  if (length) *length = n;
+}
+
+GLenum pfglGetPrimitiveEXT(const GLchar* name) {
+  PFcontextRec* ctx = currentContext();
+  if (!ctx) return 0;
+  auto it = name ? ctx->primitives.mode_of.find(name) : ctx->primitives.mode_of.end();
+  if (it == ctx->primitives.mode_of.end()) {
+    ctx->setError(GL_INVALID_VALUE);
+    return 0;
+  }
+  return it->second;
+}
+
+}  // extern "C"

@@ -1,0 +1,121 @@
+// The run-time primitive extensions: compile a user primitive, read the log, draw it with
+// glBegin, and the iteration cap reported as GL_TOO_MANY_ITERATIONS_EXT.
+#include <gtest/gtest.h>
+
+#include <primflow/gl.h>
+
+#include <string>
+#include <vector>
+
+namespace {
+
+struct Ctx {
+  PFcontext ctx;
+  std::vector<unsigned char> px;
+  explicit Ctx(int cap = 0) : px(16 * 16 * 4) {
+    const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_ITERATION_CAP, cap, 0};
+    ctx = pfCreateContextAttribs(attribs);
+    EXPECT_NE(ctx, nullptr);
+    pfMakeCurrent(ctx, px.data(), GL_UNSIGNED_BYTE, 16, 16);
+    pfglMatrixMode(GL_PROJECTION);
+    pfglOrtho(0, 16, 0, 16, -1, 1);
+  }
+  ~Ctx() {
+    pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
+    pfDestroyContext(ctx);
+  }
+};
+
+// A user primitive fed by glVertex: covers the pixels left of the first vertex's x, and (with
+// `runaway`) loops forever on the right half.
+const char* kHalf =
+    "primitive half(point vertex[1]; inout varying float Z) {\n"
+    "  float edge = screen(vertex[0]).x;\n"
+    "  if (X > edge) return;\n"
+    "  Z = 0.25;\n"
+    "}\n"
+    "primitive spin(point vertex[1]; inout varying float Z) {\n"
+    "  float v = 0.0;\n"
+    "  while (X > 8.0) v = v + 1.0;\n"
+    "  Z = 0.5;\n"
+    "}\n";
+
+}  // namespace
+
+TEST(Extensions, CompileRegisterAndDraw) {
+  Ctx c;
+  GLuint m = pfglCompilePrimitivesEXT(kHalf);
+  ASSERT_NE(m, 0u);
+  GLenum half = pfglGetPrimitiveEXT("half");
+  EXPECT_GE(half, static_cast<GLenum>(GL_FIRST_PRIMITIVE_MODE_EXT));
+  EXPECT_EQ(pfglGetPrimitiveEXT("triangles"), static_cast<GLenum>(GL_TRIANGLES));
+  pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  pfglEnable(GL_DEPTH_TEST);
+  pfglBegin(half);
+  pfglVertex3f(5.0f, 0.0f, 0.0f);
+  pfglEnd();
+  GLint w, h, b;
+  void* d;
+  ASSERT_TRUE(pfGetDepthBuffer(c.ctx, &w, &h, &b, &d));
+  const float* depth = static_cast<const float*>(d);
+  for (int x = 0; x < 16; ++x) EXPECT_FLOAT_EQ(depth[3 * 16 + x], x + 0.5f <= 5.0f ? 0.25f : 1.0f) << x;
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
+TEST(Extensions, CompileErrorsThroughTheLog) {
+  Ctx c;
+  EXPECT_EQ(pfglCompilePrimitivesEXT("primitive p() {\n  float a = nope;\n}\n"), 0u);
+  char log[512];
+  GLsizei len = 0;
+  pfglGetCompileLogEXT(0, sizeof log, &len, log);
+  std::string text(log, static_cast<size_t>(len));
+  EXPECT_NE(text.find(":2:13: error: 'nope' is not declared"), std::string::npos) << text;
+  // Truncation and bad ids.
+  pfglGetCompileLogEXT(0, 5, &len, log);
+  EXPECT_EQ(len, 4);
+  EXPECT_EQ(log[4], '\0');
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  pfglGetCompileLogEXT(99, sizeof log, &len, log);
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_INVALID_VALUE));
+  EXPECT_EQ(pfglCompilePrimitivesEXT(nullptr), 0u);
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_INVALID_VALUE));
+  EXPECT_EQ(pfglGetPrimitiveEXT("no_such_primitive"), 0u);
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_INVALID_VALUE));
+}
+
+TEST(Extensions, RunawayPrimitiveIsStoppedAndReported) {
+  Ctx c(500);
+  ASSERT_NE(pfglCompilePrimitivesEXT(kHalf), 0u);
+  pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  pfglEnable(GL_DEPTH_TEST);
+  pfglBegin(pfglGetPrimitiveEXT("spin"));
+  pfglVertex3f(0.0f, 0.0f, 0.0f);
+  pfglEnd();
+  pfglFinish();
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_TOO_MANY_ITERATIONS_EXT));
+  GLint w, h, b;
+  void* d;
+  ASSERT_TRUE(pfGetDepthBuffer(c.ctx, &w, &h, &b, &d));
+  const float* depth = static_cast<const float*>(d);
+  for (int x = 0; x < 16; ++x) EXPECT_FLOAT_EQ(depth[x], x < 8 ? 0.5f : 1.0f) << "pixel " << x;
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));  // reported once
+}
+
+TEST(Extensions, RecompilingReplacesButKeepsPendingDrawing) {
+  Ctx c;
+  ASSERT_NE(pfglCompilePrimitivesEXT(kHalf), 0u);
+  GLenum half = pfglGetPrimitiveEXT("half");
+  pfglClear(GL_DEPTH_BUFFER_BIT);
+  pfglEnable(GL_DEPTH_TEST);
+  pfglBegin(half);
+  pfglVertex3f(5.0f, 0.0f, 0.0f);
+  pfglEnd();
+  // Same name, new program, same mode; the instance above still draws with the old one.
+  ASSERT_NE(pfglCompilePrimitivesEXT("primitive half(point vertex[1]; inout varying float Z) { Z = 0.125; }"), 0u);
+  EXPECT_EQ(pfglGetPrimitiveEXT("half"), half);
+  GLint w, h, b;
+  void* d;
+  ASSERT_TRUE(pfGetDepthBuffer(c.ctx, &w, &h, &b, &d));
+  EXPECT_FLOAT_EQ(static_cast<const float*>(d)[0], 0.25f);
+  EXPECT_FLOAT_EQ(static_cast<const float*>(d)[15], 1.0f);
+}
