@@ -80,12 +80,13 @@ struct Param {
   std::string name;
 };
 
-enum class UnitKind { Primitive, Interpolator };
+enum class UnitKind { Primitive, Interpolator, Function };
 
 struct Unit {
   UnitKind kind;
   SourceLoc loc;
   std::string name;
+  Type return_type;  // Function
   std::vector<Param> params;
   std::vector<StmtPtr> body;
 };

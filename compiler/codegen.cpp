@@ -1,6 +1,7 @@
 // Code generation (see codegen.h).
 #include "compiler/codegen.h"
 
+#include <algorithm>
 #include <map>
 #include <set>
 
@@ -263,8 +264,14 @@ class Generator {
         if (varying_depth == 0) setup_.code.push_back(Instr{Op::Kill});
       } else if (in.op == Op::Break || in.op == Op::Continue) {
         // Only uniform loops reach here with their own break / continue: a jump.
-        JumpPatches* p = setup_loops_.empty() ? nullptr : setup_loops_.back();
-        if (p && varying_depth == 0) {
+        // A break of several levels (a function's return inside its loops) pops the inner
+        // loops' counters before jumping out of the outermost.
+        size_t levels = in.op == Op::Break ? static_cast<size_t>(std::max(in.imm, 1)) : 1;
+        bool all_setup = setup_loops_.size() >= levels;
+        for (size_t k = 0; all_setup && k < levels; ++k) all_setup = setup_loops_[setup_loops_.size() - 1 - k] != nullptr;
+        if (all_setup && varying_depth == 0) {
+          JumpPatches* p = setup_loops_[setup_loops_.size() - levels];
+          for (size_t k = 1; k < levels; ++k) setup_.code.push_back(Instr{Op::LoopEnd});
           (in.op == Op::Break ? p->breaks : p->continues).push_back(setup_.code.size());
           setup_.code.push_back(Instr{Op::Jmp, 0, kNoOperand, 0});
         }
@@ -369,7 +376,7 @@ class Generator {
         continue;
       }
       if (n.kind == IrNode::Kind::Inst && (n.inst.op == Op::Break || n.inst.op == Op::Continue)) {
-        if (in_loop) pixel_.code.push_back(Instr{n.inst.op});
+        if (in_loop) pixel_.code.push_back(Instr{n.inst.op, static_cast<uint16_t>(std::max(n.inst.imm, 1))});
         continue;
       }
       if (n.kind == IrNode::Kind::If) {

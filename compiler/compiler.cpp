@@ -15,13 +15,17 @@ bool compileSource(const std::string& filename, const std::string& text, Compile
   if (log.hasErrors()) return false;
   if (emit == EmitStage::Ast && listing) *listing += printAst(program);
   if (!analyze(program, log)) return false;
+  std::map<std::string, const Unit*> functions;
+  for (const Unit& u : program.units)
+    if (u.kind == UnitKind::Function) functions[u.name] = &u;
   for (const Unit& u : program.units) {
+    if (u.kind == UnitKind::Function) continue;  // inlined where called
     if (u.kind == UnitKind::Interpolator) {
       out.interpolators.push_back(u.name);
       continue;
     }
     IrFunction ir;
-    if (!lowerPrimitive(u, ir, log)) return false;
+    if (!lowerPrimitive(u, functions, ir, log)) return false;
     CodegenResult code = generateCode(ir);
     auto prim = std::make_shared<CompiledPrimitive>();
     prim->name = u.name;

@@ -80,6 +80,7 @@ std::string disassemble(const Bytecode& b, bool pixel) {
     if (in.op == Op::XLoadVertex || in.op == Op::LoadState || in.op == Op::InterpReturn ||
         in.op == Op::InterpShared)
       parts.push_back("imm=" + std::to_string(in.imm));
+    if (in.op == Op::Break && in.imm > 1) parts.push_back("levels=" + std::to_string(in.imm));
     for (size_t k = 0; k < parts.size(); ++k) out += (k ? ", " : " ") + parts[k];
     out += "\n";
   }

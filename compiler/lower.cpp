@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <functional>
 #include <map>
 
 namespace pf {
@@ -18,10 +19,25 @@ struct Binding {
   bool may_vary = false;   // sema's (conservative) verdict on the variable
 };
 
-// A loop being lowered: the values it carries from one iteration to the next.
+// A loop being lowered: the values it carries from one iteration to the next, and what
+// lowering learned about it (which decides whether it must be lowered again).
 struct LoopContext {
   std::vector<std::pair<int, int>> slots;  // (binding, component)
   std::vector<int> merge;                   // the carried value of each slot
+  bool function = false;        // the one-iteration loop of an inlined call: `return` leaves it
+  int entry_varying_depth = 0;  // varying control around the loop
+  bool varying_exit = false;    // a break / continue / return under varying control inside
+  std::vector<size_t> violated; // slots classified uniform that received a varying value
+};
+
+// How a loop is lowered: its carried variables, and how to emit its parts.
+struct LoopSpec {
+  SourceLoc loc;
+  bool varying = false;               // sema's first guess
+  std::vector<int> carried_bindings;  // variables assigned in the loop
+  bool function = false;
+  std::function<int()> cond;          // emits the condition, returns its value (-1: always true)
+  std::function<void()> body, step;
 };
 
 // Names assigned anywhere in a statement (targets' root variables).
@@ -41,7 +57,8 @@ void assignedNames(const Stmt& s, std::vector<std::string>& out) {
 
 class Lowerer {
  public:
-  Lowerer(IrFunction& f, DiagnosticLog& log) : f_(f), log_(log) {}
+  Lowerer(IrFunction& f, DiagnosticLog& log, const std::map<std::string, const Unit*>& functions)
+      : f_(f), log_(log), functions_(functions) {}
 
   bool run(const Unit& u) {
     f_.name = u.name;
@@ -51,6 +68,7 @@ class Lowerer {
     bindBuiltin("Y", kRegY, false);
     bindBuiltin("Z", kRegZ, true);
     z_initial_ = bindings_[lookup("Z")].comps[0];
+    scopes_.emplace_back();  // the parameters' scope: functions see scope 0 (built-ins) only
     // Parameters: array parameters are per sequence point (outermost index), the rest per
     // primitive. All per-sequence-point parameters must agree on the count.
     int seq = 0;
@@ -115,6 +133,7 @@ class Lowerer {
  private:
   IrFunction& f_;
   DiagnosticLog& log_;
+  const std::map<std::string, const Unit*>& functions_;
   std::vector<std::map<std::string, int>> scopes_;
   std::vector<Binding> bindings_;
   std::vector<IrBlock*> blocks_;
@@ -247,13 +266,15 @@ class Lowerer {
       case StmtKind::ExprStmt: expr(*s.value); return false;
       case StmtKind::If: return ifStatement(s);
       case StmtKind::Return:
+        if (s.value) return functionReturn(s);
         emitEffect(Op::Retire, -1, -1, -1, -1, 0, s.loc);
         return true;
       case StmtKind::Loop: loop(s); return false;
       case StmtKind::Break:
       case StmtKind::Continue:
+        noteExit(1);
         carryCopies(s.loc);
-        emitEffect(s.kind == StmtKind::Break ? Op::Break : Op::Continue, -1, -1, -1, -1, 0, s.loc);
+        emitEffect(s.kind == StmtKind::Break ? Op::Break : Op::Continue, -1, -1, -1, -1, 1, s.loc);
         return true;
       case StmtKind::Bound: {
         int v[4];
@@ -289,16 +310,15 @@ class Lowerer {
     return false;
   }
 
-  // The carried values of the innermost loop take the current bindings.
-  void carryCopies(SourceLoc loc) {
+  // The carried values of loop `index` (default: the innermost) take the current bindings.
+  void carryCopies(SourceLoc loc, int index = -1) {
     if (loops_.empty()) return;
-    LoopContext& l = loops_.back();
+    LoopContext& l = loops_[index < 0 ? loops_.size() - 1 : static_cast<size_t>(index)];
     for (size_t i = 0; i < l.slots.size(); ++i) {
       int cur = bindings_[l.slots[i].first].comps[l.slots[i].second];
       int m = l.merge[i];
       if (cur == m) continue;
-      if (isVarying(cur) && !isVarying(m))
-        log_.error(loc, "internal compiler error: a varying value flows into a loop value classified uniform");
+      if (isVarying(cur) && !isVarying(m)) l.violated.push_back(i);  // lowered again, varying
       IrNode n;
       n.inst = IrInst{cls(m) == ValueClass::Interp ? Op::XMov : Op::Mov, m, cur, -1, -1, -1,
                       static_cast<int>(kAllInterpKinds), loc};
@@ -306,61 +326,188 @@ class Lowerer {
     }
   }
 
+  // Leaving `levels` loops under varying control makes each of them varying.
+  void noteExit(int levels) {
+    for (int k = 0; k < levels && k < static_cast<int>(loops_.size()); ++k) {
+      LoopContext& l = loops_[loops_.size() - 1 - k];
+      if (varying_depth_ > l.entry_varying_depth) l.varying_exit = true;
+    }
+  }
+
+  // `return value;` in an inlined function: set the result and leave every loop up to the call.
+  bool functionReturn(const Stmt& s) {
+    int levels = 0, target = -1;
+    for (int k = static_cast<int>(loops_.size()) - 1; k >= 0; --k) {
+      ++levels;
+      if (loops_[k].function) {
+        target = k;
+        break;
+      }
+    }
+    if (target < 0) return false;  // sema reports a value returned from a primitive
+    int result = lookup("$result");
+    Binding v = expr(*s.value);
+    bindings_[result].comps = convert(v, bindings_[result].type);
+    noteExit(levels);
+    carryCopies(s.loc, target);
+    emitEffect(Op::Break, -1, -1, -1, -1, levels, s.loc);
+    return true;
+  }
+
+  // Lowers a loop. Whether it is varying, and which carried values are, is first guessed from
+  // sema; if lowering finds a varying value reaching a value guessed uniform, or a varying exit
+  // from a loop guessed uniform, it lowers the loop again with that corrected (at most once per
+  // carried value). That makes the classification exact per call site of inlined functions.
+  void lowerLoop(const LoopSpec& spec) {
+    bool loop_varying = spec.varying;
+    std::vector<bool> forced;
+    for (int attempt = 0;; ++attempt) {
+      std::vector<Binding> saved = bindings_;
+      size_t saved_size = blocks_.back()->size();
+      LoopContext ctx;
+      ctx.function = spec.function;
+      ctx.entry_varying_depth = varying_depth_;
+      size_t slot = 0;
+      for (int b : spec.carried_bindings) {
+        for (size_t k = 0; k < bindings_[b].comps.size(); ++k, ++slot) {
+          if (forced.size() <= slot) forced.push_back(false);
+          int cur = bindings_[b].comps[k];
+          Value m;
+          m.cls = cls(cur);
+          m.varying = loop_varying || bindings_[b].may_vary || isVarying(cur) || forced[slot];
+          int mid = newValue(m);
+          IrNode init;
+          init.inst = IrInst{m.cls == ValueClass::Interp ? Op::XMov : Op::Mov, mid, cur, -1, -1, -1,
+                             static_cast<int>(kAllInterpKinds), spec.loc};
+          blocks_.back()->push_back(std::move(init));
+          bindings_[b].comps[k] = mid;
+          ctx.slots.push_back({b, static_cast<int>(k)});
+          ctx.merge.push_back(mid);
+        }
+      }
+      IrNode node;
+      node.kind = IrNode::Kind::Loop;
+      node.inst.loc = spec.loc;
+      node.varying_loop = loop_varying;
+      node.cond_block = std::make_unique<IrBlock>();
+      node.body_block = std::make_unique<IrBlock>();
+      node.step_block = std::make_unique<IrBlock>();
+      loops_.push_back(ctx);
+      if (loop_varying) ++varying_depth_;
+      blocks_.push_back(node.cond_block.get());
+      int cond = spec.cond ? spec.cond() : -1;
+      node.cond = cond >= 0 ? cond : constB(true);
+      blocks_.pop_back();
+      blocks_.push_back(node.body_block.get());
+      spec.body();
+      blocks_.pop_back();
+      for (size_t i = 0; i < ctx.slots.size(); ++i)  // the continue point
+        bindings_[ctx.slots[i].first].comps[ctx.slots[i].second] = ctx.merge[i];
+      blocks_.push_back(node.step_block.get());
+      if (spec.step) spec.step();
+      carryCopies(spec.loc);
+      blocks_.pop_back();
+      if (loop_varying) --varying_depth_;
+      LoopContext done = std::move(loops_.back());
+      loops_.pop_back();
+
+      bool again = false;
+      if (!loop_varying && (isVarying(node.cond) || done.varying_exit)) {
+        loop_varying = true;
+        again = true;
+      }
+      for (size_t i : done.violated)
+        if (!forced[i]) {
+          forced[i] = true;
+          again = true;
+        }
+      if (again && attempt < 64) {
+        bindings_ = std::move(saved);
+        blocks_.back()->resize(saved_size);
+        continue;
+      }
+      for (size_t i = 0; i < done.slots.size(); ++i)  // after the loop
+        bindings_[done.slots[i].first].comps[done.slots[i].second] = done.merge[i];
+      blocks_.back()->push_back(std::move(node));
+      return;
+    }
+  }
+
+  // The variables among `names` visible here, once each.
+  std::vector<int> visibleBindings(const std::vector<std::string>& names) const {
+    std::vector<int> out;
+    for (const std::string& n : names) {
+      int b = lookup(n);
+      if (b >= 0 && std::find(out.begin(), out.end(), b) == out.end()) out.push_back(b);
+    }
+    return out;
+  }
+
   void loop(const Stmt& s) {
     scopes_.emplace_back();
     if (s.init) statement(*s.init);
-    // Carried: every component of every variable the loop assigns (visible here).
     std::vector<std::string> names;
     assignedNames(s, names);
-    LoopContext ctx;
-    std::vector<int> seen;
-    for (const std::string& n : names) {
-      int b = lookup(n);
-      if (b < 0 || std::find(seen.begin(), seen.end(), b) != seen.end()) continue;
-      seen.push_back(b);
-      for (size_t k = 0; k < bindings_[b].comps.size(); ++k) {
-        int cur = bindings_[b].comps[k];
-        Value m;
-        m.cls = cls(cur);
-        m.varying = s.varying_loop || bindings_[b].may_vary || isVarying(cur);
-        int mid = newValue(m);
-        IrNode init;
-        init.inst = IrInst{m.cls == ValueClass::Interp ? Op::XMov : Op::Mov, mid, cur, -1, -1, -1,
-                           static_cast<int>(kAllInterpKinds), s.loc};
-        blocks_.back()->push_back(std::move(init));
-        bindings_[b].comps[k] = mid;
-        ctx.slots.push_back({b, static_cast<int>(k)});
-        ctx.merge.push_back(mid);
-      }
-    }
-    auto restoreCarried = [&] {
-      for (size_t i = 0; i < ctx.slots.size(); ++i) bindings_[ctx.slots[i].first].comps[ctx.slots[i].second] = ctx.merge[i];
+    LoopSpec spec;
+    spec.loc = s.loc;
+    spec.varying = s.varying_loop;
+    spec.carried_bindings = visibleBindings(names);
+    if (s.value) spec.cond = [&] { return expr(*s.value).comps[0]; };
+    spec.body = [&] {
+      if (!scoped(s.body)) carryCopies(s.loc);
     };
-    IrNode node;
-    node.kind = IrNode::Kind::Loop;
-    node.inst.loc = s.loc;
-    node.varying_loop = s.varying_loop;
-    node.cond_block = std::make_unique<IrBlock>();
-    node.body_block = std::make_unique<IrBlock>();
-    node.step_block = std::make_unique<IrBlock>();
-    loops_.push_back(ctx);
-    if (s.varying_loop) ++varying_depth_;
-    blocks_.push_back(node.cond_block.get());
-    node.cond = s.value ? expr(*s.value).comps[0] : constB(true);
-    blocks_.pop_back();
-    blocks_.push_back(node.body_block.get());
-    if (!scoped(s.body)) carryCopies(s.loc);
-    blocks_.pop_back();
-    restoreCarried();  // the continue point
-    blocks_.push_back(node.step_block.get());
-    if (s.step) statement(*s.step);
-    carryCopies(s.loc);
-    blocks_.pop_back();
-    if (s.varying_loop) --varying_depth_;
-    loops_.pop_back();
-    restoreCarried();  // after the loop
-    blocks_.back()->push_back(std::move(node));
+    if (s.step) spec.step = [&] { statement(*s.step); };
+    lowerLoop(spec);
     scopes_.pop_back();
+  }
+
+  // A call of a user function, inlined: the body runs as a loop of one iteration whose result
+  // is a carried value, so `return` anywhere (under varying control too) is a break.
+  Binding callFunction(const Expr& e, const Unit& fn) {
+    std::vector<Binding> args;
+    for (const ExprPtr& a : e.args) args.push_back(expr(*a));
+    Binding result;
+    result.type = fn.return_type;
+    if (fn.return_type.base == BaseType::InterpData) {
+      log_.error(e.loc, "functions cannot return interpolator_data in this version of the language");
+      return result;
+    }
+    // The function sees the built-ins (scope 0) and its own parameters, nothing of the caller.
+    std::vector<std::map<std::string, int>> saved_scopes = std::move(scopes_);
+    scopes_.clear();
+    scopes_.push_back(saved_scopes.front());
+    scopes_.emplace_back();
+    for (size_t i = 0; i < fn.params.size(); ++i) {
+      Binding b;
+      b.type = fn.params[i].type;
+      b.comps = convert(args[i], b.type);
+      b.writable = true;
+      scopes_.back()[fn.params[i].name] = static_cast<int>(bindings_.size());
+      bindings_.push_back(std::move(b));
+    }
+    ValueClass rc = fn.return_type.base == BaseType::Int ? ValueClass::I32
+                    : fn.return_type.base == BaseType::Bool ? ValueClass::Bool : ValueClass::F32;
+    result.comps.assign(fn.return_type.slotCount(), constant(rc, 0));
+    scopes_.back()["$result"] = static_cast<int>(bindings_.size());
+    bindings_.push_back(std::move(result));
+
+    std::vector<std::string> names = {"$result"};
+    for (const StmtPtr& st : fn.body) assignedNames(*st, names);
+    LoopSpec spec;
+    spec.loc = e.loc;
+    spec.function = true;
+    spec.carried_bindings = visibleBindings(names);
+    spec.body = [&] {
+      if (!scoped(fn.body)) {  // sema makes every path return; stay safe regardless
+        carryCopies(e.loc);
+        emitEffect(Op::Break, -1, -1, -1, -1, 1, e.loc);
+      }
+    };
+    lowerLoop(spec);
+    Binding out = bindings_[lookup("$result")];
+    out.writable = true;
+    scopes_ = std::move(saved_scopes);
+    return out;
   }
 
   bool ifStatement(const Stmt& s) {
@@ -579,6 +726,8 @@ class Lowerer {
 
   Binding call(const Expr& e) {
     const std::string& f = e.name;
+    auto user = functions_.find(f);
+    if (user != functions_.end()) return callFunction(e, *user->second);
     std::vector<Binding> args;
     for (const ExprPtr& a : e.args) args.push_back(expr(*a));
     auto arg = [&](size_t i) { return args[i].comps[0]; };
@@ -650,8 +799,9 @@ class Lowerer {
 
 }  // namespace
 
-bool lowerPrimitive(const Unit& unit, IrFunction& out, DiagnosticLog& log) {
-  Lowerer l(out, log);
+bool lowerPrimitive(const Unit& unit, const std::map<std::string, const Unit*>& functions,
+                    IrFunction& out, DiagnosticLog& log) {
+  Lowerer l(out, log, functions);
   return l.run(unit);
 }
 

@@ -21,8 +21,10 @@ class Parser {
       try {
         if (at(Tok::KwPrimitive) || at(Tok::KwInterpolator)) {
           p.units.push_back(unit());
+        } else if (isTypeToken(cur().kind)) {
+          p.units.push_back(function());
         } else {
-          error(cur().loc, "expected 'primitive' or 'interpolator' at top level, found " + describe(cur()));
+          error(cur().loc, "expected 'primitive', 'interpolator' or a function at top level, found " + describe(cur()));
           skipToUnit();
         }
       } catch (const Sync&) {
@@ -72,8 +74,14 @@ class Parser {
       fail(cur().loc, std::string("expected ") + tokenName(k) + " " + context + ", found " + describe(cur()));
     return take();
   }
+  bool atUnitStart() const {
+    return at(Tok::KwPrimitive) || at(Tok::KwInterpolator) || (isTypeToken(cur().kind) && next().kind == Tok::Ident);
+  }
   void skipToUnit() {
-    while (!at(Tok::End) && !at(Tok::KwPrimitive) && !at(Tok::KwInterpolator)) take();
+    if (!atUnitStart()) take();
+    while (!at(Tok::End) && !at(Tok::KwPrimitive) && !at(Tok::KwInterpolator) &&
+           !(isTypeToken(cur().kind) && next().kind == Tok::Ident))
+      take();
   }
   // After an error inside a block: skip past the next ';' or to a '}' at this level.
   void skipStatement() {
@@ -189,6 +197,31 @@ class Parser {
     return u;
   }
 
+  // type name(type a, type b[3], ...) { ... }: a function, inlined where it is called.
+  Unit function() {
+    Unit u;
+    u.kind = UnitKind::Function;
+    u.loc = cur().loc;
+    u.return_type = baseType();
+    u.name = expect(Tok::Ident, "(the function's name)").text;
+    expect(Tok::LParen, "to open the parameter list");
+    if (!at(Tok::RParen)) {
+      do {
+        Param p;
+        p.loc = cur().loc;
+        p.qualifier = qualifiers();
+        p.type = baseType();
+        p.loc = cur().loc;
+        p.name = expect(Tok::Ident, "(a parameter name)").text;
+        arrayDims(p.type);
+        u.params.push_back(std::move(p));
+      } while (accept(Tok::Comma));
+    }
+    expect(Tok::RParen, "to close the parameter list");
+    u.body = block();
+    return u;
+  }
+
   std::vector<StmtPtr> block() {
     expect(Tok::LBrace, "to open a block");
     std::vector<StmtPtr> out;
@@ -262,9 +295,8 @@ class Parser {
     }
     if (accept(Tok::KwReturn)) {
       auto s = make(StmtKind::Return, loc);
-      if (!at(Tok::Semi))
-        fail(cur().loc, "a primitive's 'return' takes no value (use interpolator_return to return a shading value)");
-      take();
+      if (!at(Tok::Semi)) s->value = expression();  // functions return a value; sema checks
+      expect(Tok::Semi, "after 'return'");
       return s;
     }
     if (accept(Tok::KwBound)) {

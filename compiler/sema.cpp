@@ -6,6 +6,7 @@
 
 #include "compiler/builtins.h"
 
+#include <algorithm>
 #include <functional>
 #include <set>
 #include <vector>
@@ -46,9 +47,23 @@ int componentIndex(BaseType b, const std::string& f) {
   return -1;
 }
 
+// The program's functions, shared by the analyzers of all units.
+struct FunctionTable {
+  std::map<std::string, Unit*> units;
+  // Whether a function's result can be varying even for uniform arguments (it reads X, Y, Z
+  // or ztest, directly or through a call).
+  std::map<std::string, bool> intrinsically_varying;
+  // Calls between units, for the recursion check: caller -> (callee, call location).
+  std::map<std::string, std::vector<std::pair<std::string, SourceLoc>>> calls;
+};
+
 class Analyzer {
  public:
-  Analyzer(DiagnosticLog& log) : log_(log) {}
+  Analyzer(DiagnosticLog& log, FunctionTable& functions, bool reporting = true)
+      : log_(log), functions_(functions), final_reporting_(reporting) {}
+
+  // For a function: whether some `return` value was varying (with uniform parameters).
+  bool returns_varying = false;
 
   void unit(Unit& u) {
     unit_ = &u;
@@ -57,9 +72,63 @@ class Analyzer {
     scopes_.emplace_back();
     // Built-in pixel variables: visible in every primitive, whether or not the parameter list
     // names them (the paper's primitives list them as parameters; both forms are accepted).
+    // Functions may read them; only a primitive writes Z.
     declareBuiltin("X", false);
     declareBuiltin("Y", false);
-    declareBuiltin("Z", true);
+    declareBuiltin("Z", u.kind == UnitKind::Primitive);
+    if (u.kind == UnitKind::Function) {
+      functionParams(u);
+    } else {
+      unitParams(u);
+    }
+    // Fixpoint of varying inference: assignments can make variables varying, which can make
+    // other assignments varying. Each pass re-types the whole body; at most one pass per variable.
+    for (int pass = 0; pass < 64; ++pass) {
+      changed_ = false;
+      reporting_ = false;
+      resetScopesForPass();
+      scoped(u.body);
+      if (!changed_) break;
+    }
+    reporting_ = final_reporting_;
+    returns_varying = false;
+    resetScopesForPass();
+    scoped(u.body);
+    if (!return_seen_in_interp_ && u.kind == UnitKind::Interpolator)
+      err(u.loc, "interpolator '" + u.name + "' never reaches interpolator_return(value)");
+    if (u.kind == UnitKind::Function && !alwaysReturns(u.body))
+      err(u.loc, "function '" + u.name + "' can reach its end without returning a " + typeName(u.return_type));
+  }
+
+ private:
+  // Function parameters are local variables initialised by the call (uniform here: the
+  // function is checked as if every argument were uniform; each call site decides for itself).
+  void functionParams(Unit& u) {
+    std::set<std::string> seen;
+    for (Param& p : u.params) {
+      if (!seen.insert(p.name).second) err(p.loc, "parameter '" + p.name + "' is declared twice");
+      if (p.qualifier != Qualifier::None)
+        err(p.loc, "function parameters take no qualifier: they are copies of the arguments, uniform or varying as the call decides");
+      Var v;
+      v.name = p.name;
+      v.type = p.type;
+      v.loc = p.loc;
+      v.is_param = true;
+      v.writable = true;
+      declare(v);
+    }
+  }
+
+  static bool alwaysReturns(const std::vector<StmtPtr>& body) {
+    for (const StmtPtr& s : body) {
+      if (s->kind == StmtKind::Return) return true;
+      if (s->kind == StmtKind::Block && alwaysReturns(s->body)) return true;
+      if (s->kind == StmtKind::If && s->has_else && alwaysReturns(s->body) && alwaysReturns(s->else_body)) return true;
+    }
+    return false;
+  }
+
+  void unitParams(Unit& u) {
     std::set<std::string> seen;
     for (Param& p : u.params) {
       if (!seen.insert(p.name).second) {
@@ -89,24 +158,11 @@ class Analyzer {
       v.writable = false;
       declare(v);
     }
-    // Fixpoint of varying inference: assignments can make variables varying, which can make
-    // other assignments varying. Each pass re-types the whole body; at most one pass per variable.
-    for (int pass = 0; pass < 64; ++pass) {
-      changed_ = false;
-      reporting_ = false;
-      resetScopesForPass();
-      scoped(u.body);
-      if (!changed_) break;
-    }
-    reporting_ = true;
-    resetScopesForPass();
-    scoped(u.body);
-    if (!return_seen_in_interp_ && u.kind == UnitKind::Interpolator)
-      log_.error(u.loc, "interpolator '" + u.name + "' never reaches interpolator_return(value)");
   }
 
- private:
   DiagnosticLog& log_;
+  FunctionTable& functions_;
+  bool final_reporting_ = true;
   Unit* unit_ = nullptr;
   std::vector<std::map<std::string, int>> scopes_;
   std::vector<Var> vars_;
@@ -237,8 +293,19 @@ class Analyzer {
         break;
       }
       case StmtKind::Return:
-        if (unit_->kind == UnitKind::Interpolator)
+        if (unit_->kind == UnitKind::Interpolator) {
           err(s.loc, "an interpolator ends with interpolator_return(value), not 'return'");
+        } else if (unit_->kind == UnitKind::Primitive) {
+          if (s.value)
+            err(s.value->loc, "a primitive's 'return' takes no value (use interpolator_return to return a shading value)");
+        } else if (!s.value) {
+          err(s.loc, "function '" + unit_->name + "' must return a " + typeName(unit_->return_type));
+        } else {
+          expr(*s.value);
+          checkAssignable(unit_->return_type, *s.value, "return from '" + unit_->name + "'");
+          if (s.value->varying || varying_control_ > 0) returns_varying = true;
+          if (interp_depth_ > 0) err(s.loc, "'return' cannot leave an interpolation branch");
+        }
         break;
       case StmtKind::Bound:
         if (unit_->kind != UnitKind::Primitive) err(s.loc, "'bound' is only allowed in a primitive");
@@ -619,19 +686,103 @@ class Analyzer {
 
   void call(Expr& e) {
     for (ExprPtr& a : e.args) expr(*a);
-    typeBuiltinCall(e, unit_->kind, [this](SourceLoc loc, const std::string& msg) { err(loc, msg); });
+    auto f = functions_.units.find(e.name);
+    if (f == functions_.units.end()) {
+      typeBuiltinCall(e, unit_->kind, [this](SourceLoc loc, const std::string& msg) { err(loc, msg); });
+      return;
+    }
+    const Unit& fn = *f->second;
+    if (reporting_) functions_.calls[unit_->name].push_back({fn.name, e.loc});
+    e.type = fn.return_type;
+    e.varying = functions_.intrinsically_varying[fn.name];
+    if (e.args.size() != fn.params.size()) {
+      err(e.loc, "'" + fn.name + "' takes " + std::to_string(fn.params.size()) + " argument" +
+                     (fn.params.size() == 1 ? "" : "s") + ", not " + std::to_string(e.args.size()));
+      return;
+    }
+    for (size_t i = 0; i < e.args.size(); ++i) {
+      checkAssignable(fn.params[i].type, *e.args[i], "pass argument " + std::to_string(i + 1) + " to '" + fn.name + "'");
+      e.varying = e.varying || e.args[i]->varying;
+    }
   }
 };
 
 }  // namespace
 
+namespace {
+
+// Reports one call on every cycle of the call graph: functions are inlined, so they cannot
+// call themselves, directly or through others.
+void checkRecursion(const FunctionTable& t, DiagnosticLog& log) {
+  std::map<std::string, int> state;  // 0 unvisited, 1 on the stack, 2 done
+  std::vector<std::string> path;
+  std::function<void(const std::string&)> visit = [&](const std::string& f) {
+    state[f] = 1;
+    path.push_back(f);
+    auto it = t.calls.find(f);
+    if (it != t.calls.end()) {
+      for (const auto& [callee, loc] : it->second) {
+        if (!t.units.count(callee)) continue;
+        if (state[callee] == 1) {
+          std::string chain;
+          auto start = std::find(path.begin(), path.end(), callee);
+          for (auto p = start; p != path.end(); ++p) chain += *p + " -> ";
+          log.error(loc, "recursion is not allowed (functions are inlined): " + chain + callee);
+        } else if (state[callee] == 0) {
+          visit(callee);
+        }
+      }
+    }
+    path.pop_back();
+    state[f] = 2;
+  };
+  for (const auto& entry : t.units)
+    if (state[entry.first] == 0) visit(entry.first);
+}
+
+bool isBuiltinName(const std::string& name) {
+  Expr probe;
+  probe.kind = ExprKind::Call;
+  probe.name = name;
+  bool unknown = false;
+  typeBuiltinCall(probe, UnitKind::Primitive, [&](SourceLoc, const std::string& m) {
+    if (m.find("is not a built-in function") != std::string::npos) unknown = true;
+  });
+  return !unknown;
+}
+
+}  // namespace
+
 bool analyze(Program& program, DiagnosticLog& log) {
+  FunctionTable functions;
   std::set<std::string> names;
   for (Unit& u : program.units) {
     if (!names.insert(u.name).second) log.error(u.loc, "'" + u.name + "' is defined twice");
-    Analyzer a(log);
+    if (u.kind != UnitKind::Function) continue;
+    if (isBuiltinName(u.name)) log.error(u.loc, "'" + u.name + "' is the name of a built-in function");
+    functions.units[u.name] = &u;
+  }
+  // Which functions can return varying values for uniform arguments: to a fixpoint, since
+  // functions call each other.
+  for (size_t round = 0; round <= functions.units.size(); ++round) {
+    bool changed = false;
+    for (auto& [name, unit] : functions.units) {
+      DiagnosticLog quiet;
+      Analyzer a(quiet, functions, false);
+      a.unit(*unit);
+      if (a.returns_varying && !functions.intrinsically_varying[name]) {
+        functions.intrinsically_varying[name] = true;
+        changed = true;
+      }
+    }
+    if (!changed) break;
+  }
+  functions.calls.clear();
+  for (Unit& u : program.units) {
+    Analyzer a(log, functions);
     a.unit(u);
   }
+  checkRecursion(functions, log);
   return !log.hasErrors();
 }
 

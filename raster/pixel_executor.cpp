@@ -135,14 +135,16 @@ void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* reco
   };
   MaskFrame stack[kMaxMaskDepth];
   int depth = 0;
-  // Break / continue: the active lanes leave the innermost loop (and every if inside it).
-  auto leaveLoop = [&](uint64_t lanes, bool to_continue) {
+  // Break / continue: the active lanes leave the `levels` innermost loops (and every if inside
+  // them); a continue brings them back at the innermost loop's continue point.
+  auto leaveLoop = [&](uint64_t lanes, int levels, bool to_continue) {
     for (int f = depth - 1; f >= 0; --f) {
-      if (stack[f].loop) {
+      if (stack[f].loop && --levels == 0) {
         if (to_continue) stack[f].cond |= lanes;
         break;
       }
       stack[f].saved &= ~lanes;
+      if (stack[f].loop) stack[f].cond &= ~lanes;
     }
     cur &= ~lanes;
   };
@@ -199,8 +201,8 @@ void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* reco
         cur &= laneMaskOf(c, w);
         continue;
       }
-      case Op::Break: leaveLoop(exec, false); continue;
-      case Op::Continue: leaveLoop(exec, true); continue;
+      case Op::Break: leaveLoop(exec, ins.imm > 1 ? ins.imm : 1, false); continue;
+      case Op::Continue: leaveLoop(exec, 1, true); continue;
       case Op::LoopContinue:
         if (depth > 0) {
           cur |= stack[depth - 1].cond & alive;
