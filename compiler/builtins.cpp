@@ -1,13 +1,34 @@
-// Typing of built-in function calls (see builtins.h).
+// Typing of built-in function calls (see builtins.h). Their expansion into instructions is in
+// lower.cpp (call()); docs/language.md lists them.
 #include "compiler/builtins.h"
+
+#include <set>
 
 namespace pf {
 
 namespace {
+
 bool isNumericScalar(const Type& t) {
   return t.dims.empty() && (t.base == BaseType::Float || t.base == BaseType::Int);
 }
+bool isAggregate(const Type& t) { return t.isAggregate() && t.base != BaseType::InterpData; }
+// Types with an (x, y, z): points use their first three components.
+bool isSpatial(const Type& t) {
+  return t.dims.empty() && (t.base == BaseType::Point || t.base == BaseType::Vector || t.base == BaseType::Normal);
+}
+
 }  // namespace
+
+int componentwiseArity(const std::string& f) {
+  static const std::set<std::string> one = {"abs", "floor", "ceil", "fract", "sqrt", "sign", "sin",
+                                            "cos", "tan", "asin", "acos", "atan", "exp", "log"};
+  static const std::set<std::string> two = {"min", "max", "pow", "atan2", "mod", "step"};
+  static const std::set<std::string> three = {"clamp", "mix", "smoothstep"};
+  if (one.count(f)) return 1;
+  if (two.count(f)) return 2;
+  if (three.count(f)) return 3;
+  return 0;
+}
 
 void typeBuiltinCall(Expr& e, UnitKind unit, const std::function<void(SourceLoc, const std::string&)>& err) {
   bool any_void = false;
@@ -33,21 +54,67 @@ void typeBuiltinCall(Expr& e, UnitKind unit, const std::function<void(SourceLoc,
       }
     return true;
   };
-  if (f == "min" || f == "max") {
-    if (!arity(2, 2) || any_void || !needScalars()) return;
-    bool all_int = e.args[0]->type.base == BaseType::Int && e.args[1]->type.base == BaseType::Int;
-    e.type = Type::of(all_int ? BaseType::Int : BaseType::Float);
+  auto needSpatial = [&](size_t i) {
+    if (isSpatial(e.args[i]->type)) return true;
+    err(e.args[i]->loc, f + "() takes a point, vector or normal here, not " + typeName(e.args[i]->type));
+    return false;
+  };
+
+  if (int k = componentwiseArity(f)) {
+    // Scalars, or aggregates of one type with scalars broadcast to every component.
+    if (!arity(k, k) || any_void) return;
+    Type agg;
+    bool all_int = true;
+    for (ExprPtr& a : e.args) {
+      const Type& t = a->type;
+      if (isNumericScalar(t)) {
+        all_int = all_int && t.base == BaseType::Int;
+        continue;
+      }
+      if (!isAggregate(t) || (agg.base != BaseType::Void && t != agg)) {
+        err(a->loc, f + "() takes floats, or " + (agg.base != BaseType::Void ? typeName(agg) + "s" : std::string("vectors of one type")) +
+                        " with floats, not " + typeName(t));
+        return;
+      }
+      agg = t;
+      all_int = false;
+    }
+    bool int_ok = f == "min" || f == "max" || f == "abs";
+    e.type = agg.base != BaseType::Void ? agg : Type::of(all_int && int_ok ? BaseType::Int : BaseType::Float);
   } else if (f == "cross_sign") {
     if (!arity(4, 4) || any_void || !needScalars()) return;
     e.type = Type::of(BaseType::Float);
-  } else if (f == "clamp") {
-    if (!arity(3, 3) || any_void || !needScalars()) return;
+  } else if (f == "dot" || f == "distance") {
+    if (!arity(2, 2) || any_void || !needSpatial(0) || !needSpatial(1)) return;
     e.type = Type::of(BaseType::Float);
-  } else if (f == "abs") {
-    if (!arity(1, 1) || any_void || !needScalars()) return;
-    e.type = e.args[0]->type;
-  } else if (f == "floor" || f == "ceil" || f == "sqrt" || f == "sign") {
-    if (!arity(1, 1) || any_void || !needScalars()) return;
+  } else if (f == "cross") {
+    if (!arity(2, 2) || any_void || !needSpatial(0) || !needSpatial(1)) return;
+    e.type = Type::of(BaseType::Vector);
+  } else if (f == "length") {
+    if (!arity(1, 1) || any_void || !needSpatial(0)) return;
+    e.type = Type::of(BaseType::Float);
+  } else if (f == "normalize") {
+    if (!arity(1, 1) || any_void || !needSpatial(0)) return;
+    e.type = e.args[0]->type.base == BaseType::Normal ? Type::of(BaseType::Normal) : Type::of(BaseType::Vector);
+  } else if (f == "reflect") {
+    if (!arity(2, 2) || any_void || !needSpatial(0) || !needSpatial(1)) return;
+    e.type = Type::of(BaseType::Vector);
+  } else if (f == "refract") {
+    if (!arity(3, 3) || any_void || !needSpatial(0) || !needSpatial(1)) return;
+    if (!isNumericScalar(e.args[2]->type)) {
+      err(e.args[2]->loc, "refract()'s third argument is the ratio of refractive indices, a float");
+      return;
+    }
+    e.type = Type::of(BaseType::Vector);
+  } else if (f == "faceforward") {
+    if (!arity(3, 3) || any_void || !needSpatial(0) || !needSpatial(1) || !needSpatial(2)) return;
+    e.type = e.args[0]->type.base == BaseType::Normal ? Type::of(BaseType::Normal) : Type::of(BaseType::Vector);
+  } else if (f == "noise" || f == "snoise") {
+    if (!arity(1, 1) || any_void) return;
+    if (!isNumericScalar(e.args[0]->type) && !isSpatial(e.args[0]->type)) {
+      err(e.args[0]->loc, f + "() takes a float, point, vector or normal, not " + typeName(e.args[0]->type));
+      return;
+    }
     e.type = Type::of(BaseType::Float);
   } else if (f == "screen") {
     if (!arity(1, 1) || any_void) return;
@@ -74,12 +141,13 @@ void typeBuiltinCall(Expr& e, UnitKind unit, const std::function<void(SourceLoc,
     BaseType b = f == "point" ? BaseType::Point : f == "vector" ? BaseType::Vector
                  : f == "normal" ? BaseType::Normal : BaseType::Color;
     size_t comps = Type::componentsOf(b);
-    // point(x, y, z) has w = 1; color(r, g, b) has a = 1.
+    // point(x, y, z) has w = 1; color(r, g, b) has a = 1; one float fills a vector or colour.
     size_t lo = (b == BaseType::Point || b == BaseType::Color) ? 3 : comps;
+    if (n == 1 && b != BaseType::Point) lo = 1;
     if (!arity(lo, comps) || any_void || !needScalars()) return;
     e.type = Type::of(b);
   } else {
-    err(e.loc, "'" + f + "' is not a built-in function (user functions come with a later version of the language)");
+    err(e.loc, "'" + f + "' is not a built-in function (nor a function defined in this source)");
   }
 }
 

@@ -13,4 +13,7 @@ namespace pf {
 // error) and e.varying. Reports through `err`; an unknown name is an error.
 void typeBuiltinCall(Expr& e, UnitKind unit, const std::function<void(SourceLoc, const std::string&)>& err);
 
+// For the componentwise maths built-ins (sin, mix, clamp, ...): their argument count; else 0.
+int componentwiseArity(const std::string& name);
+
 }  // namespace pf

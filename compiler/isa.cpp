@@ -8,7 +8,8 @@ namespace pf {
 const char* opName(Op op) {
   static const char* names[] = {
       "fadd", "fsub", "fmul", "fdiv", "fmin", "fmax", "fneg", "fabs", "ffloor", "fceil", "fsqrt",
-      "fsign", "iadd", "isub", "imul", "idiv", "imod", "ineg", "imin", "imax", "iabs", "i2f",
+      "fsign", "fsin", "fcos", "ftan", "fasin", "facos", "fatan", "fatan2", "fpow", "fexp", "flog",
+      "fnoise", "iadd", "isub", "imul", "idiv", "imod", "ineg", "imin", "imax", "iabs", "i2f",
       "f2i", "flt", "fle", "feq", "fne", "ilt", "ile", "ieq", "ine", "band", "bor", "bnot", "sel", "cross_sign",
       "mov", "xadd", "xsub", "xneg", "xmulf", "xdivf", "xmov", "xloadvertex", "loadstate",
       "bound", "kill", "retire", "ztest", "interp_return", "interp_shared", "zcommit",

@@ -15,6 +15,8 @@ namespace pf {
 enum class Op : uint8_t {
   // float arithmetic
   FAdd, FSub, FMul, FDiv, FMin, FMax, FNeg, FAbs, FFloor, FCeil, FSqrt, FSign,
+  // float functions, as C's (NaN outside their domain); FNoise: improved Perlin noise of (a, b, c)
+  FSin, FCos, FTan, FAsin, FAcos, FAtan, FAtan2, FPow, FExp, FLog, FNoise,
   // int arithmetic (division and remainder by zero give 0: a masked-off lane must not trap)
   IAdd, ISub, IMul, IDiv, IMod, INeg, IMin, IMax, IAbs,
   I2F, F2I,

@@ -4,6 +4,8 @@
 // `return` contributes nothing to the merge: its pixels (or, when uniform, its instance) are gone.
 #include "compiler/lower.h"
 
+#include "compiler/builtins.h"
+
 #include <algorithm>
 #include <bit>
 #include <functional>
@@ -722,6 +724,80 @@ class Lowerer {
     return out;
   }
 
+  int fadd(int a, int b) { return emit(Op::FAdd, ValueClass::F32, false, a, b); }
+  int fsub(int a, int b) { return emit(Op::FSub, ValueClass::F32, false, a, b); }
+  int fmul(int a, int b) { return emit(Op::FMul, ValueClass::F32, false, a, b); }
+  Binding vec(const Type& t, std::vector<int> comps) {
+    Binding b;
+    b.type = t;
+    b.comps = std::move(comps);
+    return b;
+  }
+  // x*x' + y*y' + z*z' of two points, vectors or normals (a point's w is not part of it).
+  int dot3(const Binding& a, const Binding& b) {
+    int s = fmul(toFloat(a.comps[0]), toFloat(b.comps[0]));
+    for (int i = 1; i < 3; ++i) s = fadd(s, fmul(toFloat(a.comps[i]), toFloat(b.comps[i])));
+    return s;
+  }
+  Binding sub3(const Binding& a, const Binding& b) {
+    Binding d;
+    d.type = Type::of(BaseType::Vector);
+    for (int i = 0; i < 3; ++i) d.comps.push_back(fsub(toFloat(a.comps[i]), toFloat(b.comps[i])));
+    return d;
+  }
+
+  // Componentwise maths over scalars and aggregates (a scalar argument applies to every
+  // component). The result type was decided by sema.
+  Binding componentwise(const Expr& e, const std::vector<Binding>& args, int arity) {
+    const std::string& f = e.name;
+    bool ints = e.type.base == BaseType::Int;
+    int n = e.type.base == BaseType::Float || ints ? 1 : Type::componentsOf(e.type.base);
+    Binding out;
+    out.type = e.type;
+    for (int k = 0; k < n; ++k) {
+      int x[3];
+      for (int i = 0; i < arity; ++i) {
+        const std::vector<int>& c = args[static_cast<size_t>(i)].comps;
+        x[i] = c.size() == 1 ? c[0] : c[static_cast<size_t>(k)];
+        if (!ints) x[i] = toFloat(x[i]);
+      }
+      int r;
+      if (f == "abs") r = emit(ints ? Op::IAbs : Op::FAbs, ints ? ValueClass::I32 : ValueClass::F32, false, x[0]);
+      else if (f == "min") r = emit(ints ? Op::IMin : Op::FMin, ints ? ValueClass::I32 : ValueClass::F32, false, x[0], x[1]);
+      else if (f == "max") r = emit(ints ? Op::IMax : Op::FMax, ints ? ValueClass::I32 : ValueClass::F32, false, x[0], x[1]);
+      else if (f == "floor") r = emit(Op::FFloor, ValueClass::F32, false, x[0]);
+      else if (f == "ceil") r = emit(Op::FCeil, ValueClass::F32, false, x[0]);
+      else if (f == "fract") r = fsub(x[0], emit(Op::FFloor, ValueClass::F32, false, x[0]));
+      else if (f == "sqrt") r = emit(Op::FSqrt, ValueClass::F32, false, x[0]);
+      else if (f == "sign") r = emit(Op::FSign, ValueClass::F32, false, x[0]);
+      else if (f == "sin") r = emit(Op::FSin, ValueClass::F32, false, x[0]);
+      else if (f == "cos") r = emit(Op::FCos, ValueClass::F32, false, x[0]);
+      else if (f == "tan") r = emit(Op::FTan, ValueClass::F32, false, x[0]);
+      else if (f == "asin") r = emit(Op::FAsin, ValueClass::F32, false, x[0]);
+      else if (f == "acos") r = emit(Op::FAcos, ValueClass::F32, false, x[0]);
+      else if (f == "atan") r = emit(Op::FAtan, ValueClass::F32, false, x[0]);
+      else if (f == "exp") r = emit(Op::FExp, ValueClass::F32, false, x[0]);
+      else if (f == "log") r = emit(Op::FLog, ValueClass::F32, false, x[0]);
+      else if (f == "pow") r = emit(Op::FPow, ValueClass::F32, false, x[0], x[1]);
+      else if (f == "atan2") r = emit(Op::FAtan2, ValueClass::F32, false, x[0], x[1]);
+      else if (f == "mod") {  // x - y floor(x / y), as GLSL
+        r = fsub(x[0], fmul(x[1], emit(Op::FFloor, ValueClass::F32, false, emit(Op::FDiv, ValueClass::F32, false, x[0], x[1]))));
+      } else if (f == "step") {  // x < edge ? 0 : 1
+        r = emit(Op::Sel, ValueClass::F32, false, emit(Op::FLt, ValueClass::Bool, false, x[1], x[0]), constF(0.0f), constF(1.0f));
+      } else if (f == "clamp") {
+        r = emit(Op::FMin, ValueClass::F32, false, emit(Op::FMax, ValueClass::F32, false, x[0], x[1]), x[2]);
+      } else if (f == "mix") {  // a + (b - a) t
+        r = fadd(x[0], fmul(fsub(x[1], x[0]), x[2]));
+      } else {  // smoothstep(e0, e1, x): t = clamp((x - e0) / (e1 - e0)); t t (3 - 2 t)
+        int t = emit(Op::FDiv, ValueClass::F32, false, fsub(x[2], x[0]), fsub(x[1], x[0]));
+        t = emit(Op::FMin, ValueClass::F32, false, emit(Op::FMax, ValueClass::F32, false, t, constF(0.0f)), constF(1.0f));
+        r = fmul(fmul(t, t), fsub(constF(3.0f), fmul(constF(2.0f), t)));
+      }
+      out.comps.push_back(r);
+    }
+    return out;
+  }
+
   int state(StateValue s) { return emit(Op::LoadState, ValueClass::F32, false, -1, -1, -1, static_cast<int>(s)); }
 
   Binding call(const Expr& e) {
@@ -732,36 +808,78 @@ class Lowerer {
     for (const ExprPtr& a : e.args) args.push_back(expr(*a));
     auto arg = [&](size_t i) { return args[i].comps[0]; };
     auto farg = [&](size_t i) { return toFloat(args[i].comps[0]); };
-    bool int_result = e.type.base == BaseType::Int;
-    if (f == "min" || f == "max") {
-      Op o = int_result ? (f == "min" ? Op::IMin : Op::IMax) : (f == "min" ? Op::FMin : Op::FMax);
-      int x = int_result ? arg(0) : farg(0), y = int_result ? arg(1) : farg(1);
-      return scalar(e.type, emit(o, int_result ? ValueClass::I32 : ValueClass::F32, false, x, y));
-    }
+    if (int k = componentwiseArity(f)) return componentwise(e, args, k);
     if (f == "cross_sign") {
       // sign(a * d - b * c), exact: the robust orientation test for edges.
       Value v;
       v.cls = ValueClass::F32;
-      int dst = -1;
       int a0 = farg(0), a1 = farg(1), a2 = farg(2), a3 = farg(3);
       v.varying = isVarying(a0) || isVarying(a1) || isVarying(a2) || isVarying(a3);
-      dst = newValue(v);
+      int dst = newValue(v);
       IrNode n;
       n.inst = IrInst{Op::CrossSign, dst, a0, a1, a2, a3, 0, e.loc};
       blocks_.back()->push_back(std::move(n));
       return scalar(e.type, dst);
     }
-    if (f == "clamp") {
-      int lo = emit(Op::FMax, ValueClass::F32, false, farg(0), farg(1));
-      return scalar(e.type, emit(Op::FMin, ValueClass::F32, false, lo, farg(2)));
+    if (f == "dot") return scalar(e.type, dot3(args[0], args[1]));
+    if (f == "length") return scalar(e.type, emit(Op::FSqrt, ValueClass::F32, false, dot3(args[0], args[0])));
+    if (f == "distance") {
+      Binding d = sub3(args[0], args[1]);
+      return scalar(e.type, emit(Op::FSqrt, ValueClass::F32, false, dot3(d, d)));
     }
-    if (f == "abs")
-      return int_result ? scalar(e.type, emit(Op::IAbs, ValueClass::I32, false, arg(0)))
-                        : scalar(e.type, emit(Op::FAbs, ValueClass::F32, false, farg(0)));
-    if (f == "floor") return scalar(e.type, emit(Op::FFloor, ValueClass::F32, false, farg(0)));
-    if (f == "ceil") return scalar(e.type, emit(Op::FCeil, ValueClass::F32, false, farg(0)));
-    if (f == "sqrt") return scalar(e.type, emit(Op::FSqrt, ValueClass::F32, false, farg(0)));
-    if (f == "sign") return scalar(e.type, emit(Op::FSign, ValueClass::F32, false, farg(0)));
+    if (f == "cross") {
+      auto c = [&](int i) { return toFloat(args[0].comps[i]); };
+      auto d = [&](int i) { return toFloat(args[1].comps[i]); };
+      auto diff = [&](int a0, int b0, int a1, int b1) {
+        return fsub(fmul(c(a0), d(b0)), fmul(c(a1), d(b1)));
+      };
+      return vec(e.type, {diff(1, 2, 2, 1), diff(2, 0, 0, 2), diff(0, 1, 1, 0)});
+    }
+    if (f == "normalize") {
+      int inv = emit(Op::FDiv, ValueClass::F32, false, constF(1.0f),
+                     emit(Op::FSqrt, ValueClass::F32, false, dot3(args[0], args[0])));
+      std::vector<int> out;
+      for (int i = 0; i < 3; ++i) out.push_back(fmul(toFloat(args[0].comps[i]), inv));
+      return vec(e.type, out);
+    }
+    if (f == "reflect") {  // I - 2 dot(N, I) N
+      int k = fmul(constF(2.0f), dot3(args[1], args[0]));
+      std::vector<int> out;
+      for (int i = 0; i < 3; ++i) out.push_back(fsub(toFloat(args[0].comps[i]), fmul(k, toFloat(args[1].comps[i]))));
+      return vec(e.type, out);
+    }
+    if (f == "refract") {  // GLSL: 0 on total internal reflection
+      int eta = farg(2);
+      int ni = dot3(args[1], args[0]);
+      int k = fsub(constF(1.0f), fmul(fmul(eta, eta), fsub(constF(1.0f), fmul(ni, ni))));
+      int tir = emit(Op::FLt, ValueClass::Bool, false, k, constF(0.0f));
+      int m = fadd(fmul(eta, ni), emit(Op::FSqrt, ValueClass::F32, false, emit(Op::FMax, ValueClass::F32, false, k, constF(0.0f))));
+      std::vector<int> out;
+      for (int i = 0; i < 3; ++i) {
+        int r = fsub(fmul(eta, toFloat(args[0].comps[i])), fmul(m, toFloat(args[1].comps[i])));
+        out.push_back(emit(Op::Sel, ValueClass::F32, false, tir, constF(0.0f), r));
+      }
+      return vec(e.type, out);
+    }
+    if (f == "faceforward") {  // dot(Nref, I) < 0 ? N : -N
+      int front = emit(Op::FLt, ValueClass::Bool, false,
+                       dot3(args[2], args[1]), constF(0.0f));
+      std::vector<int> out;
+      for (int i = 0; i < 3; ++i) {
+        int n = toFloat(args[0].comps[i]);
+        out.push_back(emit(Op::Sel, ValueClass::F32, false, front, n, emit(Op::FNeg, ValueClass::F32, false, n)));
+      }
+      return vec(e.type, out);
+    }
+    if (f == "noise" || f == "snoise") {
+      const std::vector<int>& c = args[0].comps;
+      int x = toFloat(c[0]);
+      int y = c.size() > 1 ? toFloat(c[1]) : constF(0.0f);
+      int z = c.size() > 2 ? toFloat(c[2]) : constF(0.0f);
+      int v = emit(Op::FNoise, ValueClass::F32, false, x, y, z);
+      if (f == "noise") v = fadd(fmul(v, constF(0.5f)), constF(0.5f));  // [0, 1]
+      return scalar(e.type, v);
+    }
     if (f == "float") return scalar(e.type, farg(0));
     if (f == "int")
       return scalar(e.type, cls(arg(0)) == ValueClass::I32 ? arg(0) : emit(Op::F2I, ValueClass::I32, false, arg(0)));
@@ -791,8 +909,14 @@ class Lowerer {
     // constructors: point(x, y, z[, w]), vector(x, y, z), normal(x, y, z), color(r, g, b[, a])
     Binding out;
     out.type = e.type;
+    int comps = Type::componentsOf(e.type.base);
+    if (args.size() == 1 && e.type.base != BaseType::Point) {  // vector(f), color(g): broadcast
+      int v = farg(0);
+      for (int i = 0; i < comps; ++i) out.comps.push_back(e.type.base == BaseType::Color && i == 3 ? constF(1.0f) : v);
+      return out;
+    }
     for (size_t i = 0; i < args.size(); ++i) out.comps.push_back(farg(i));
-    while (static_cast<int>(out.comps.size()) < Type::componentsOf(e.type.base)) out.comps.push_back(constF(1.0f));
+    while (static_cast<int>(out.comps.size()) < comps) out.comps.push_back(constF(1.0f));
     return out;
   }
 };

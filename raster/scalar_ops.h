@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "compiler/isa.h"
+#include "raster/perlin_noise.h"
 
 namespace pf {
 
@@ -40,6 +41,17 @@ inline int32_t saturatingToInt(float f) {
     case Op::FCeil: return fromF(std::ceil(asF(a)));
     case Op::FSqrt: return fromF(std::sqrt(asF(a)));
     case Op::FSign: return fromF(asF(a) > 0 ? 1.0f : asF(a) < 0 ? -1.0f : 0.0f);
+    case Op::FSin: return fromF(std::sin(asF(a)));
+    case Op::FCos: return fromF(std::cos(asF(a)));
+    case Op::FTan: return fromF(std::tan(asF(a)));
+    case Op::FAsin: return fromF(std::asin(asF(a)));
+    case Op::FAcos: return fromF(std::acos(asF(a)));
+    case Op::FAtan: return fromF(std::atan(asF(a)));
+    case Op::FAtan2: return fromF(std::atan2(asF(a), asF(b)));
+    case Op::FPow: return fromF(std::pow(asF(a), asF(b)));
+    case Op::FExp: return fromF(std::exp(asF(a)));
+    case Op::FLog: return fromF(std::log(asF(a)));
+    case Op::FNoise: return fromF(perlinNoise(asF(a), asF(b), asF(c)));
     // Integer arithmetic wraps (two's complement); division by zero gives 0.
     case Op::IAdd: return a + b;
     case Op::ISub: return a - b;
