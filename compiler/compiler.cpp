@@ -4,12 +4,13 @@
 #include "compiler/ast_print.h"
 #include "compiler/lower.h"
 #include "compiler/parser.h"
+#include "compiler/passes.h"
 #include "compiler/sema.h"
 
 namespace pf {
 
 bool compileSource(const std::string& filename, const std::string& text, CompiledModule& out,
-                   DiagnosticLog& log, EmitStage emit, std::string* listing) {
+                   DiagnosticLog& log, EmitStage emit, std::string* listing, bool optimize_ir) {
   const SourceFile& file = log.addSource(filename, text);
   Program program = parse(file, log);
   if (log.hasErrors()) return false;
@@ -26,6 +27,10 @@ bool compileSource(const std::string& filename, const std::string& text, Compile
     }
     IrFunction ir;
     if (!lowerPrimitive(u, functions, ir, log)) return false;
+    std::vector<std::string> reasons;
+    if (optimize_ir) optimize(ir, emit == EmitStage::Explain ? &reasons : nullptr);
+    if (listing && emit == EmitStage::Explain)
+      for (const std::string& r : reasons) *listing += filename + ":" + r + "\n";
     CodegenResult code = generateCode(ir);
     auto prim = std::make_shared<CompiledPrimitive>();
     prim->name = u.name;

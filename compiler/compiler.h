@@ -35,12 +35,13 @@ struct CompiledModule {
 };
 
 // What pfc --emit can print.
-enum class EmitStage { None, Ast, Ir, Setup, Pixel };
+enum class EmitStage { None, Ast, Ir, Setup, Pixel, Explain };
 
 // Compiles `text` (named `filename` in diagnostics). On failure returns false; the log holds
 // every error. `listing`, when not null, receives the requested stage for each primitive.
+// `optimize` = false skips the passes of passes.h (pfc -O0), for comparison and debugging.
 bool compileSource(const std::string& filename, const std::string& text, CompiledModule& out,
                    DiagnosticLog& log, EmitStage emit = EmitStage::None,
-                   std::string* listing = nullptr);
+                   std::string* listing = nullptr, bool optimize = true);
 
 }  // namespace pf

@@ -4,9 +4,8 @@
 #include <cstring>
 
 namespace pf {
-namespace {
 
-std::string valueName(const IrFunction& f, int v) {
+std::string irValueName(const IrFunction& f, int v) {
   if (v < 0) return "";
   const Value& x = f.values[v];
   switch (x.origin) {
@@ -26,6 +25,10 @@ std::string valueName(const IrFunction& f, int v) {
   }
   return std::string(x.varying ? "v%" : "u%") + std::to_string(v);
 }
+
+namespace {
+
+std::string valueName(const IrFunction& f, int v) { return irValueName(f, v); }
 
 void dumpBlock(const IrFunction& f, const IrBlock& b, int depth, std::string& out) {
   std::string pad(static_cast<size_t>(depth) * 2 + 2, ' ');

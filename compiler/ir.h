@@ -72,5 +72,7 @@ struct IrFunction {
 };
 
 std::string dumpIr(const IrFunction& f);
+// A value as the dumps show it: u%N / v%N (uniform / varying), a constant, param[i], X, Y, Z.
+std::string irValueName(const IrFunction& f, int v);
 
 }  // namespace pf

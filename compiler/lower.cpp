@@ -143,6 +143,7 @@ class Lowerer {
   int varying_depth_ = 0;
   InterpKindSet interp_kinds_ = kAllInterpKinds;
   int z_initial_ = -1;
+  SourceLoc cur_loc_;
   std::map<std::pair<int, uint32_t>, int> constants_;
 
   int newValue(const Value& v) {
@@ -194,6 +195,7 @@ class Lowerer {
 
   int emit(Op op, ValueClass c, bool varying, int a, int b = -1, int cc = -1, int imm = 0,
            SourceLoc loc = {}) {
+    if (!loc.file) loc = cur_loc_;
     Value v;
     v.cls = c;
     v.varying = varying || isVarying(a) || isVarying(b) || isVarying(cc);
@@ -613,6 +615,14 @@ class Lowerer {
   }
 
   Binding expr(const Expr& e) {
+    SourceLoc saved = cur_loc_;
+    cur_loc_ = e.loc;  // instructions carry the expression they come from
+    Binding b = exprAt(e);
+    cur_loc_ = saved;
+    return b;
+  }
+
+  Binding exprAt(const Expr& e) {
     switch (e.kind) {
       case ExprKind::IntLit: return scalar(e.type, constI(static_cast<int32_t>(e.number)));
       case ExprKind::FloatLit: return scalar(e.type, constF(static_cast<float>(e.number)));

@@ -11,7 +11,7 @@
 #include <cstring>
 #include <utility>
 
-#include "raster/scalar_ops.h"
+#include "compiler/scalar_ops.h"
 
 namespace pf {
 namespace {

@@ -6,7 +6,7 @@
 #include <cstring>
 
 #include "raster/limits.h"
-#include "raster/scalar_ops.h"
+#include "compiler/scalar_ops.h"
 
 namespace pf {
 

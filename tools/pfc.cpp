@@ -15,8 +15,12 @@ int main(int argc, char** argv) {
   std::string file;
   std::string emit = "none";
   app.add_option("file", file, "source file (.pfl)")->required();
+  bool explain = false;
   app.add_option("--emit", emit, "print a stage: ast, ir, setup (per-instance program), pixel (per-block program)")
       ->check(CLI::IsMember({"none", "ast", "ir", "setup", "pixel"}));
+  app.add_flag("--explain", explain, "print why each optimization fired (folding, CSE, copies, dead code)");
+  bool no_opt = false;
+  app.add_flag("--no-optimize", no_opt, "skip the optimization passes (for comparison and debugging)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -32,10 +36,11 @@ int main(int argc, char** argv) {
   pf::EmitStage stage = emit == "ast" ? pf::EmitStage::Ast : emit == "ir" ? pf::EmitStage::Ir
                         : emit == "setup" ? pf::EmitStage::Setup : emit == "pixel" ? pf::EmitStage::Pixel
                                                                    : pf::EmitStage::None;
+  if (explain) stage = pf::EmitStage::Explain;
   pf::CompiledModule module;
   pf::DiagnosticLog log;
   std::string listing;
-  bool ok = pf::compileSource(file, ss.str(), module, log, stage, &listing);
+  bool ok = pf::compileSource(file, ss.str(), module, log, stage, &listing, !no_opt);
   std::cerr << log.format();
   if (!ok) return 1;
   std::cout << listing;

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "compile_helpers.h"
-#include "raster/perlin_noise.h"
+#include "compiler/perlin_noise.h"
 
 using namespace pf;
 using namespace pf::test;

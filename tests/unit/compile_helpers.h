@@ -22,10 +22,11 @@ struct Compiled {
   }
 };
 
-inline Compiled compile(const std::string& source, const std::string& name = "test.pfl") {
+inline Compiled compile(const std::string& source, const std::string& name = "test.pfl", bool optimize = true,
+                        std::string* explain = nullptr) {
   Compiled c;
   DiagnosticLog log;
-  c.ok = compileSource(name, source, c.module, log);
+  c.ok = compileSource(name, source, c.module, log, explain ? EmitStage::Explain : EmitStage::None, explain, optimize);
   c.diagnostics = log.format();
   return c;
 }

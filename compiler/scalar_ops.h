@@ -1,6 +1,7 @@
 // The arithmetic of one lane: the single definition of every value-producing instruction,
-// used by the scalar setup interpreter and, lane by lane, by the pixel executor, so the two
-// programs of a primitive can never disagree on what an operation means.
+// used by the constant folder (passes.cpp), by the scalar setup interpreter and, lane by lane,
+// by the pixel executor, so that folding and both programs can never disagree on what an
+// operation means.
 #pragma once
 
 #include <bit>
@@ -8,7 +9,7 @@
 #include <cstdint>
 
 #include "compiler/isa.h"
-#include "raster/perlin_noise.h"
+#include "compiler/perlin_noise.h"
 
 namespace pf {
 
