@@ -167,8 +167,15 @@ void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* reco
   };
 
   const size_t n = p.code.size();
+  uint64_t executed = 0;
+  struct CountOnExit {  // counted however the block ends
+    uint64_t& total;
+    uint64_t& n;
+    ~CountOnExit() { total += n; }
+  } count_on_exit{counters.instructions, executed};
   for (size_t pc = 0; pc < n;) {
     const Instr& ins = p.code[pc++];
+    ++executed;
     const uint64_t exec = alive & cur;
     switch (ins.op) {
       case Op::Jmp: pc = ins.a; continue;

@@ -27,6 +27,7 @@ struct BlockCounters {
   uint64_t blocks_run = 0;
   uint64_t lanes_started = 0;
   uint64_t lanes_committed = 0;
+  uint64_t instructions = 0;  // executed, once per block (each covers every lane)
   uint64_t iteration_cap_lanes = 0;  // lanes stopped by the iteration cap
   const CompiledPrimitive* cap_primitive = nullptr;  // the last primitive that hit it
 };

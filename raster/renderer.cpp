@@ -65,6 +65,7 @@ bool Renderer::submit(const CompiledPrimitive& prim, const uint32_t* params, con
   scene_.records.resize(offset + SetupExecutor::recordWords(prim, layout.count));
   SetupInput in{params, vertex_channels, &scene_.layouts.back(), &scene_.states.back()};
   SetupOutput out = setup_.run(prim, in, scene_.records.data() + offset);
+  stats_.setup_instructions += out.instructions;
   if (out.killed) {
     scene_.records.resize(offset);
     ++stats_.instances_killed;
@@ -187,6 +188,7 @@ void Renderer::flush() {
     stats_.blocks_run += s->executor.counters.blocks_run;
     stats_.lanes_started += s->executor.counters.lanes_started;
     stats_.lanes_committed += s->executor.counters.lanes_committed;
+    stats_.pixel_instructions += s->executor.counters.instructions;
     stats_.pixels_shaded += s->pixels_shaded;
     stats_.tiles_run += s->tiles_run;
     stats_.iteration_cap_pixels += s->executor.counters.iteration_cap_lanes;

@@ -30,6 +30,8 @@ struct FrameStats {
   uint64_t lanes_committed = 0;
   uint64_t pixels_shaded = 0;
   uint64_t gbuffer_bytes = 0;         // G-buffer planes allocated for the last frame
+  uint64_t setup_instructions = 0;    // executed by setup programs
+  uint64_t pixel_instructions = 0;    // executed by pixel programs, once per block
   uint64_t iteration_cap_pixels = 0;  // pixels stopped by the iteration cap
   uint64_t iteration_cap_instances = 0;  // instances stopped by it in setup
 };

@@ -57,6 +57,7 @@ SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& 
   for (size_t pc = 0; pc < n;) {
     const Instr& ins = p.code[pc];
     ++pc;
+    ++out.instructions;
     switch (ins.op) {
       case Op::Jmp: pc = ins.a; continue;
       case Op::JmpIfNot:

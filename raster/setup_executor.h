@@ -22,6 +22,7 @@ struct SetupOutput {
   bool killed = false;
   bool iteration_cap_hit = false;  // killed because a loop ran past the context's cap
   bool has_bound = false;
+  uint32_t instructions = 0;  // executed
   float bound[4] = {0, 0, 0, 0};  // xmin, ymin, xmax, ymax in window coordinates
 };
 

@@ -69,6 +69,10 @@ int main(int argc, char** argv) {
                 s.blocks_run ? 100.0 * s.lanes_started / (64.0 * s.blocks_run) : 0.0,
                 s.blocks_run ? 100.0 * s.lanes_committed / (64.0 * s.blocks_run) : 0.0);
     std::printf("pixels shaded      %llu\n", static_cast<unsigned long long>(s.pixels_shaded));
+    std::printf("instructions       %llu setup, %llu pixel (per 8x8 block): %.1f%% uniform setup\n",
+                static_cast<unsigned long long>(s.setup_instructions), static_cast<unsigned long long>(s.pixel_instructions),
+                s.setup_instructions + s.pixel_instructions
+                    ? 100.0 * s.setup_instructions / double(s.setup_instructions + s.pixel_instructions) : 0.0);
     std::printf("g-buffer bytes     %llu\n", static_cast<unsigned long long>(s.gbuffer_bytes));
   }
   std::string error;

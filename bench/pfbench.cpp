@@ -1,0 +1,104 @@
+// pfbench: primflow against OSMesa (llvmpipe) on the same GL scenes, in one process run.
+//   pfbench [--threads N] [--frames F] [--warmup W] [--scenes small,large,fill] [--csv FILE]
+// llvmpipe's thread count is LP_NUM_THREADS, read once per process: pfbench sets it to N before
+// OSMesa starts, so compare thread counts by running pfbench once per count (bench/run).
+// Times are medians of F frames after W warm-up frames, each frame ending in glFinish.
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include "bench/scene_data.h"
+
+namespace pfbench {
+
+SceneData makeScene(const std::string& name) {
+  SceneData s;
+  s.name = name;
+  std::mt19937 rng(12345);
+  std::uniform_real_distribution<float> u01(0.0f, 1.0f);
+  auto tri = [&](float cx, float cy, float r) {
+    float z = u01(rng) * 1.8f - 0.9f;
+    for (int k = 0; k < 3; ++k) {
+      float a = 6.2831853f * (k / 3.0f + 0.1f * u01(rng));
+      s.vertices.insert(s.vertices.end(), {cx + r * std::cos(a), cy + r * std::sin(a), z});
+      s.colors.insert(s.colors.end(), {u01(rng), u01(rng), u01(rng)});
+    }
+  };
+  if (name == "small") {
+    for (int i = 0; i < 200000; ++i) tri(u01(rng) * s.width, u01(rng) * s.height, 1.5f + u01(rng));
+  } else if (name == "large") {
+    for (int i = 0; i < 2000; ++i) tri(u01(rng) * s.width, u01(rng) * s.height, 150.0f + 150.0f * u01(rng));
+  } else {  // fill: 32 layers of two triangles covering the frame
+    for (int layer = 0; layer < 32; ++layer) {
+      float z = 0.9f - layer * 0.05f;
+      float w = static_cast<float>(s.width), h = static_cast<float>(s.height);
+      const float quad[6][2] = {{0, 0}, {w, 0}, {w, h}, {0, 0}, {w, h}, {0, h}};
+      for (const auto& p : quad) {
+        s.vertices.insert(s.vertices.end(), {p[0], p[1], z});
+        s.colors.insert(s.colors.end(), {u01(rng), u01(rng), u01(rng)});
+      }
+    }
+  }
+  return s;
+}
+
+}  // namespace pfbench
+
+namespace {
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"pfbench: primflow against OSMesa (llvmpipe) on the same GL scenes"};
+  int threads = 1, frames = 7, warmup = 2;
+  std::string scenes = "small,large,fill", csv;
+  app.add_option("--threads", threads, "rasterizer threads, for both (LP_NUM_THREADS for llvmpipe)")->check(CLI::Range(1, 64));
+  app.add_option("--frames", frames, "timed frames (median reported)")->check(CLI::Range(1, 1000));
+  app.add_option("--warmup", warmup, "frames before timing")->check(CLI::Range(0, 100));
+  app.add_option("--scenes", scenes, "comma-separated: small, large, fill");
+  app.add_option("--csv", csv, "append results to this CSV file");
+  CLI11_PARSE(app, argc, argv);
+  setenv("LP_NUM_THREADS", std::to_string(threads).c_str(), 1);  // before OSMesa starts
+
+  std::ostringstream rows;
+  std::printf("%-6s %7s %12s %12s %8s %12s %12s\n", "scene", "threads", "llvmpipe ms", "primflow ms", "ratio",
+              "ns/pixel run", "setup share");
+  std::stringstream list(scenes);
+  std::string name;
+  while (std::getline(list, name, ',')) {
+    if (name != "small" && name != "large" && name != "fill") {
+      std::fprintf(stderr, "pfbench: unknown scene '%s' (small, large, fill)\n", name.c_str());
+      return 2;
+    }
+    pfbench::SceneData s = pfbench::makeScene(name);
+    double ref = median(pfbench::timeOsmesa(s, warmup, frames));
+    pfbench::FrameWork w;
+    double ours = median(pfbench::timePrimflow(s, warmup, frames, threads, &w));
+    // Per pixel-program run, of the whole frame's time (setup and shading included).
+    double ns_per_pixel = w.pixels_run ? ours * 1e6 / static_cast<double>(w.pixels_run) : 0;
+    double share = w.setup_instructions + w.pixel_instructions
+                       ? 100.0 * w.setup_instructions / static_cast<double>(w.setup_instructions + w.pixel_instructions)
+                       : 0;
+    std::printf("%-6s %7d %12.2f %12.2f %8.2f %12.2f %11.1f%%\n", name.c_str(), threads, ref, ours,
+                ref > 0 ? ours / ref : 0, ns_per_pixel, share);
+    rows << name << "," << threads << "," << ref << "," << ours << "," << (ref > 0 ? ours / ref : 0) << ","
+         << w.pixels_run << "," << w.pixels_shaded << "," << w.setup_instructions << "," << w.pixel_instructions << "\n";
+  }
+  if (!csv.empty()) {
+    bool fresh = !std::ifstream(csv).good();
+    std::ofstream out(csv, std::ios::app);
+    if (fresh) out << "scene,threads,llvmpipe_ms,primflow_ms,ratio,pixels_run,pixels_shaded,setup_instructions,pixel_instructions\n";
+    out << rows.str();
+  }
+  return 0;
+}

@@ -1,0 +1,34 @@
+// Benchmark scenes: geometry generated deterministically (a fixed seed), shared by both sides.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace pfbench {
+
+struct SceneData {
+  std::string name;
+  int width = 1024, height = 1024;
+  std::vector<float> vertices;  // x, y, z per vertex, window coordinates (glOrtho onto pixels)
+  std::vector<float> colors;    // r, g, b per vertex
+};
+
+// "small": 200k small Gouraud triangles (about 3 pixels across), depth-tested.
+// "large": 2k large overlapping triangles (fill rate), depth-tested.
+// "fill":  64 triangles covering the frame 32 times (the per-pixel cost of the triangle program).
+SceneData makeScene(const std::string& name);
+
+// Renders `frames` frames after `warmup` ones; returns each frame's milliseconds.
+std::vector<double> timeOsmesa(const SceneData& s, int warmup, int frames);
+// The work primflow counted for one frame.
+struct FrameWork {
+  uint64_t pixels_run = 0;          // pixel-program runs (lanes started)
+  uint64_t pixels_shaded = 0;
+  uint64_t setup_instructions = 0;  // executed by setup programs
+  uint64_t pixel_instructions = 0;  // executed by pixel programs, once per 8x8 block
+};
+
+std::vector<double> timePrimflow(const SceneData& s, int warmup, int frames, int threads, FrameWork* work);
+
+}  // namespace pfbench
