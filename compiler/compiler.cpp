@@ -41,13 +41,15 @@ bool compileSource(const std::string& filename, const std::string& text, Compile
     prim->kinds_handled = ir.kinds_handled;
     prim->setup = std::move(code.setup);
     prim->pixel = std::move(code.pixel);
+    auto kept = std::make_shared<IrFunction>(std::move(ir));
     if (listing) {
-      if (emit == EmitStage::Ir) *listing += "primitive " + u.name + ":\n" + dumpIr(ir);
+      if (emit == EmitStage::Ir) *listing += "primitive " + u.name + ":\n" + dumpIr(*kept);
       if (emit == EmitStage::Setup)
         *listing += "primitive " + u.name + ": setup program (once per instance)\n" + disassemble(prim->setup, false);
       if (emit == EmitStage::Pixel)
         *listing += "primitive " + u.name + ": pixel program (per 8x8 block, masked)\n" + disassemble(prim->pixel, true);
     }
+    prim->ir = std::move(kept);
     out.primitives.push_back(std::move(prim));
   }
   return true;

@@ -21,6 +21,9 @@ struct CompiledPrimitive {
   InterpKindSet kinds_handled = 0;
   SetupProgram setup;
   PixelProgram pixel;
+  // The optimized IR both programs came from: what the tests' scalar reference interpreter
+  // runs, pixel by pixel, to check the split, the masks and the SIMD executor against.
+  std::shared_ptr<const IrFunction> ir;
 
   const ParamInfo* findParam(const std::string& n) const {
     for (const ParamInfo& p : params)

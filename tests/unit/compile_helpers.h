@@ -8,6 +8,9 @@
 #include "compiler/compiler.h"
 #include "raster/pixel_executor.h"
 #include "raster/setup_executor.h"
+#include "reference_interpreter.h"
+
+#include <gtest/gtest.h>
 
 namespace pf::test {
 
@@ -87,6 +90,24 @@ inline BlockRun runBlock(const CompiledPrimitive& prim, const std::vector<float>
   PixelExecutor ex;
   ex.runBlock(prim, record.data(), layout, st, 1, 0, 0, ~0ull, t);
   r.counters = ex.counters;
+  // The second execution mode: every lane again through the scalar reference interpreter of
+  // the IR, which must agree exactly with setup + SIMD pixel program.
+  if (prim.ir) {
+    for (int i = 0; i < 64; ++i) {
+      int x = i % 8, y = i / 8;
+      ReferencePixel ref = runReference(*prim.ir, p, vertex_channels, layout, st, x + 0.5f, y + 0.5f, initial_depth);
+      EXPECT_EQ(ref.drawn, r.drawn(x, y)) << "reference and SIMD disagree on coverage at lane " << i;
+      float want_depth = ref.drawn && ref.depth_written ? ref.depth : initial_depth;
+      EXPECT_EQ(std::bit_cast<uint32_t>(want_depth), std::bit_cast<uint32_t>(r.depth[i]))
+          << "reference and SIMD disagree on depth at lane " << i << ": " << want_depth << " vs " << r.depth[i];
+      if (ref.drawn) {
+        for (int ch = 0; ch < nch; ++ch) {
+          EXPECT_EQ(std::bit_cast<uint32_t>(ref.channels[ch]), std::bit_cast<uint32_t>(r.channel(ch, x, y)))
+              << "reference and SIMD disagree on channel " << ch << " at lane " << i;
+        }
+      }
+    }
+  }
   return r;
 }
 

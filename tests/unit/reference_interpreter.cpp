@@ -1,0 +1,188 @@
+// The scalar reference interpreter (see reference_interpreter.h).
+#include "reference_interpreter.h"
+
+#include <bit>
+
+#include "compiler/scalar_ops.h"
+
+namespace pf::test {
+namespace {
+
+enum class Flow { Normal, Break, Continue, Retire };
+
+struct Outcome {
+  Flow flow = Flow::Normal;
+  int levels = 0;  // Break: loops still to leave
+};
+
+class Interpreter {
+ public:
+  Interpreter(const IrFunction& f, const std::vector<uint32_t>& params, const std::vector<float>& vc,
+              const ChannelLayout& layout, const RasterState& st, float x, float y, float z)
+      : f_(f), params_(params), vc_(vc), layout_(layout), st_(st), x_(x), y_(y), z_(z),
+        scalar_(f.values.size(), 0u), interp_(f.values.size()) {
+    out_.channels.assign(static_cast<size_t>(layout.count), 0.0f);
+  }
+
+  ReferencePixel run() {
+    Outcome o = block(f_.body);
+    out_.drawn = o.flow != Flow::Retire;
+    if (!out_.drawn) {
+      out_.depth_written = false;
+      std::fill(out_.channels.begin(), out_.channels.end(), 0.0f);
+    }
+    return out_;
+  }
+
+ private:
+  const IrFunction& f_;
+  const std::vector<uint32_t>& params_;
+  const std::vector<float>& vc_;
+  const ChannelLayout& layout_;
+  const RasterState& st_;
+  float x_, y_, z_;
+  std::vector<uint32_t> scalar_;
+  std::vector<std::vector<float>> interp_;
+  ReferencePixel out_;
+
+  uint32_t get(int v) const {
+    if (v < 0) return 0;
+    const Value& val = f_.values[v];
+    switch (val.origin) {
+      case Value::Origin::Const: return val.bits;
+      case Value::Origin::Param: return params_[val.index];
+      case Value::Origin::Builtin:
+        return fromF(val.index == static_cast<int>(kRegX) ? x_ : val.index == static_cast<int>(kRegY) ? y_ : z_);
+      case Value::Origin::Temp: break;
+    }
+    return scalar_[v];
+  }
+  std::vector<float>& channels(int v) {
+    auto& c = interp_[v];
+    if (c.size() != static_cast<size_t>(layout_.count)) c.assign(static_cast<size_t>(layout_.count), 0.0f);
+    return c;
+  }
+  template <class Fn>
+  void forKinds(int set, Fn fn) {
+    for (int k = 0; k < kInterpKindCount; ++k)
+      if (set & (1 << k))
+        for (int c = layout_.kind_begin[k]; c < layout_.kind_end[k]; ++c) fn(c);
+  }
+  float state(int which) const {
+    switch (static_cast<StateValue>(which)) {
+      case StateValue::ViewportScaleX: return st_.vp_scale_x;
+      case StateValue::ViewportOffsetX: return st_.vp_offset_x;
+      case StateValue::ViewportScaleY: return st_.vp_scale_y;
+      case StateValue::ViewportOffsetY: return st_.vp_offset_y;
+      case StateValue::DepthScale: return st_.depth_scale;
+      case StateValue::DepthOffset: return st_.depth_offset;
+      case StateValue::DepthNear: return st_.depth_near;
+      case StateValue::DepthFar: return st_.depth_far;
+    }
+    return 0.0f;
+  }
+  bool depthPasses(float z) const {
+    if (!st_.depth_test) return true;
+    switch (st_.depth_func) {
+      case DepthFunc::Never: return false;
+      case DepthFunc::Less: return z < z_;
+      case DepthFunc::Equal: return z == z_;
+      case DepthFunc::LessEqual: return z <= z_;
+      case DepthFunc::Greater: return z > z_;
+      case DepthFunc::NotEqual: return z != z_;
+      case DepthFunc::GreaterEqual: return z >= z_;
+      case DepthFunc::Always: return true;
+    }
+    return false;
+  }
+
+  Outcome block(const IrBlock& b) {
+    for (const IrNode& n : b) {
+      Outcome o;
+      if (n.kind == IrNode::Kind::If) {
+        o = block(get(n.cond) ? *n.then_block : *n.else_block);
+      } else if (n.kind == IrNode::Kind::Loop) {
+        o = loop(n);
+      } else {
+        o = inst(n.inst);
+      }
+      if (o.flow != Flow::Normal) return o;
+    }
+    return {};
+  }
+
+  Outcome loop(const IrNode& n) {
+    for (uint32_t iterations = 0;;) {
+      Outcome c = block(*n.cond_block);
+      if (c.flow != Flow::Normal) return c;
+      if (!get(n.cond)) return {};
+      Outcome b = block(*n.body_block);
+      if (b.flow == Flow::Retire) return b;
+      if (b.flow == Flow::Break) return b.levels > 1 ? Outcome{Flow::Break, b.levels - 1} : Outcome{};
+      Outcome s = block(*n.step_block);
+      if (s.flow == Flow::Retire) return s;
+      if (++iterations >= st_.iteration_cap) {  // as the executors: the pixel stops
+        out_.iteration_cap_hit = true;
+        return {Flow::Retire, 0};
+      }
+    }
+  }
+
+  Outcome inst(const IrInst& in) {
+    switch (in.op) {
+      case Op::Retire: return {Flow::Retire, 0};
+      case Op::Break: return {Flow::Break, in.imm > 1 ? in.imm : 1};
+      case Op::Continue: return {Flow::Continue, 1};
+      case Op::Bound: case Op::Kill: case Op::InterpShared: return {};
+      case Op::ZCommit:
+        if (st_.depth_test && st_.depth_write) {
+          out_.depth_written = true;
+          out_.depth = asF(get(in.a));
+        }
+        return {};
+      case Op::InterpReturn: {
+        const std::vector<float>& v = channels(in.a);
+        forKinds(in.imm, [&](int c) { out_.channels[c] = v[c]; });
+        return {};
+      }
+      case Op::ZTest: scalar_[in.dst] = depthPasses(asF(get(in.a))) ? 1u : 0u; return {};
+      case Op::LoadState: scalar_[in.dst] = fromF(state(in.imm)); return {};
+      case Op::XLoadVertex: {
+        std::vector<float>& d = channels(in.dst);
+        for (int c = 0; c < layout_.count; ++c) d[c] = vc_[static_cast<size_t>(in.imm) * layout_.count + c];
+        return {};
+      }
+      case Op::XAdd: case Op::XSub: case Op::XMulF: case Op::XDivF: case Op::XNeg: case Op::XMov: {
+        std::vector<float> a = channels(in.a);
+        std::vector<float> b = in.b >= 0 && (in.op == Op::XAdd || in.op == Op::XSub) ? channels(in.b) : std::vector<float>();
+        float k = in.op == Op::XMulF || in.op == Op::XDivF ? asF(get(in.b)) : 0.0f;
+        std::vector<float>& d = channels(in.dst);
+        forKinds(in.imm, [&](int c) {
+          switch (in.op) {
+            case Op::XAdd: d[c] = a[c] + b[c]; break;
+            case Op::XSub: d[c] = a[c] - b[c]; break;
+            case Op::XMulF: d[c] = a[c] * k; break;
+            case Op::XDivF: d[c] = a[c] / k; break;
+            case Op::XNeg: d[c] = -a[c]; break;
+            default: d[c] = a[c];
+          }
+        });
+        return {};
+      }
+      default:
+        scalar_[in.dst] = evalScalar(in.op, get(in.a), get(in.b), get(in.c), get(in.d));
+        return {};
+    }
+  }
+};
+
+}  // namespace
+
+ReferencePixel runReference(const IrFunction& f, const std::vector<uint32_t>& params,
+                            const std::vector<float>& vertex_channels, const ChannelLayout& layout,
+                            const RasterState& state, float x, float y, float depth_in) {
+  Interpreter in(f, params, vertex_channels, layout, state, x, y, depth_in);
+  return in.run();
+}
+
+}  // namespace pf::test
