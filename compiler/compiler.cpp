@@ -1,7 +1,10 @@
 // The compiler driver: lex -> parse -> analyze -> lower -> generate, per primitive.
 #include "compiler/compiler.h"
 
+#include <set>
+
 #include "compiler/ast_print.h"
+#include "compiler/embedded_primitives.h"
 #include "compiler/lower.h"
 #include "compiler/parser.h"
 #include "compiler/passes.h"
@@ -14,7 +17,31 @@ bool compileSource(const std::string& filename, const std::string& text, Compile
   const SourceFile& file = log.addSource(filename, text);
   Program program = parse(file, log);
   if (log.hasErrors()) return false;
-  if (emit == EmitStage::Ast && listing) *listing += printAst(program);
+  // The standard library's functions come first; a user's function of the same name is an
+  // error that names it as the library's.
+  std::set<std::string> library_names;
+  for (int i = 0; i < kStandardLibraryCount; ++i) {
+    const SourceFile& lib = log.addSource(std::string("<stdlib>/") + kStandardLibrary[i].file_name, kStandardLibrary[i].text);
+    Program p = parse(lib, log);
+    for (Unit& u : p.units) {
+      library_names.insert(u.name);
+      program.units.insert(program.units.begin(), std::move(u));
+    }
+  }
+  for (const Unit& u : program.units)
+    if (u.loc.file == &file && library_names.count(u.name)) {
+      log.error(u.loc, "'" + u.name + "' is a function of the standard library (choose another name)");
+      return false;
+    }
+  if (log.hasErrors()) return false;
+  if (emit == EmitStage::Ast && listing) {
+    // The listing shows the source's own units, not the standard library's.
+    Program own, library;
+    for (Unit& u : program.units) (u.loc.file == &file ? own : library).units.push_back(std::move(u));
+    *listing += printAst(own);
+    program.units = std::move(library.units);
+    for (Unit& u : own.units) program.units.push_back(std::move(u));
+  }
   if (!analyze(program, log)) return false;
   std::map<std::string, const Unit*> functions;
   for (const Unit& u : program.units)

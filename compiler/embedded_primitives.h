@@ -12,4 +12,8 @@ struct EmbeddedSource {
 extern const EmbeddedSource kEmbeddedPrimitives[];
 extern const int kEmbeddedPrimitiveCount;
 
+// The language's standard library (compiler/stdlib.pfl), part of every compilation.
+extern const EmbeddedSource kStandardLibrary[];
+extern const int kStandardLibraryCount;
+
 }  // namespace pf

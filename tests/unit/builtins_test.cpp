@@ -146,3 +146,24 @@ TEST(Builtins, CrossSignIsExactWhereFloatArithmeticIsNot) {
                                        "(" + a + " * " + a + " - 1.0 * " + c + ") * 100.0");
   for (int i = 0; i < 64; ++i) EXPECT_FLOAT_EQ(got[i], 11.0f) << "lane " << i;  // float difference: 0
 }
+
+TEST(Builtins, StandardLibraryFbmAndTurbulence) {
+  // Written in the language (compiler/stdlib.pfl); checked against the same sums in C++.
+  std::vector<float> got = evalPerLane("  point q = point(X * 0.21, Y * 0.17, 0.5);",
+                                       "fbm(q, 4) * 100.0 + turbulence(q, 3)");
+  for (int i = 0; i < 64; ++i) {
+    float qx = laneX(i) * 0.21f, qy = laneY(i) * 0.17f, qz = 0.5f;
+    float f = 0.0f, t = 0.0f, amp = 0.5f, freq = 1.0f;
+    for (int k = 0; k < 4; ++k) {
+      f += amp * perlinNoise(qx * freq, qy * freq, qz * freq);
+      if (k < 3) t += amp * std::fabs(perlinNoise(qx * freq, qy * freq, qz * freq));
+      freq *= 2.0f;
+      amp *= 0.5f;
+    }
+    EXPECT_NEAR(got[i], f * 2.0f * 100.0f + t, 1e-4f) << "lane " << i;
+  }
+  auto c = compile("float fbm(point p, int n) { return 0.0; }\nprimitive p() { }\n");
+  ASSERT_FALSE(c.ok);
+  EXPECT_NE(c.diagnostics.find("test.pfl:1:1: error: 'fbm' is a function of the standard library"), std::string::npos)
+      << c.diagnostics;
+}
