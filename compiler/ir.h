@@ -71,6 +71,23 @@ struct IrFunction {
   InterpKindSet kinds_handled = 0;  // labels of its interpolation construct
 };
 
+// Calls fn(inst) for every instruction of `b`, nested ifs and loops included, in program order.
+template <class Fn>
+void forEachInst(const IrBlock& b, Fn&& fn) {
+  for (const IrNode& n : b) {
+    if (n.kind == IrNode::Kind::If) {
+      forEachInst(*n.then_block, fn);
+      forEachInst(*n.else_block, fn);
+    } else if (n.kind == IrNode::Kind::Loop) {
+      forEachInst(*n.cond_block, fn);
+      forEachInst(*n.body_block, fn);
+      forEachInst(*n.step_block, fn);
+    } else {
+      fn(n.inst);
+    }
+  }
+}
+
 std::string dumpIr(const IrFunction& f);
 // A value as the dumps show it: u%N / v%N (uniform / varying), a constant, param[i], X, Y, Z.
 std::string irValueName(const IrFunction& f, int v);

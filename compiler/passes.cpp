@@ -63,18 +63,9 @@ class Optimizer {
   std::map<std::pair<int, uint32_t>, int> constants_;
 
   void countDefs(const IrBlock& b) {
-    for (const IrNode& n : b) {
-      if (n.kind == IrNode::Kind::If) {
-        countDefs(*n.then_block);
-        countDefs(*n.else_block);
-      } else if (n.kind == IrNode::Kind::Loop) {
-        countDefs(*n.cond_block);
-        countDefs(*n.body_block);
-        countDefs(*n.step_block);
-      } else if (n.inst.dst >= 0) {
-        ++defs_[n.inst.dst];
-      }
-    }
+    forEachInst(b, [&](const IrInst& in) {
+      if (in.dst >= 0) ++defs_[in.dst];
+    });
   }
 
   int resolve(int v) {
@@ -201,18 +192,9 @@ class Optimizer {
   std::map<int, std::vector<const IrInst*>> def_insts_;
 
   void collectDefs(const IrBlock& b) {
-    for (const IrNode& n : b) {
-      if (n.kind == IrNode::Kind::If) {
-        collectDefs(*n.then_block);
-        collectDefs(*n.else_block);
-      } else if (n.kind == IrNode::Kind::Loop) {
-        collectDefs(*n.cond_block);
-        collectDefs(*n.body_block);
-        collectDefs(*n.step_block);
-      } else if (n.inst.dst >= 0) {
-        def_insts_[n.inst.dst].push_back(&n.inst);
-      }
-    }
+    forEachInst(b, [&](const IrInst& in) {
+      if (in.dst >= 0) def_insts_[in.dst].push_back(&in);
+    });
   }
 
   void roots(const IrBlock& b, std::vector<int>& work) {

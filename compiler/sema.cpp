@@ -109,14 +109,19 @@ class Analyzer {
       if (!seen.insert(p.name).second) err(p.loc, "parameter '" + p.name + "' is declared twice");
       if (p.qualifier != Qualifier::None)
         err(p.loc, "function parameters take no qualifier: they are copies of the arguments, uniform or varying as the call decides");
-      Var v;
-      v.name = p.name;
-      v.type = p.type;
-      v.loc = p.loc;
-      v.is_param = true;
-      v.writable = true;
-      declare(v);
+      declareParam(p, true);
     }
+  }
+
+  void declareParam(const Param& p, bool writable) {
+    Var v;
+    v.name = p.name;
+    v.type = p.type;
+    v.qualifier = writable ? Qualifier::None : p.qualifier;
+    v.loc = p.loc;
+    v.is_param = true;
+    v.writable = writable;
+    declare(v);
   }
 
   static bool alwaysReturns(const std::vector<StmtPtr>& body) {
@@ -149,14 +154,7 @@ class Analyzer {
       if (u.kind == UnitKind::Primitive && p.type.base == BaseType::InterpData &&
           p.type.dims.size() != 1)
         log_.error(p.loc, "an interpolator_data parameter is indexed by sequence point: declare it with one dimension, e.g. 'interpolator_data " + p.name + "[3]'");
-      Var v;
-      v.name = p.name;
-      v.type = p.type;
-      v.qualifier = p.qualifier;
-      v.loc = p.loc;
-      v.is_param = true;
-      v.writable = false;
-      declare(v);
+      declareParam(p, false);
     }
   }
 
