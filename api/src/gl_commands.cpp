@@ -204,6 +204,27 @@ void pfglViewport(GLint x, GLint y, GLsizei width, GLsizei height) {
   ctx->viewport[3] = height > pf::kMaxFramebufferSize ? pf::kMaxFramebufferSize : height;
 }
 
+void pfglDepthFunc(GLenum func) {
+  PFcontextRec* ctx = outsideBegin();
+  if (!ctx) return;
+  if (func < GL_NEVER || func > GL_ALWAYS) {
+    ctx->setError(GL_INVALID_ENUM);
+    return;
+  }
+  ctx->depth_func = func;
+}
+
+void pfglDepthMask(GLboolean flag) {
+  if (PFcontextRec* ctx = outsideBegin()) ctx->depth_write = flag != GL_FALSE;
+}
+
+void pfglDepthRange(GLclampd zNear, GLclampd zFar) {
+  PFcontextRec* ctx = outsideBegin();
+  if (!ctx) return;
+  ctx->depth_range[0] = clamp01(zNear);
+  ctx->depth_range[1] = clamp01(zFar);
+}
+
 void pfglEnable(GLenum cap) {
   PFcontextRec* ctx = outsideBegin();
   if (!ctx) return;

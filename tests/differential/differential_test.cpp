@@ -32,6 +32,16 @@ const char* sceneName(Scene s) {
     case Scene::DepthFarThenNear: return "DepthFarThenNear";
     case Scene::DepthNearThenFar: return "DepthNearThenFar";
     case Scene::Showcase: return "Showcase";
+    case Scene::DepthNever: return "DepthNever";
+    case Scene::DepthLess: return "DepthLess";
+    case Scene::DepthEqual: return "DepthEqual";
+    case Scene::DepthLequal: return "DepthLequal";
+    case Scene::DepthGreater: return "DepthGreater";
+    case Scene::DepthNotequal: return "DepthNotequal";
+    case Scene::DepthGequal: return "DepthGequal";
+    case Scene::DepthAlways: return "DepthAlways";
+    case Scene::DepthMaskOff: return "DepthMaskOff";
+    case Scene::DepthRangeNarrow: return "DepthRangeNarrow";
   }
   return "?";
 }
@@ -266,7 +276,10 @@ TEST(Differential, DepthOrderDoesNotMatter) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Orders, DifferentialDepth,
-                         ::testing::Values(Scene::DepthFarThenNear, Scene::DepthNearThenFar),
+                         ::testing::Values(Scene::DepthFarThenNear, Scene::DepthNearThenFar, Scene::DepthNever,
+                                           Scene::DepthLess, Scene::DepthEqual, Scene::DepthLequal,
+                                           Scene::DepthGreater, Scene::DepthNotequal, Scene::DepthGequal,
+                                           Scene::DepthAlways, Scene::DepthMaskOff, Scene::DepthRangeNarrow),
                          [](const ::testing::TestParamInfo<Scene>& info) { return sceneName(info.param); });
 
 class DifferentialThreads : public ::testing::TestWithParam<Scene> {};

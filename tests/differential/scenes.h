@@ -15,6 +15,10 @@ enum class Scene : int {
   DepthFarThenNear,  // three overlapping triangles at different depths, drawn far to near
   DepthNearThenFar,  // the same, drawn near to far
   Showcase,          // pfrender's showcase (tools/showcase_scene.inc): perspective, depth, Gouraud
+  // The depth scene far to near with depth cleared to 0.5 and each glDepthFunc:
+  DepthNever, DepthLess, DepthEqual, DepthLequal, DepthGreater, DepthNotequal, DepthGequal, DepthAlways,
+  DepthMaskOff,      // the far triangle with depth writes on, the others with glDepthMask(GL_FALSE)
+  DepthRangeNarrow,  // glDepthRange(0.2, 0.6), far to near
 };
 
 constexpr int kSize = 256;  // the scenes are drawn at 256 x 256, glOrtho(0, 256, 0, 256, -1, 1)

@@ -15,6 +15,9 @@
 #define glClearColor pfglClearColor
 #define glClearDepth pfglClearDepth
 #define glViewport pfglViewport
+#define glDepthFunc pfglDepthFunc
+#define glDepthMask pfglDepthMask
+#define glDepthRange pfglDepthRange
 #define glEnable pfglEnable
 #define glDisable pfglDisable
 #define glIsEnabled pfglIsEnabled
