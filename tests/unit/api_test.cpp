@@ -82,7 +82,7 @@ TEST(Api, ErrorsFollowGL) {
   EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_INVALID_ENUM));
   pfglClear(0x80000000u);
   EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_INVALID_VALUE));
-  pfglDepthFunc(GL_LESS - 1);
+  pfglDepthFunc(GL_NEVER - 1);
   EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_INVALID_ENUM));
   pfglDepthFunc(GL_ALWAYS + 1);
   EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_INVALID_ENUM));
