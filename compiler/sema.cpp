@@ -180,7 +180,6 @@ class Analyzer {
   std::vector<LoopFrame> loops_;
   bool return_seen_in_interp_ = false;
   size_t builtin_count_ = 0;
-  size_t param_count_ = 0;
 
   void err(SourceLoc loc, const std::string& msg) {
     if (reporting_) log_.error(loc, msg);
