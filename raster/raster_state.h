@@ -35,6 +35,17 @@ struct ChannelLayout {
   int kind_end[kInterpKindCount] = {0, 0, 0};
   std::vector<int> gbuffer_slot;  // per channel
 
+  // `count` channels, all of interpolation kind `kind`, in G-buffer slots 0 .. count - 1.
+  static ChannelLayout ofKind(int count, InterpKind kind) {
+    ChannelLayout l;
+    l.count = count;
+    int k = static_cast<int>(kind);
+    for (int i = 0; i < kInterpKindCount; ++i) l.kind_begin[i] = l.kind_end[i] = i < k ? 0 : count;
+    l.kind_begin[k] = 0;
+    for (int i = 0; i < count; ++i) l.gbuffer_slot.push_back(i);
+    return l;
+  }
+
   bool operator==(const ChannelLayout&) const = default;
 };
 

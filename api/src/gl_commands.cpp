@@ -55,13 +55,7 @@ void submitInstances(PFcontextRec& ctx) {
   // The colour is the one per-vertex shading parameter so far: 4 channels, interpolated
   // perspective-correct (GL's default), in G-buffer slots 0-3.
   pf::ChannelLayout layout;
-  if (prim.has_interp_data) {
-    layout.count = 4;
-    layout.kind_begin[0] = 0;
-    layout.kind_end[0] = 4;
-    for (int k = 1; k < pf::kInterpKindCount; ++k) layout.kind_begin[k] = layout.kind_end[k] = 4;
-    layout.gbuffer_slot = {0, 1, 2, 3};
-  }
+  if (prim.has_interp_data) layout = pf::ChannelLayout::ofKind(4, pf::InterpKind::PerspectiveLinear);
   pf::ShadeState shade;
   if (prim.has_interp_data) {
     shade.color_slot = 0;

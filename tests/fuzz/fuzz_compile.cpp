@@ -33,12 +33,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (!pf::compileSource("fuzz.pfl", text, module, log)) return 0;
 
   // Run each primitive once, with small parameter values taken from the input.
-  pf::ChannelLayout layout;
-  layout.count = 4;
-  layout.kind_begin[0] = 0;
-  layout.kind_end[0] = 4;
-  for (int k = 1; k < pf::kInterpKindCount; ++k) layout.kind_begin[k] = layout.kind_end[k] = 4;
-  layout.gbuffer_slot = {0, 1, 2, 3};
+  const pf::ChannelLayout layout = pf::ChannelLayout::ofKind(4, pf::InterpKind::PerspectiveLinear);
   pf::RasterState state;
   state.vp_scale_x = state.vp_offset_x = state.vp_scale_y = state.vp_offset_y = 4.0f;
   state.vp_x1 = state.vp_y1 = 8;

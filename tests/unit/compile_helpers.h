@@ -57,14 +57,7 @@ inline BlockRun runBlock(const CompiledPrimitive& prim, const std::vector<float>
   std::fill(r.depth.begin(), r.depth.end(), initial_depth);
   std::vector<uint32_t> p(params.size());
   for (size_t i = 0; i < params.size(); ++i) p[i] = f2u(params[i]);
-  ChannelLayout layout;
-  layout.count = nch;
-  int k = static_cast<int>(kind);
-  for (int i = 0; i < kInterpKindCount; ++i) layout.kind_begin[i] = layout.kind_end[i] = i <= k ? 0 : nch;
-  layout.kind_begin[k] = 0;
-  layout.kind_end[k] = nch;
-  for (int i = k + 1; i < kInterpKindCount; ++i) layout.kind_begin[i] = layout.kind_end[i] = nch;
-  for (int i = 0; i < nch; ++i) layout.gbuffer_slot.push_back(i);
+  ChannelLayout layout = ChannelLayout::ofKind(nch, kind);
   RasterState st;
   st.vp_scale_x = 4;
   st.vp_offset_x = 4;
