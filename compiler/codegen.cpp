@@ -8,6 +8,12 @@
 namespace pf {
 namespace {
 
+// The effects of calling another primitive: setup's, in program order.
+bool isCallEffect(Op op) { return op == Op::OutParam || op == Op::OutVertex || op == Op::Emit; }
+
+// Reads of the instance's parameters at run-time indices: only setup has the parameters.
+bool isSetupOnlyLoad(Op op) { return op == Op::LoadParamAt || op == Op::XLoadVertexAt; }
+
 bool isPixelEffect(Op op) {
   return op == Op::Retire || op == Op::ZTest || op == Op::InterpReturn || op == Op::InterpShared ||
          op == Op::ZCommit;
@@ -93,7 +99,8 @@ class Generator {
       if (in.dst >= 0) defs_[in.dst].push_back({&in, conds});
       bool pixel = (in.dst >= 0 && pixelValue(in.dst)) || isPixelEffect(in.op);
       if (pixel) pixel_roots_.push_back({&in, conds});
-      if (in.op == Op::Bound || in.op == Op::Retire || in.op == Op::Break || in.op == Op::Continue)
+      if (in.op == Op::Bound || in.op == Op::Retire || in.op == Op::Break || in.op == Op::Continue ||
+          isCallEffect(in.op))
         roots_.push_back({&in, conds});
     }
   }
@@ -190,7 +197,7 @@ class Generator {
         continue;
       }
       const IrInst& in = n.inst;
-      if (in.op == Op::Bound || (in.op == Op::Retire && varying_depth == 0)) return true;
+      if (in.op == Op::Bound || (in.op == Op::Retire && varying_depth == 0) || isCallEffect(in.op)) return true;
       if (in.dst >= 0 && needed_.count(in.dst)) return true;
     }
     return false;
@@ -260,6 +267,8 @@ class Generator {
       if (in.op == Op::Bound) {
         Instr out{Op::Bound, 0, setupOperand(in.d), setupOperand(in.a), setupOperand(in.b), setupOperand(in.c)};
         setup_.code.push_back(out);
+      } else if (isCallEffect(in.op)) {
+        setup_.code.push_back(Instr{in.op, static_cast<uint16_t>(in.imm), kNoOperand, setupOperand(in.a)});
       } else if (in.op == Op::Retire) {
         if (varying_depth == 0) setup_.code.push_back(Instr{Op::Kill});
       } else if (in.op == Op::Break || in.op == Op::Continue) {
@@ -419,6 +428,12 @@ class Generator {
       }
       const IrInst& in = n.inst;
       if (!pixelInst(in, varying_depth, in_loop)) continue;
+      if (isSetupOnlyLoad(in.op)) {
+        result_.errors.push_back({in.loc, "this reads a parameter-sized array inside a loop that runs per pixel, "
+                                          "where the instance's parameters are not at hand: read it into a local "
+                                          "array before the loop"});
+        continue;
+      }
       Instr out{in.op, static_cast<uint16_t>(in.imm), pixelOperand(in.dst), pixelOperand(in.a),
                 pixelOperand(in.b), pixelOperand(in.c), pixelOperand(in.d)};
       pixel_.code.push_back(out);

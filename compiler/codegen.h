@@ -7,6 +7,10 @@
 //          from one of its iterations to the next are computed there too.
 #pragma once
 
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "compiler/ir.h"
 
 namespace pf {
@@ -14,6 +18,8 @@ namespace pf {
 struct CodegenResult {
   SetupProgram setup;
   PixelProgram pixel;
+  // What the two programs cannot express (a parameter-sized array read per pixel).
+  std::vector<std::pair<SourceLoc, std::string>> errors;
 };
 
 CodegenResult generateCode(const IrFunction& f);

@@ -1,6 +1,7 @@
 // The compiler driver: lex -> parse -> analyze -> lower -> generate, per primitive.
 #include "compiler/compiler.h"
 
+#include <algorithm>
 #include <set>
 
 #include "compiler/ast_print.h"
@@ -13,7 +14,8 @@
 namespace pf {
 
 bool compileSource(const std::string& filename, const std::string& text, CompiledModule& out,
-                   DiagnosticLog& log, EmitStage emit, std::string* listing, bool optimize_ir) {
+                   DiagnosticLog& log, EmitStage emit, std::string* listing, bool optimize_ir,
+                   const PrimitiveTable* callable) {
   const SourceFile& file = log.addSource(filename, text);
   Program program = parse(file, log);
   if (log.hasErrors()) return false;
@@ -42,7 +44,13 @@ bool compileSource(const std::string& filename, const std::string& text, Compile
     program.units = std::move(library.units);
     for (Unit& u : own.units) program.units.push_back(std::move(u));
   }
-  if (!analyze(program, log)) return false;
+  std::map<std::string, PrimitiveSignature> signatures;
+  PrimitiveTable primitives;  // what the primitive being compiled may call
+  if (callable) {
+    primitives = *callable;
+    for (const auto& [name, p] : *callable) signatures[name] = p->signature;
+  }
+  if (!analyze(program, log, signatures)) return false;
   std::map<std::string, const Unit*> functions;
   for (const Unit& u : program.units)
     if (u.kind == UnitKind::Function) functions[u.name] = &u;
@@ -53,17 +61,31 @@ bool compileSource(const std::string& filename, const std::string& text, Compile
       continue;
     }
     IrFunction ir;
-    if (!lowerPrimitive(u, functions, ir, log)) return false;
+    if (!lowerPrimitive(u, functions, primitives, ir, log)) return false;
     std::vector<std::string> reasons;
     if (optimize_ir) optimize(ir, emit == EmitStage::Explain ? &reasons : nullptr);
     if (listing && emit == EmitStage::Explain)
       for (const std::string& r : reasons) *listing += filename + ":" + r + "\n";
     CodegenResult code = generateCode(ir);
+    for (const auto& [loc, message] : code.errors) log.error(loc, message);
+    if (!code.errors.empty()) return false;
     auto prim = std::make_shared<CompiledPrimitive>();
     prim->name = u.name;
+    prim->signature = signatureOf(u);
     prim->params = ir.params;
     prim->param_floats = ir.param_floats;
     prim->sequence_points = ir.sequence_points;
+    prim->count_slot = ir.count_slot;
+    prim->sized_floats = ir.sized_floats;
+    for (const std::string& callee : ir.callees) {
+      prim->callees.push_back(primitives.at(callee));
+      prim->call_depth = std::max(prim->call_depth, prim->callees.back()->call_depth + 1);
+    }
+    if (prim->call_depth > kMaxPrimitiveCallDepth) {
+      log.error(u.loc, "primitive '" + u.name + "' nests primitive calls " + std::to_string(prim->call_depth) +
+                           " deep; the limit is " + std::to_string(kMaxPrimitiveCallDepth));
+      return false;
+    }
     prim->has_interp_data = ir.has_interp_data;
     prim->kinds_handled = ir.kinds_handled;
     prim->setup = std::move(code.setup);
@@ -77,6 +99,7 @@ bool compileSource(const std::string& filename, const std::string& text, Compile
         *listing += "primitive " + u.name + ": pixel program (per 8x8 block, masked)\n" + disassemble(prim->pixel, true);
     }
     prim->ir = std::move(kept);
+    primitives[prim->name] = prim;
     out.primitives.push_back(std::move(prim));
   }
   return true;

@@ -2,6 +2,7 @@
 // context. Built-in primitives (primitives/*.pfl) and a user's primitives go through here alike.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -14,10 +15,17 @@ namespace pf {
 
 struct CompiledPrimitive {
   std::string name;
+  // Its parameters as declared, X, Y and Z left out: what a call from another primitive passes.
+  PrimitiveSignature signature;
   std::vector<ParamInfo> params;
-  int param_floats = 0;
-  int sequence_points = 1;
+  int param_floats = 0;     // the fixed part of the parameter block
+  int sequence_points = 1;  // per instance; 0: any number (parameter-sized arrays)
+  int count_slot = -1;      // sequence_points == 0: the slot that receives the count
+  int sized_floats = 0;     // sequence_points == 0: floats per sequence point after the fixed part
   bool has_interp_data = false;
+  // The primitives it calls (Op::Emit's imm), kept alive with it; how deep its calls nest.
+  std::vector<std::shared_ptr<const CompiledPrimitive>> callees;
+  int call_depth = 0;
   InterpKindSet kinds_handled = 0;
   SetupProgram setup;
   PixelProgram pixel;
@@ -25,12 +33,21 @@ struct CompiledPrimitive {
   // runs, pixel by pixel, to check the split, the masks and the SIMD executor against.
   std::shared_ptr<const IrFunction> ir;
 
+  // Size of the parameter block of an instance with `count` sequence points, and where
+  // element `i` of parameter p starts in it.
+  int paramFloats(int count) const { return param_floats + (sequence_points == 0 ? count * sized_floats : 0); }
+  int paramOffset(const ParamInfo& p, int count, int i) const {
+    return p.parameter_sized ? param_floats + count * p.offset + i * p.components : p.offset + i * p.components;
+  }
+
   const ParamInfo* findParam(const std::string& n) const {
     for (const ParamInfo& p : params)
       if (p.name == n) return &p;
     return nullptr;
   }
 };
+
+using PrimitiveTable = std::map<std::string, std::shared_ptr<const CompiledPrimitive>>;
 
 struct CompiledModule {
   std::vector<std::shared_ptr<const CompiledPrimitive>> primitives;
@@ -43,8 +60,11 @@ enum class EmitStage { None, Ast, Ir, Setup, Pixel, Explain };
 // Compiles `text` (named `filename` in diagnostics). On failure returns false; the log holds
 // every error. `listing`, when not null, receives the requested stage for each primitive.
 // `optimize` = false skips the passes of passes.h (pfc -O0), for comparison and debugging.
+// `callable`: primitives compiled before (the context's) that this source's primitives may
+// call, besides the ones it defines itself.
 bool compileSource(const std::string& filename, const std::string& text, CompiledModule& out,
                    DiagnosticLog& log, EmitStage emit = EmitStage::None,
-                   std::string* listing = nullptr, bool optimize = true);
+                   std::string* listing = nullptr, bool optimize = true,
+                   const PrimitiveTable* callable = nullptr);
 
 }  // namespace pf

@@ -56,8 +56,10 @@ struct ParamInfo {
   std::string name;
   Type type;                // declared type (for per-sequence-point params: with the [n])
   bool per_sequence_point;  // array parameters: outermost index = sequence point
-  int offset;               // first float of this parameter in the instance's parameter block
+  int offset;               // first float of this parameter in the instance's parameter block;
+                            // parameter-sized: floats per sequence point of those before it
   int components;           // floats per sequence point (or in total, for per-primitive ones)
+  bool parameter_sized = false;  // `T name[]`: after the fixed part (CompiledPrimitive::paramOffset)
 };
 
 struct IrFunction {
@@ -66,7 +68,10 @@ struct IrFunction {
   IrBlock body;
   std::vector<ParamInfo> params;
   int param_floats = 0;       // size of the parameter block
-  int sequence_points = 1;    // sequence points per instance
+  int sequence_points = 1;    // sequence points per instance; 0: as many as given (`[]` arrays)
+  int count_slot = -1;        // sequence_points == 0: the int slot that receives the count
+  int sized_floats = 0;       // sequence_points == 0: floats per sequence point of `[]` arrays
+  std::vector<std::string> callees;  // primitives it calls: Op::Emit's imm indexes this
   bool has_interp_data = false;
   InterpKindSet kinds_handled = 0;  // labels of its interpolation construct
 };

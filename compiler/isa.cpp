@@ -11,8 +11,8 @@ const char* opName(Op op) {
       "fsign", "fsin", "fcos", "ftan", "fasin", "facos", "fatan", "fatan2", "fpow", "fexp", "flog",
       "fnoise", "iadd", "isub", "imul", "idiv", "imod", "ineg", "imin", "imax", "iabs", "i2f",
       "f2i", "flt", "fle", "feq", "fne", "ilt", "ile", "ieq", "ine", "band", "bor", "bnot", "sel", "cross_sign",
-      "mov", "xadd", "xsub", "xneg", "xmulf", "xdivf", "xmov", "xloadvertex", "loadstate",
-      "bound", "kill", "retire", "ztest", "interp_return", "interp_shared", "zcommit",
+      "mov", "xadd", "xsub", "xneg", "xmulf", "xdivf", "xmov", "xloadvertex", "xsel", "loadparamat", "xloadvertexat", "loadstate",
+      "bound", "kill", "retire", "ztest", "interp_return", "interp_shared", "zcommit", "outparam", "outvertex", "emit",
       "loopbegin", "looptest", "break", "continue", "loopcontinue", "loopback", "loopend", "jmp",
       "jmpifnot", "maskif", "maskelse", "maskend", "jmpifnone"};
   static_assert(sizeof(names) / sizeof(names[0]) == static_cast<size_t>(Op::OpCount));
@@ -23,7 +23,8 @@ namespace {
 
 bool isInterpOp(Op op) {
   return op == Op::XAdd || op == Op::XSub || op == Op::XNeg || op == Op::XMulF ||
-         op == Op::XDivF || op == Op::XMov || op == Op::XLoadVertex || op == Op::InterpReturn;
+         op == Op::XDivF || op == Op::XMov || op == Op::XLoadVertex || op == Op::InterpReturn ||
+         op == Op::XSel || op == Op::XLoadVertexAt || op == Op::OutVertex;
 }
 
 std::string operandText(uint32_t o, const Bytecode& b, bool pixel, bool interp) {
@@ -45,6 +46,8 @@ std::string operandText(uint32_t o, const Bytecode& b, bool pixel, bool interp) 
       // Constants are untyped bits: small integers (denormal as floats) print as integers.
       if (bits != 0 && bits < 0x00800000u)
         std::snprintf(buf, sizeof buf, "#%u", bits);
+      else if (bits >= 0xffff0000u)  // a NaN as a float: a small negative int
+        std::snprintf(buf, sizeof buf, "#%d", static_cast<int32_t>(bits));
       else
         std::snprintf(buf, sizeof buf, "#%g", static_cast<double>(f));
       return buf;
@@ -71,15 +74,16 @@ std::string disassemble(const Bytecode& b, bool pixel) {
     if (is_jump) {
       parts.push_back("@" + std::to_string(in.a));
     } else if (in.a != kNoOperand) {
-      parts.push_back(operandText(in.a, b, pixel, xi && in.op != Op::XLoadVertex));
+      parts.push_back(operandText(in.a, b, pixel, xi && in.op != Op::XLoadVertex && in.op != Op::XSel && in.op != Op::XLoadVertexAt));
     }
     bool b_is_float = in.op == Op::XMulF || in.op == Op::XDivF;
     if (in.b != kNoOperand) parts.push_back(operandText(in.b, b, pixel, xi && !b_is_float));
-    if (in.c != kNoOperand) parts.push_back(operandText(in.c, b, pixel, false));
+    if (in.c != kNoOperand) parts.push_back(operandText(in.c, b, pixel, in.op == Op::XSel));
     if (in.d != kNoOperand) parts.push_back(operandText(in.d, b, pixel, false));
     if (in.op == Op::Bound) parts.push_back(operandText(in.dst, b, pixel, false));
     if (in.op == Op::XLoadVertex || in.op == Op::LoadState || in.op == Op::InterpReturn ||
-        in.op == Op::InterpShared)
+        in.op == Op::InterpShared || in.op == Op::OutParam || in.op == Op::OutVertex || in.op == Op::Emit ||
+        in.op == Op::LoadParamAt)
       parts.push_back("imm=" + std::to_string(in.imm));
     if (in.op == Op::Break && in.imm > 1) parts.push_back("levels=" + std::to_string(in.imm));
     for (size_t k = 0; k < parts.size(); ++k) out += (k ? ", " : " ") + parts[k];

@@ -29,6 +29,11 @@ enum class Op : uint8_t {
   // interpolator_data: one value per shading-parameter channel of the instance
   XAdd, XSub, XNeg, XMulF, XDivF, XMov,
   XLoadVertex,  // dst = the channels of sequence point `imm`
+  XSel,         // dst = a ? b : c, per channel of kinds `imm` (a is a bool)
+  // parameter-sized arrays (setup only): reads at an index computed at run time; an index
+  // outside the instance's parameters or sequence points reads zeros
+  LoadParamAt,    // dst = parameter slot a + imm (a is an int; a < 0: outside)
+  XLoadVertexAt,  // dst = the channels of sequence point a (an int)
   // state of the instance's GL context: imm = StateValue
   LoadState,
   // effects
@@ -39,6 +44,11 @@ enum class Op : uint8_t {
   InterpReturn,  // pixel: write channels of kinds `imm` (bit set) from interp operand a
   InterpShared,  // pixel: run the shared interpolators bound to channels of kinds `imm`
   ZCommit,       // pixel: a is the Z to write for lanes alive at the end
+  // calls of one primitive from another (setup; paper section 5: polygon -> screen_triangle):
+  // the arguments fill an outgoing parameter block, then Emit submits the callee's instance
+  OutParam,      // setup: outgoing parameter slot imm = a
+  OutVertex,     // setup: outgoing sequence point imm's channels = interp register a
+  Emit,          // setup: submit an instance of callee imm with the outgoing parameters
   // loops (setup: jumps and a counter; pixel: masks). LoopBegin pushes a loop frame; LoopTest
   // removes the lanes whose b is false from the loop; Break / Continue remove the active lanes
   // for good / for this iteration; LoopContinue brings the continuing lanes back; LoopBack
@@ -78,6 +88,9 @@ struct Instr {
   uint32_t dst = kNoOperand;
   uint32_t a = kNoOperand, b = kNoOperand, c = kNoOperand, d = kNoOperand;
 };
+
+// How deep calls of primitives from primitives may nest (each level is an executor in setup).
+constexpr int kMaxPrimitiveCallDepth = 8;
 
 // The registers of the pixel program that hold the built-ins before the first instruction.
 constexpr uint32_t kRegX = 0, kRegY = 1, kRegZ = 2, kFirstFreePixelReg = 3;

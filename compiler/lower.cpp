@@ -5,6 +5,7 @@
 #include "compiler/lower.h"
 
 #include "compiler/builtins.h"
+#include "compiler/compiler.h"
 
 #include <algorithm>
 #include <bit>
@@ -19,7 +20,9 @@ struct Binding {
   std::vector<int> comps;  // Value ids, one per scalar slot (per element for interpolator_data)
   bool writable = true;
   bool may_vary = false;   // sema's (conservative) verdict on the variable
+  int sized_param = -1;    // a parameter-sized array (`T name[]`): its ParamInfo; no comps
 };
+constexpr int kSizedInterpData = -2;  // Binding::sized_param of `interpolator_data name[]`
 
 // A loop being lowered: the values it carries from one iteration to the next, and what
 // lowering learned about it (which decides whether it must be lowered again).
@@ -59,8 +62,9 @@ void assignedNames(const Stmt& s, std::vector<std::string>& out) {
 
 class Lowerer {
  public:
-  Lowerer(IrFunction& f, DiagnosticLog& log, const std::map<std::string, const Unit*>& functions)
-      : f_(f), log_(log), functions_(functions) {}
+  Lowerer(IrFunction& f, DiagnosticLog& log, const std::map<std::string, const Unit*>& functions,
+          const PrimitiveTable& primitives)
+      : f_(f), log_(log), functions_(functions), primitives_(primitives) {}
 
   bool run(const Unit& u) {
     f_.name = u.name;
@@ -72,32 +76,40 @@ class Lowerer {
     z_initial_ = bindings_[lookup("Z")].comps[0];
     scopes_.emplace_back();  // the parameters' scope: functions see scope 0 (built-ins) only
     // Parameters: array parameters are per sequence point (outermost index), the rest per
-    // primitive. All per-sequence-point parameters must agree on the count.
+    // primitive. All per-sequence-point parameters must agree on the count; parameter-sized
+    // ones (`[]`) take the instance's count, which an `int NAME_count` parameter receives.
     int seq = 0;
+    bool sized = false;
     SourceLoc seq_loc;
+    std::string seq_name;
     for (const Param& p : u.params) {
-      if (p.name == "X" || p.name == "Y" || p.name == "Z") continue;
-      if (p.type.isArray()) {
-        if (seq == 0) {
-          seq = p.type.dims[0];
-          seq_loc = p.loc;
-        } else if (p.type.dims[0] != seq) {
-          log_.error(p.loc, "parameter '" + p.name + "' has " + std::to_string(p.type.dims[0]) +
-                                " sequence points, but '" + u.params.front().name + "' at line " +
-                                std::to_string(seq_loc.line) + " has " + std::to_string(seq) +
-                                ": all array parameters are indexed by the instance's sequence points");
-          return false;
-        }
+      if (p.name == "X" || p.name == "Y" || p.name == "Z" || !p.type.isArray()) continue;
+      if (seq_name.empty()) {
+        seq = p.type.dims[0];
+        sized = p.type.isParameterSized();
+        seq_loc = p.loc;
+        seq_name = p.name;
+      } else if (p.type.dims[0] != seq) {
+        auto count = [](int n) { return n == 0 ? std::string("as many as given ([])") : std::to_string(n); };
+        log_.error(p.loc, "parameter '" + p.name + "' has " + count(p.type.dims[0]) +
+                              " sequence points, but '" + seq_name + "' at line " +
+                              std::to_string(seq_loc.line) + " has " + count(seq) +
+                              ": all array parameters are indexed by the instance's sequence points");
+        return false;
       }
     }
-    f_.sequence_points = seq > 0 ? seq : 1;
+    f_.sequence_points = sized ? 0 : seq > 0 ? seq : 1;
     blocks_.push_back(&f_.body);
+    // The fixed part of the parameter block first, then (per instance) the parameter-sized arrays.
+    std::vector<std::pair<const Param*, int>> later;  // parameter-sized, and their binding
     for (const Param& p : u.params) {
       if (p.name == "X" || p.name == "Y" || p.name == "Z") continue;
       Binding b;
       b.type = p.type;
       b.writable = false;
-      if (p.type.base == BaseType::InterpData) {
+      if (p.type.isParameterSized()) {
+        later.push_back({&p, static_cast<int>(bindings_.size())});
+      } else if (p.type.base == BaseType::InterpData) {
         f_.has_interp_data = true;
         // The channels of every sequence point, loaded once at entry (dead ones are dropped).
         for (int i = 0; i < p.type.dims[0]; ++i)
@@ -111,18 +123,28 @@ class Lowerer {
         info.components = info.per_sequence_point ? p.type.slotCount() / p.type.dims[0] : p.type.slotCount();
         ValueClass cls = p.type.base == BaseType::Int ? ValueClass::I32
                          : p.type.base == BaseType::Bool ? ValueClass::Bool : ValueClass::F32;
-        for (int k = 0; k < p.type.slotCount(); ++k) {
-          Value v;
-          v.cls = cls;
-          v.origin = Value::Origin::Param;
-          v.index = f_.param_floats + k;
-          b.comps.push_back(newValue(v));
-        }
+        for (int k = 0; k < p.type.slotCount(); ++k) b.comps.push_back(paramValue(f_.param_floats + k, cls));
         f_.param_floats += p.type.slotCount();
         f_.params.push_back(info);
       }
       scopes_.back()[p.name] = static_cast<int>(bindings_.size());
       bindings_.push_back(std::move(b));
+    }
+    if (sized) {
+      for (const ParamInfo& info : f_.params)
+        if (info.type == Type::of(BaseType::Int) && info.name == seq_name + "_count") f_.count_slot = info.offset;
+      if (f_.count_slot < 0) f_.count_slot = f_.param_floats++;  // not declared: a hidden slot
+      for (auto [p, bind] : later) {
+        if (p->type.base == BaseType::InterpData) {
+          f_.has_interp_data = true;  // fed as the vertex channels, not in the parameter block
+          bindings_[static_cast<size_t>(bind)].sized_param = kSizedInterpData;
+          continue;
+        }
+        ParamInfo info{p->name, p->type, true, f_.sized_floats, p->type.element().slotCount(), true};
+        f_.sized_floats += info.components;
+        bindings_[static_cast<size_t>(bind)].sized_param = static_cast<int>(f_.params.size());
+        f_.params.push_back(info);
+      }
     }
     bool terminated = statements(u.body);
     if (!terminated) {
@@ -136,6 +158,7 @@ class Lowerer {
   IrFunction& f_;
   DiagnosticLog& log_;
   const std::map<std::string, const Unit*>& functions_;
+  const PrimitiveTable& primitives_;
   std::vector<std::map<std::string, int>> scopes_;
   std::vector<Binding> bindings_;
   std::vector<IrBlock*> blocks_;
@@ -145,6 +168,7 @@ class Lowerer {
   int z_initial_ = -1;
   SourceLoc cur_loc_;
   std::map<std::pair<int, uint32_t>, int> constants_;
+  int zero_interp_ = -1;
 
   int newValue(const Value& v) {
     f_.values.push_back(v);
@@ -211,6 +235,51 @@ class Lowerer {
     blocks_.back()->push_back(std::move(n));
   }
 
+  // Zero of the class of value v (interpolator_data: zero in every channel).
+  int zeroLike(int v) { return cls(v) == ValueClass::Interp ? zeroInterp() : constant(cls(v), 0); }
+  int zeroInterp() {
+    // Loaded once at entry (sequence point -1 reads zeros), so setup computes it for every use.
+    if (zero_interp_ < 0) {
+      IrNode n;
+      zero_interp_ = newValue(Value{ValueClass::Interp});
+      n.inst = IrInst{Op::XLoadVertexAt, zero_interp_, constI(-1), -1, -1, -1, 0, cur_loc_};
+      f_.body.insert(f_.body.begin(), std::move(n));
+    }
+    return zero_interp_;
+  }
+
+  // Element `index` of a parameter-sized array: loads from the instance's parameters, which sit
+  // after the fixed part at F + count * offset + index * components (CompiledPrimitive::paramOffset).
+  Binding loadSized(const Binding& array, int index, const Type& element) {
+    Binding out;
+    out.type = element;
+    if (array.sized_param == kSizedInterpData) {
+      out.comps.push_back(emit(Op::XLoadVertexAt, ValueClass::Interp, false, index));
+      return out;
+    }
+    const ParamInfo& p = f_.params[static_cast<size_t>(array.sized_param)];
+    ValueClass c = p.type.base == BaseType::Int ? ValueClass::I32
+                   : p.type.base == BaseType::Bool ? ValueClass::Bool : ValueClass::F32;
+    int count = paramValue(f_.count_slot, ValueClass::I32);
+    int base = emit(Op::IAdd, ValueClass::I32, false, constI(f_.param_floats),
+                    emit(Op::IMul, ValueClass::I32, false, count, constI(p.offset)));
+    // An index outside [0, count) reads zeros: slot -1.
+    int inside = emit(Op::BAnd, ValueClass::Bool, false, emit(Op::ILe, ValueClass::Bool, false, constI(0), index),
+                      emit(Op::ILt, ValueClass::Bool, false, index, count));
+    int first = emit(Op::IAdd, ValueClass::I32, false, base, emit(Op::IMul, ValueClass::I32, false, index, constI(p.components)));
+    int slot = emit(Op::Sel, ValueClass::I32, false, inside, first, constI(-1));
+    for (int k = 0; k < p.components; ++k) out.comps.push_back(emit(Op::LoadParamAt, c, false, slot, -1, -1, k));
+    return out;
+  }
+
+  int paramValue(int slot, ValueClass c) {
+    Value v;
+    v.cls = c;
+    v.origin = Value::Origin::Param;
+    v.index = slot;
+    return newValue(v);
+  }
+
   int toFloat(int v) {
     if (cls(v) == ValueClass::F32) return v;
     if (f_.values[v].origin == Value::Origin::Const)
@@ -253,8 +322,7 @@ class Lowerer {
           Binding v = expr(*s.value);
           b.comps = convert(v, s.decl_type);
         } else if (s.decl_type.base == BaseType::InterpData) {
-          log_.error(s.loc, "an interpolator_data variable must be initialised where it is declared");
-          return false;
+          b.comps.assign(static_cast<size_t>(s.decl_type.elementCount()), zeroInterp());
         } else {
           // Locals start at zero, so no path can read an undefined value.
           ValueClass c = s.decl_type.base == BaseType::Int ? ValueClass::I32
@@ -562,37 +630,58 @@ class Lowerer {
     return then_done && else_done;
   }
 
-  // Resolves an assignment target to (binding index, first slot, slot count).
-  bool target(const Expr& e, int& bind, int& first, int& count) {
+  // Resolves an assignment target to its binding and the slots it may write: one candidate
+  // range per element a run-time index can select, each with the condition (-1: always) under
+  // which it is the one written. An index outside the array selects none: the write is lost.
+  struct TargetSlots {
+    int first;
+    int cond;
+  };
+  bool target(const Expr& e, int& bind, std::vector<TargetSlots>& slots, int& count) {
     if (e.kind == ExprKind::Name) {
       bind = lookup(e.name);
       if (bind < 0) return false;
-      first = 0;
+      slots = {{0, -1}};
       count = static_cast<int>(bindings_[bind].comps.size());
       return true;
     }
-    if (!target(*e.args[0], bind, first, count)) return false;
+    if (!target(*e.args[0], bind, slots, count)) return false;
     const Type& bt = e.args[0]->type;
     if (e.kind == ExprKind::Member) {
-      first += static_cast<int>(e.number);
+      for (TargetSlots& t : slots) t.first += static_cast<int>(e.number);
       count = 1;
       return true;
     }
-    int idx = static_cast<int>(e.number);
-    if (bt.isArray()) {
-      int esz = bt.base == BaseType::InterpData ? 1 : bt.element().slotCount();
-      first += idx * esz;
-      count = esz;
-    } else {
-      first += idx;
-      count = 1;
+    int esz = bt.isArray() ? (bt.base == BaseType::InterpData ? 1 : bt.element().slotCount()) : 1;
+    int elements = bt.isArray() ? bt.dims[0] : Type::componentsOf(bt.base);
+    count = esz;
+    if (e.number >= 0) {
+      for (TargetSlots& t : slots) t.first += static_cast<int>(e.number) * esz;
+      return true;
     }
+    int index = expr(*e.args[1]).comps[0];
+    std::vector<TargetSlots> out;
+    for (const TargetSlots& t : slots)
+      for (int k = 0; k < elements; ++k) {
+        int hit = emit(Op::IEq, ValueClass::Bool, false, index, constI(k));
+        int cond = t.cond < 0 ? hit : emit(Op::BAnd, ValueClass::Bool, false, t.cond, hit);
+        out.push_back({t.first + k * esz, cond});
+      }
+    slots = std::move(out);
     return true;
   }
 
+  // dst = cond ? a : b, for a value of any class.
+  int select(int cond, int a, int b) {
+    if (cls(a) == ValueClass::Interp)
+      return emit(Op::XSel, ValueClass::Interp, false, cond, a, b, static_cast<int>(interp_kinds_));
+    return emit(Op::Sel, cls(a), false, cond, a, b);
+  }
+
   void assign(const Stmt& s) {
-    int bind, first, count;
-    if (!target(*s.target, bind, first, count)) return;
+    int bind, count;
+    std::vector<TargetSlots> slots;
+    if (!target(*s.target, bind, slots, count)) return;
     Binding value;
     if (s.op == "=") {
       value = expr(*s.value);
@@ -603,7 +692,10 @@ class Lowerer {
     }
     std::vector<int> comps = convert(value, s.target->type);
     if (static_cast<int>(comps.size()) != count) return;  // type error already reported
-    for (int k = 0; k < count; ++k) bindings_[bind].comps[first + k] = comps[k];
+    std::vector<int>& dst = bindings_[bind].comps;
+    for (const TargetSlots& t : slots)
+      for (int k = 0; k < count; ++k)
+        dst[t.first + k] = t.cond < 0 ? comps[k] : select(t.cond, comps[k], dst[t.first + k]);
   }
 
   // ---- expressions ----
@@ -634,11 +726,24 @@ class Lowerer {
       }
       case ExprKind::Index: {
         Binding b = expr(*e.args[0]);
-        int idx = static_cast<int>(e.number);
+        if (b.sized_param != -1) return loadSized(b, expr(*e.args[1]).comps[0], e.type);
         Binding out;
         out.type = e.type;
         int esz = b.type.isArray() ? (b.type.base == BaseType::InterpData ? 1 : b.type.element().slotCount()) : 1;
-        out.comps.assign(b.comps.begin() + idx * esz, b.comps.begin() + (idx + 1) * esz);
+        if (e.number >= 0) {
+          int idx = static_cast<int>(e.number);
+          out.comps.assign(b.comps.begin() + idx * esz, b.comps.begin() + (idx + 1) * esz);
+          return out;
+        }
+        // A run-time index: a select over the elements, from zero (what an index outside the
+        // array reads).
+        int index = expr(*e.args[1]).comps[0];
+        int elements = static_cast<int>(b.comps.size()) / esz;
+        for (int k = 0; k < esz; ++k) out.comps.push_back(zeroLike(b.comps[k]));
+        for (int i = 0; i < elements; ++i) {
+          int hit = emit(Op::IEq, ValueClass::Bool, false, index, constI(i));
+          for (int k = 0; k < esz; ++k) out.comps[k] = select(hit, b.comps[i * esz + k], out.comps[k]);
+        }
         return out;
       }
       case ExprKind::Unary: {
@@ -810,10 +915,37 @@ class Lowerer {
 
   int state(StateValue s) { return emit(Op::LoadState, ValueClass::F32, false, -1, -1, -1, static_cast<int>(s)); }
 
+  // A call of another primitive (sema checked it is uniform): the arguments fill the outgoing
+  // parameter block and sequence points, then Emit submits the callee's instance.
+  Binding callPrimitive(const Expr& e, const CompiledPrimitive& callee) {
+    std::vector<Binding> args;
+    for (const ExprPtr& a : e.args) args.push_back(expr(*a));
+    auto found = std::find(f_.callees.begin(), f_.callees.end(), callee.name);
+    int index = static_cast<int>(found - f_.callees.begin());
+    if (found == f_.callees.end()) f_.callees.push_back(callee.name);
+    for (size_t i = 0; i < callee.signature.size() && i < args.size(); ++i) {
+      const Type& type = callee.signature[i].second;
+      if (type.base == BaseType::InterpData) {
+        for (int j = 0; j < type.dims[0]; ++j) emitEffect(Op::OutVertex, args[i].comps[j], -1, -1, -1, j, e.loc);
+        continue;
+      }
+      const ParamInfo* info = callee.findParam(callee.signature[i].first);
+      std::vector<int> comps = convert(args[i], type);
+      for (size_t k = 0; info && k < comps.size(); ++k)
+        emitEffect(Op::OutParam, comps[k], -1, -1, -1, info->offset + static_cast<int>(k), e.loc);
+    }
+    emitEffect(Op::Emit, -1, -1, -1, -1, index, e.loc);
+    Binding none;
+    none.type = Type::of(BaseType::Void);
+    return none;
+  }
+
   Binding call(const Expr& e) {
     const std::string& f = e.name;
     auto user = functions_.find(f);
     if (user != functions_.end()) return callFunction(e, *user->second);
+    auto prim = primitives_.find(f);
+    if (prim != primitives_.end()) return callPrimitive(e, *prim->second);
     std::vector<Binding> args;
     for (const ExprPtr& a : e.args) args.push_back(expr(*a));
     auto arg = [&](size_t i) { return args[i].comps[0]; };
@@ -934,8 +1066,8 @@ class Lowerer {
 }  // namespace
 
 bool lowerPrimitive(const Unit& unit, const std::map<std::string, const Unit*>& functions,
-                    IrFunction& out, DiagnosticLog& log) {
-  Lowerer l(out, log, functions);
+                    const PrimitiveTable& primitives, IrFunction& out, DiagnosticLog& log) {
+  Lowerer l(out, log, functions, primitives);
   return l.run(unit);
 }
 

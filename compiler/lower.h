@@ -2,6 +2,7 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <string>
 
 #include "compiler/ast.h"
@@ -9,9 +10,13 @@
 
 namespace pf {
 
+struct CompiledPrimitive;
+using PrimitiveTable = std::map<std::string, std::shared_ptr<const CompiledPrimitive>>;
+
 // Returns false (with errors logged) if the unit uses something lowering cannot express.
-// `functions` are the program's functions by name: calls to them are inlined.
+// `functions` are the program's functions by name: calls to them are inlined. `primitives`
+// are the primitives it may call (each call becomes an instance of the callee, at run time).
 bool lowerPrimitive(const Unit& unit, const std::map<std::string, const Unit*>& functions,
-                    IrFunction& out, DiagnosticLog& log);
+                    const PrimitiveTable& primitives, IrFunction& out, DiagnosticLog& log);
 
 }  // namespace pf

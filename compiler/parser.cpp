@@ -158,9 +158,14 @@ class Parser {
     return Type::of(baseOf(take().kind));
   }
 
-  void arrayDims(Type& t) {
+  // `[n]...`; `allow_parameter_sized`: the first may be `[]` (a primitive's parameter).
+  void arrayDims(Type& t, bool allow_parameter_sized = false) {
     while (at(Tok::LBracket)) {
       SourceLoc loc = take().loc;
+      if (allow_parameter_sized && t.dims.empty() && accept(Tok::RBracket)) {
+        t.dims.push_back(0);
+        continue;
+      }
       if (!at(Tok::IntLit)) fail(cur().loc, "expected an array size (a positive integer), found " + describe(cur()));
       Token n = take();
       long v = std::strtol(n.text.c_str(), nullptr, 10);
@@ -187,7 +192,7 @@ class Parser {
         p.qualifier = q;
         p.type = base;
         p.name = expect(Tok::Ident, "(a parameter name)").text;
-        arrayDims(p.type);
+        arrayDims(p.type, u.kind == UnitKind::Primitive);
         u.params.push_back(std::move(p));
       } while (accept(Tok::Comma));
       if (!accept(Tok::Semi)) break;

@@ -55,6 +55,10 @@ struct FunctionTable {
   std::map<std::string, bool> intrinsically_varying;
   // Calls between units, for the recursion check: caller -> (callee, call location).
   std::map<std::string, std::vector<std::pair<std::string, SourceLoc>>> calls;
+  // Primitives a primitive may call: the context's and those defined earlier in the program;
+  // and the program's primitives not defined yet (a call must follow the callee's definition).
+  std::map<std::string, PrimitiveSignature> primitives;
+  std::set<std::string> later_primitives;
 };
 
 class Analyzer {
@@ -180,6 +184,7 @@ class Analyzer {
   std::vector<LoopFrame> loops_;
   bool return_seen_in_interp_ = false;
   size_t builtin_count_ = 0;
+  const Expr* statement_call_ = nullptr;  // the call an expression statement consists of
 
   void err(SourceLoc loc, const std::string& msg) {
     if (reporting_) log_.error(loc, msg);
@@ -250,7 +255,9 @@ class Analyzer {
       case StmtKind::Decl: declaration(s); break;
       case StmtKind::Assign: assignment(s); break;
       case StmtKind::ExprStmt:
+        statement_call_ = s.value.get();
         expr(*s.value);
+        statement_call_ = nullptr;
         if (s.value->kind != ExprKind::Call)
           err(s.loc, "this expression has no effect");
         break;
@@ -475,6 +482,14 @@ class Analyzer {
       checkAssignable(s.target->type, *s.value, "assign to '" + v.name + "'");
     }
     flowInto(vi, *s.value, s.value->loc);
+    // Writing at a varying index changes different elements in different pixels.
+    for (const Expr* t = s.target.get(); t->kind == ExprKind::Index || t->kind == ExprKind::Member; t = t->args[0].get())
+      if (t->kind == ExprKind::Index && t->args[1]->varying) {
+        if (v.qualifier == Qualifier::Uniform)
+          err(t->args[1]->loc, "'" + v.name + "' is declared uniform, but it is written at a varying index: " + whyOf(*t->args[1]));
+        else
+          markVarying(vi, "it is written at a varying index at line " + std::to_string(t->loc.line) + ": " + whyOf(*t->args[1]));
+      }
   }
 
   void checkAssignable(const Type& to, const Expr& from, const std::string& what) {
@@ -610,13 +625,22 @@ class Analyzer {
           err(index.loc, "an index must be an int, not " + typeName(index.type));
           return;
         }
-        long value;
-        if (!constantInt(index, value)) {
-          err(index.loc, "an index must be a constant expression in this version of the language");
+        // A parameter-sized array (`point vertex[]`) lives in the instance's parameters, which
+        // only setup reads: its index must be the same for every pixel.
+        const bool parameter_sized = base.type.isArray() && base.type.dims[0] == 0;
+        if (parameter_sized && index.varying) {
+          err(index.loc, "a parameter-sized array is read once per instance, so its index must be uniform; this index is varying: " + whyOf(index));
           return;
         }
-        if (value < 0 || value >= limit) {
-          err(index.loc, "index " + std::to_string(value) + " is out of range [0, " + std::to_string(limit - 1) + "]");
+        long value;
+        if (!constantInt(index, value)) {
+          e.number = -1;  // computed at run time (lowering: a select over the elements, or a load)
+          return;
+        }
+        if (value < 0 || (!parameter_sized && value >= limit)) {
+          err(index.loc, "index " + std::to_string(value) + " is out of range " +
+                             (parameter_sized ? std::string("(an index is never negative)")
+                                              : "[0, " + std::to_string(limit - 1) + "]"));
           return;
         }
         e.number = static_cast<double>(value);
@@ -681,9 +705,52 @@ class Analyzer {
     return bad();
   }
 
+  // A call of another primitive: a statement that submits an instance of it, so everything
+  // about it must be the same for every pixel (paper section 5: polygon -> screen_triangle).
+  void primitiveCall(Expr& e, const PrimitiveSignature& callee) {
+    e.type = Type::of(BaseType::Void);
+    const std::string what = "'" + e.name + "' is a primitive: calling it submits an instance of it";
+    if (unit_->kind != UnitKind::Primitive) {
+      err(e.loc, what + ", which only a primitive can do");
+      return;
+    }
+    if (&e != statement_call_) err(e.loc, what + "; the call is a statement and has no value");
+    if (varying_control_ > 0)
+    {
+      std::string why = varying_control_why_;  // "it is assigned under / in ..."
+      if (why.rfind("it is assigned ", 0) == 0) why = "it is " + why.substr(15);
+      err(e.loc, what + ", so the call must be under uniform control flow; here " + why);
+    }
+    if (interp_depth_ > 0) err(e.loc, what + ", which cannot happen inside 'interpolation'");
+    if (e.args.size() != callee.size()) {
+      err(e.loc, "'" + e.name + "' takes " + std::to_string(callee.size()) + " argument" +
+                     (callee.size() == 1 ? "" : "s") + ", not " + std::to_string(e.args.size()));
+      return;
+    }
+    for (size_t i = 0; i < e.args.size(); ++i) {
+      const Type& to = callee[i].second;
+      if (to.isParameterSized()) {
+        err(e.args[i]->loc, "'" + e.name + "' takes a parameter-sized array ('" + callee[i].first + "[]'): it can only be drawn through the API");
+        continue;
+      }
+      checkAssignable(to, *e.args[i], "pass '" + callee[i].first + "' to '" + e.name + "'");
+      if (e.args[i]->varying)
+        err(e.args[i]->loc, "argument '" + callee[i].first + "' of '" + e.name + "' must be uniform (an instance has one value); " + whyOf(*e.args[i]));
+    }
+  }
+
   void call(Expr& e) {
     for (ExprPtr& a : e.args) expr(*a);
     auto f = functions_.units.find(e.name);
+    if (f == functions_.units.end() && functions_.later_primitives.count(e.name)) {
+      err(e.loc, "primitive '" + e.name + "' is defined further down: define a primitive before the primitives that call it");
+      return;
+    }
+    auto prim = functions_.primitives.find(e.name);
+    if (f == functions_.units.end() && prim != functions_.primitives.end()) {
+      primitiveCall(e, prim->second);
+      return;
+    }
     if (f == functions_.units.end()) {
       typeBuiltinCall(e, unit_->kind, [this](SourceLoc loc, const std::string& msg) { err(loc, msg); });
       return;
@@ -750,8 +817,18 @@ bool isBuiltinName(const std::string& name) {
 
 }  // namespace
 
-bool analyze(Program& program, DiagnosticLog& log) {
+PrimitiveSignature signatureOf(const Unit& u) {
+  PrimitiveSignature sig;
+  for (const Param& p : u.params)
+    if (p.name != "X" && p.name != "Y" && p.name != "Z") sig.push_back({p.name, p.type});
+  return sig;
+}
+
+bool analyze(Program& program, DiagnosticLog& log, const std::map<std::string, PrimitiveSignature>& callable) {
   FunctionTable functions;
+  functions.primitives = callable;
+  for (const Unit& u : program.units)
+    if (u.kind == UnitKind::Primitive) functions.later_primitives.insert(u.name);
   std::set<std::string> names;
   for (Unit& u : program.units) {
     if (!names.insert(u.name).second) log.error(u.loc, "'" + u.name + "' is defined twice");
@@ -778,6 +855,10 @@ bool analyze(Program& program, DiagnosticLog& log) {
   for (Unit& u : program.units) {
     Analyzer a(log, functions);
     a.unit(u);
+    if (u.kind == UnitKind::Primitive) {
+      functions.later_primitives.erase(u.name);
+      functions.primitives[u.name] = signatureOf(u);
+    }
   }
   checkRecursion(functions, log);
   return !log.hasErrors();

@@ -12,7 +12,9 @@
 namespace pf {
 
 // Analyses every unit of the program in place (Expr::type, Expr::varying). Returns false if
-// any error was logged.
-bool analyze(Program& program, DiagnosticLog& log);
+// any error was logged. `callable`: primitives compiled before, which its primitives may call.
+bool analyze(Program& program, DiagnosticLog& log,
+             const std::map<std::string, PrimitiveSignature>& callable = {});
+PrimitiveSignature signatureOf(const Unit& u);
 
 }  // namespace pf

@@ -20,7 +20,7 @@ std::string baseTypeName(BaseType b) {
 
 std::string typeName(const Type& t) {
   std::string s = baseTypeName(t.base);
-  for (int d : t.dims) s += "[" + std::to_string(d) + "]";
+  for (int d : t.dims) s += d == 0 ? std::string("[]") : "[" + std::to_string(d) + "]";
   return s;
 }
 

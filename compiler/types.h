@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pf {
@@ -19,9 +20,12 @@ enum class Qualifier { None, Uniform, Varying, Inout, InoutVarying };
 
 struct Type {
   BaseType base = BaseType::Void;
-  std::vector<int> dims;  // array dimensions, outermost first
+  // Array dimensions, outermost first. 0 (only outermost, only for a primitive's parameters):
+  // parameter-sized, `point vertex[]`, as many elements as the instance has sequence points.
+  std::vector<int> dims;
 
   bool isArray() const { return !dims.empty(); }
+  bool isParameterSized() const { return !dims.empty() && dims[0] == 0; }
   bool isScalar() const { return dims.empty() && (base == BaseType::Float || base == BaseType::Int || base == BaseType::Bool); }
   bool isAggregate() const { return dims.empty() && componentsOf(base) > 1; }
   Type element() const { Type t = *this; t.dims.erase(t.dims.begin()); return t; }
@@ -43,6 +47,10 @@ struct Type {
   }
   static Type of(BaseType b) { Type t; t.base = b; return t; }
 };
+
+// A primitive's parameters as declared (name, type), X, Y and Z left out: how another
+// primitive calls it.
+using PrimitiveSignature = std::vector<std::pair<std::string, Type>>;
 
 std::string typeName(const Type& t);
 std::string baseTypeName(BaseType b);

@@ -277,7 +277,18 @@ void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* reco
         // an empty range here.
         continue;
       case Op::LoadState: case Op::XLoadVertex: case Op::Bound: case Op::Kill: case Op::OpCount:
+      case Op::LoadParamAt: case Op::XLoadVertexAt: case Op::OutParam: case Op::OutVertex: case Op::Emit:
         continue;  // setup-only instructions never reach a pixel program
+      case Op::XSel:
+        forChannels(ins.imm, [&](int ch) {
+          bool wc, wa, wb;
+          const uint32_t* cond = src(ins.a, wc);
+          const uint32_t* a = xsrc(ins.b, ch, wa);
+          const uint32_t* b = xsrc(ins.c, ch, wb);
+          uint32_t* d = xregs_.data() + (static_cast<size_t>(operandIndex(ins.dst)) * nch + ch) * kLanes;
+          run(Op::Sel, d, cond, wc, a, wa, b, wb, exec);
+        });
+        continue;
       case Op::XAdd: case Op::XSub: case Op::XMulF: case Op::XDivF: case Op::XNeg: case Op::XMov: {
         Op scalar_op = ins.op == Op::XAdd ? Op::FAdd : ins.op == Op::XSub ? Op::FSub
                        : ins.op == Op::XMulF ? Op::FMul : ins.op == Op::XDivF ? Op::FDiv

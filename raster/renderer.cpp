@@ -49,25 +49,53 @@ void pixelRange(float lo, float hi, int clip_lo, int clip_hi, int& out_lo, int& 
 }  // namespace
 
 bool Renderer::submit(const CompiledPrimitive& prim, const uint32_t* params, const float* vertex_channels,
-                      const ChannelLayout& layout, const RasterState& state, const ShadeState& shade) {
+                      const ChannelLayout& layout, const RasterState& state, const ShadeState& shade,
+                      int sequence_points) {
   if (!color_) return false;
-  ++stats_.instances_submitted;
   // Shared state: appended only when it changes.
   if (scene_.states.empty() || !(scene_.states.back() == state)) scene_.states.push_back(state);
   if (scene_.layouts.empty() || !(scene_.layouts.back() == layout)) scene_.layouts.push_back(layout);
   if (scene_.shades.empty() || !(scene_.shades.back() == shade)) scene_.shades.push_back(shade);
   if (scene_.states.size() > 0xffff || scene_.layouts.size() > 0xffff) {
     flush();
-    return submit(prim, params, vertex_channels, layout, state, shade);
+    return submit(prim, params, vertex_channels, layout, state, shade, sequence_points);
   }
+  return submitAt(prim, params, vertex_channels, sequence_points < 0 ? prim.sequence_points : sequence_points, 0);
+}
 
+void Renderer::submitCall(const CompiledPrimitive& callee, const uint32_t* params, const float* vertex_channels,
+                          int depth) {
+  if (depth <= kMaxPrimitiveCallDepth) submitAt(callee, params, vertex_channels, callee.sequence_points, depth);
+}
+
+// Setup and binning of one instance, under the state, layout and shade last appended.
+bool Renderer::submitAt(const CompiledPrimitive& prim, const uint32_t* params, const float* vertex_channels,
+                        int sequence_points, int depth) {
+  ++stats_.instances_submitted;
+  const RasterState& state = scene_.states.back();
+  const ChannelLayout& layout = scene_.layouts.back();
+  const ShadeState& shade = scene_.shades.back();
   size_t offset = scene_.records.size();
-  scene_.records.resize(offset + SetupExecutor::recordWords(prim, layout.count));
-  SetupInput in{params, vertex_channels, &scene_.layouts.back(), &scene_.states.back()};
-  SetupOutput out = setup_.run(prim, in, scene_.records.data() + offset);
+  const size_t words = SetupExecutor::recordWords(prim, layout.count);
+  SetupInput in{params, vertex_channels, &layout, &state, sequence_points, this, depth};
+  // Setup writes the record in place, unless it calls other primitives: their records would
+  // land in the middle of it, so it goes to scratch first.
+  const bool in_place = prim.callees.empty();
+  std::vector<uint32_t>& scratch = record_scratch_[depth];
+  if (in_place) scene_.records.resize(offset + words);
+  else scratch.resize(words);
+  SetupOutput out = setups_[depth].run(prim, in, in_place ? scene_.records.data() + offset : scratch.data());
   stats_.setup_instructions += out.instructions;
+  if (out.killed || prim.pixel.code.empty()) {
+    if (in_place) scene_.records.resize(offset);
+  }
+  // A primitive whose only work was to call others has nothing to run per pixel.
+  if (!out.killed && prim.pixel.code.empty()) return true;
+  if (!in_place && !out.killed) {
+    offset = scene_.records.size();
+    scene_.records.insert(scene_.records.end(), scratch.begin(), scratch.end());
+  }
   if (out.killed) {
-    scene_.records.resize(offset);
     ++stats_.instances_killed;
     if (out.iteration_cap_hit) {
       ++stats_.iteration_cap_instances;

@@ -42,7 +42,7 @@ struct IterationCapReport {
   std::string primitive;  // one of the primitives that hit the cap
 };
 
-class Renderer {
+class Renderer : private SubInstanceSink {
  public:
   explicit Renderer(int threads);
 
@@ -53,9 +53,13 @@ class Renderer {
   // Recorded; applied at flush before the instances that follow it.
   void clear(bool color, bool depth, const float rgba[4], float z);
 
-  // Runs setup and bins the instance. Returns false if setup killed it.
+  // Runs setup and bins the instance (`sequence_points`: how many it has, for primitives
+  // with parameter-sized arrays; otherwise the primitive's own count). Instances of other
+  // primitives its setup calls are submitted as it runs, each binned on its own, in order.
+  // Returns false if setup killed it.
   bool submit(const CompiledPrimitive& prim, const uint32_t* params, const float* vertex_channels,
-              const ChannelLayout& layout, const RasterState& state, const ShadeState& shade);
+              const ChannelLayout& layout, const RasterState& state, const ShadeState& shade,
+              int sequence_points = -1);
 
   // Executes everything recorded: afterwards the colour and depth buffers hold the image.
   void flush();
@@ -82,10 +86,16 @@ class Renderer {
   };
 
   void runTile(int tile, WorkerScratch& scratch);
+  bool submitAt(const CompiledPrimitive& prim, const uint32_t* params, const float* vertex_channels,
+                int sequence_points, int depth);
+  void submitCall(const CompiledPrimitive& callee, const uint32_t* params, const float* vertex_channels,
+                  int depth) override;
 
   WorkerPool pool_;
   Scene scene_;
-  SetupExecutor setup_;
+  // One executor per depth of primitive calls: a caller's registers stay put while its callee runs.
+  SetupExecutor setups_[kMaxPrimitiveCallDepth + 1];
+  std::vector<uint32_t> record_scratch_[kMaxPrimitiveCallDepth + 1];
   std::vector<std::unique_ptr<WorkerScratch>> scratch_;
   uint8_t* color_ = nullptr;
   float* depth_ = nullptr;

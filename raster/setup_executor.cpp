@@ -1,6 +1,7 @@
 // The scalar setup interpreter (see setup_executor.h).
 #include "raster/setup_executor.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -94,6 +95,48 @@ SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& 
         float* d = xreg(ins.dst);
         const float* s = in.vertex_channels + static_cast<size_t>(ins.imm) * nch;
         std::memcpy(d, s, sizeof(float) * nch);
+        continue;
+      }
+      case Op::XLoadVertexAt: {
+        float* d = xreg(ins.dst);
+        const int32_t i = static_cast<int32_t>(read(ins.a));
+        if (i >= 0 && i < in.sequence_points)
+          std::memcpy(d, in.vertex_channels + static_cast<size_t>(i) * nch, sizeof(float) * nch);
+        else
+          std::fill(d, d + nch, 0.0f);
+        continue;
+      }
+      case Op::LoadParamAt: {
+        const int32_t slot = static_cast<int32_t>(read(ins.a));
+        const int64_t at = static_cast<int64_t>(slot) + ins.imm;
+        regs_[operandIndex(ins.dst)] = slot >= 0 && at < prim.paramFloats(in.sequence_points) ? in.params[at] : 0u;
+        continue;
+      }
+      case Op::XSel: {
+        float* d = xreg(ins.dst);
+        const float* a = xreg(ins.b);
+        const float* b = xreg(ins.c);
+        const bool pick_a = read(ins.a) != 0;
+        forChannels(ins.imm, [&](int c) { d[c] = pick_a ? a[c] : b[c]; });
+        continue;
+      }
+      case Op::OutParam: {
+        if (out_params_.size() <= ins.imm) out_params_.resize(ins.imm + 1u, 0u);
+        out_params_[ins.imm] = read(ins.a);
+        continue;
+      }
+      case Op::OutVertex: {
+        const size_t need = (static_cast<size_t>(ins.imm) + 1) * nch;
+        if (out_vertices_.size() < need) out_vertices_.resize(need, 0.0f);
+        std::memcpy(out_vertices_.data() + static_cast<size_t>(ins.imm) * nch, xreg(ins.a), sizeof(float) * nch);
+        continue;
+      }
+      case Op::Emit: {
+        const CompiledPrimitive& callee = *prim.callees[ins.imm];
+        // Every parameter of the callee was passed (sema checks the call), so the block is full.
+        out_params_.resize(static_cast<size_t>(callee.paramFloats(callee.sequence_points)), 0u);
+        out_vertices_.resize(static_cast<size_t>(callee.sequence_points) * nch, 0.0f);
+        if (in.sink) in.sink->submitCall(callee, out_params_.data(), out_vertices_.data(), in.depth + 1);
         continue;
       }
       case Op::XAdd: case Op::XSub: case Op::XMulF: case Op::XDivF: case Op::XNeg: case Op::XMov: {

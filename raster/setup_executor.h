@@ -11,11 +11,24 @@
 
 namespace pf {
 
+// Where the instances a primitive's setup calls (Op::Emit) go: the renderer submits them.
+class SubInstanceSink {
+ public:
+  virtual ~SubInstanceSink() = default;
+  // The callee, its parameter block and its sequence points' channels; `depth` is the
+  // caller's call depth + 1.
+  virtual void submitCall(const CompiledPrimitive& callee, const uint32_t* params,
+                          const float* vertex_channels, int depth) = 0;
+};
+
 struct SetupInput {
-  const uint32_t* params;     // CompiledPrimitive::param_floats 32-bit values
+  const uint32_t* params;     // CompiledPrimitive::paramFloats(sequence_points) 32-bit values
   const float* vertex_channels;  // sequence_points x layout.count floats
   const ChannelLayout* layout;
   const RasterState* state;
+  int sequence_points = 0;    // of this instance
+  SubInstanceSink* sink = nullptr;  // null: calls of other primitives are dropped
+  int depth = 0;              // how deep in calls of primitives this instance is
 };
 
 struct SetupOutput {
@@ -38,6 +51,9 @@ class SetupExecutor {
  private:
   std::vector<uint32_t> regs_;
   std::vector<float> interp_;
+  // The outgoing instance of a call: its parameter block and sequence points' channels.
+  std::vector<uint32_t> out_params_;
+  std::vector<float> out_vertices_;
 };
 
 }  // namespace pf

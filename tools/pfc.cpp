@@ -8,6 +8,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "compiler/builtin_primitives.h"
 #include "compiler/compiler.h"
 
 int main(int argc, char** argv) {
@@ -40,7 +41,9 @@ int main(int argc, char** argv) {
   pf::CompiledModule module;
   pf::DiagnosticLog log;
   std::string listing;
-  bool ok = pf::compileSource(file, ss.str(), module, log, stage, &listing, !no_opt);
+  // A user's primitives may call the built-in ones, as in a context.
+  const pf::BuiltinPrimitives& builtins = pf::builtinPrimitives();
+  bool ok = pf::compileSource(file, ss.str(), module, log, stage, &listing, !no_opt, &builtins.by_name);
   std::cerr << log.format();
   if (!ok) return 1;
   std::cout << listing;

@@ -46,11 +46,16 @@ pf::DepthFunc toDepthFunc(GLenum f) {
 
 float clamp01(double v) { return v < 0 ? 0.0f : v > 1 ? 1.0f : static_cast<float>(v); }
 
-// Hands the sequence points gathered since glBegin to the renderer, one instance per
-// `sequence_points` of them (a trailing incomplete group is dropped, as GL drops it).
+// Hands the sequence points gathered since glBegin to the renderer: for a primitive with a
+// fixed count, one instance per `sequence_points` of them (a trailing incomplete group is
+// dropped, as GL drops it); for one with parameter-sized arrays, one instance holding them all.
 void submitInstances(PFcontextRec& ctx) {
   const pf::CompiledPrimitive& prim = *ctx.begin_primitive;
-  const size_t per = static_cast<size_t>(prim.sequence_points);
+  const size_t total = ctx.sequence_points.size();
+  const bool sized = prim.sequence_points == 0;
+  const size_t per = sized ? total : static_cast<size_t>(prim.sequence_points);
+  if (per == 0) return;
+  const int count = static_cast<int>(per);
   const pf::ParamInfo* vertex = prim.findParam("vertex");
   // The colour is the one per-vertex shading parameter so far: 4 channels, interpolated
   // perspective-correct (GL's default), in G-buffer slots 0-3.
@@ -63,26 +68,30 @@ void submitInstances(PFcontextRec& ctx) {
     for (int k = 0; k < 4; ++k) shade.constant_color[k] = ctx.current_color[k];
   }
   const pf::RasterState state = ctx.rasterState();
-  ctx.param_block.assign(static_cast<size_t>(prim.param_floats), 0u);
+  ctx.param_block.assign(static_cast<size_t>(prim.paramFloats(count)), 0u);
+  if (sized) ctx.param_block[static_cast<size_t>(prim.count_slot)] = static_cast<uint32_t>(count);
   ctx.vertex_channels.assign(per * static_cast<size_t>(layout.count), 0.0f);
-  for (size_t first = 0; first + per <= ctx.sequence_points.size(); first += per) {
+  for (size_t first = 0; first + per <= total; first += per) {
     for (size_t i = 0; i < per; ++i) {
       const pf::SequencePoint& sp = ctx.sequence_points[first + i];
-      if (vertex)
-        for (int c = 0; c < 4; ++c)
-          ctx.param_block[static_cast<size_t>(vertex->offset) + i * 4 + c] = std::bit_cast<uint32_t>(sp.position[c]);
+      if (vertex) {
+        const size_t at = static_cast<size_t>(prim.paramOffset(*vertex, count, static_cast<int>(i)));
+        for (int c = 0; c < 4; ++c) ctx.param_block[at + c] = std::bit_cast<uint32_t>(sp.position[c]);
+      }
       for (int c = 0; c < layout.count; ++c) ctx.vertex_channels[i * layout.count + c] = sp.color[c];
     }
-    ctx.renderer.submit(prim, ctx.param_block.data(), ctx.vertex_channels.data(), layout, state, shade);
+    ctx.renderer.submit(prim, ctx.param_block.data(), ctx.vertex_channels.data(), layout, state, shade, count);
   }
 }
 
-// The parameters this API can feed so far: a per-sequence-point point `vertex` and the
-// interpolator_data. A primitive wanting others cannot be drawn through glBegin yet.
+// The parameters this API can feed so far: a per-sequence-point point `vertex`, the count of
+// a parameter-sized one, and the interpolator_data. A primitive wanting others cannot be drawn
+// through glBegin yet.
 bool feedable(const pf::CompiledPrimitive& prim) {
   for (const pf::ParamInfo& p : prim.params) {
     bool is_vertex = p.name == "vertex" && p.per_sequence_point && p.type.base == pf::BaseType::Point;
-    if (!is_vertex) return false;
+    bool is_count = prim.sequence_points == 0 && !p.per_sequence_point && p.offset == prim.count_slot;
+    if (!is_vertex && !is_count) return false;
   }
   return true;
 }

@@ -26,7 +26,7 @@ GLuint pfglCompilePrimitivesEXT(const GLchar* source) {
   pf::CompiledModule module;
   pf::DiagnosticLog log;
   std::string name = "module" + std::to_string(ctx->primitives.module_logs.size() + 1) + ".pfl";
-  if (!pf::compileSource(name, source, module, log)) {
+  if (!pf::compileSource(name, source, module, log, pf::EmitStage::None, nullptr, true, &ctx->primitives.by_name)) {
     ctx->primitives.failed_log = log.format();
     return 0;
   }

@@ -52,7 +52,7 @@ struct BlockRun {
 inline BlockRun runBlock(const CompiledPrimitive& prim, const std::vector<float>& params,
                          const std::vector<float>& vertex_channels, int nch, bool depth_test = true,
                          float initial_depth = 1.0f, InterpKind kind = InterpKind::PerspectiveLinear,
-                         uint32_t iteration_cap = 65536) {
+                         uint32_t iteration_cap = 65536, int sequence_points = -1) {
   BlockRun r;
   std::fill(r.depth.begin(), r.depth.end(), initial_depth);
   std::vector<uint32_t> p(params.size());
@@ -69,7 +69,8 @@ inline BlockRun runBlock(const CompiledPrimitive& prim, const std::vector<float>
   st.iteration_cap = iteration_cap;
   std::vector<uint32_t> record(SetupExecutor::recordWords(prim, nch) + 1);
   SetupExecutor setup;
-  r.setup = setup.run(prim, SetupInput{p.data(), vertex_channels.data(), &layout, &st}, record.data());
+  r.setup = setup.run(prim, SetupInput{p.data(), vertex_channels.data(), &layout, &st,
+                                      sequence_points < 0 ? prim.sequence_points : sequence_points}, record.data());
   r.killed = r.setup.killed;
   if (r.killed) return r;
   r.channels.assign(static_cast<size_t>(std::max(nch, 1)) * 4096, 0.0f);

@@ -134,6 +134,29 @@ class Interpreter {
       case Op::Break: return {Flow::Break, in.imm > 1 ? in.imm : 1};
       case Op::Continue: return {Flow::Continue, 1};
       case Op::Bound: case Op::Kill: case Op::InterpShared: return {};
+      // Calls of other primitives submit instances the reference of this one does not draw.
+      case Op::OutParam: case Op::OutVertex: case Op::Emit: return {};
+      case Op::LoadParamAt: {
+        const int32_t slot = static_cast<int32_t>(get(in.a));
+        const int64_t at = static_cast<int64_t>(slot) + in.imm;
+        scalar_[in.dst] = slot >= 0 && at < static_cast<int64_t>(params_.size()) ? params_[at] : 0u;
+        return {};
+      }
+      case Op::XLoadVertexAt: {
+        const int32_t i = static_cast<int32_t>(get(in.a));
+        const int64_t count = layout_.count ? static_cast<int64_t>(vc_.size()) / layout_.count : 0;
+        std::vector<float>& d = channels(in.dst);
+        for (int c = 0; c < layout_.count; ++c)
+          d[c] = i >= 0 && i < count ? vc_[static_cast<size_t>(i) * layout_.count + c] : 0.0f;
+        return {};
+      }
+      case Op::XSel: {
+        const bool pick_a = get(in.a) != 0;
+        std::vector<float> a = channels(in.b), b = channels(in.c);
+        std::vector<float>& d = channels(in.dst);
+        forKinds(in.imm, [&](int c) { d[c] = pick_a ? a[c] : b[c]; });
+        return {};
+      }
       case Op::ZCommit:
         if (st_.depth_test && st_.depth_write) {
           out_.depth_written = true;
