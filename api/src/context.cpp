@@ -4,7 +4,7 @@
 #include <new>
 
 #include "api/src/context_state.h"
-#include "compiler/embedded_primitives.h"
+#include "compiler/builtin_primitives.h"
 #include "raster/limits.h"
 #include "raster/worker_pool.h"
 
@@ -18,23 +18,22 @@ struct ModeName {
   GLenum mode;
   const char* primitive;
 };
-constexpr ModeName kModes[] = {{GL_TRIANGLES, "triangles"}};
+constexpr ModeName kModes[] = {
+    {GL_TRIANGLES, "triangles"},         {GL_TRIANGLE_STRIP, "triangle_strip"},
+    {GL_TRIANGLE_FAN, "triangle_fan"},   {GL_QUADS, "quads"},
+    {GL_QUAD_STRIP, "quad_strip"},       {GL_POLYGON, "polygon"}};
 
 bool registerBuiltins(PFcontextRec& ctx) {
-  for (int i = 0; i < kEmbeddedPrimitiveCount; ++i) {
-    const EmbeddedSource& src = kEmbeddedPrimitives[i];
-    CompiledModule module;
-    DiagnosticLog log;
-    if (!compileSource(std::string("primitives/") + src.file_name, src.text, module, log)) {
-      std::fprintf(stderr, "primflow: built-in primitive failed to compile:\n%s", log.format().c_str());
-      return false;
-    }
-    for (auto& p : module.primitives) {
-      GLenum mode = 0;
-      for (const ModeName& m : kModes)
-        if (p->name == m.primitive) mode = m.mode;
-      ctx.primitives.add(p, mode);
-    }
+  const BuiltinPrimitives& builtins = builtinPrimitives();
+  if (!builtins.errors.empty()) {
+    std::fprintf(stderr, "primflow: built-in primitive failed to compile:\n%s", builtins.errors.c_str());
+    return false;
+  }
+  for (const auto& p : builtins.in_order) {
+    GLenum mode = 0;
+    for (const ModeName& m : kModes)
+      if (p->name == m.primitive) mode = m.mode;
+    ctx.primitives.add(p, mode);
   }
   return true;
 }

@@ -42,6 +42,12 @@ const char* sceneName(Scene s) {
     case Scene::DepthAlways: return "DepthAlways";
     case Scene::DepthMaskOff: return "DepthMaskOff";
     case Scene::DepthRangeNarrow: return "DepthRangeNarrow";
+    case Scene::StripGouraud: return "StripGouraud";
+    case Scene::FanModeGouraud: return "FanModeGouraud";
+    case Scene::QuadsGouraud: return "QuadsGouraud";
+    case Scene::QuadStripGouraud: return "QuadStripGouraud";
+    case Scene::PolygonGouraud: return "PolygonGouraud";
+    case Scene::QuadMeshIds: return "QuadMeshIds";
   }
   return "?";
 }
@@ -226,6 +232,28 @@ TEST(Differential, ShowcaseMatchesOsmesa) {
   EXPECT_EQ(depth_bad, 0) << "depth off by more than 2^-16 (largest " << worst_depth << ")";
 }
 
+TEST(Differential, QuadMeshCoverageMatchesOsmesa) { expectSameCoverage(Scene::QuadMeshIds, pfdiff::kMeshQuads); }
+
+// Every polygon mode of glBegin (each a primitive in primitives/triangles.pfl calling
+// `triangles`): the same pixels, colours within 2/255 -- which holds only if each mode splits its
+// polygons along the same diagonals as Mesa and keeps a vertex order that rounds alike.
+class DifferentialModes : public ::testing::TestWithParam<Scene> {};
+
+TEST_P(DifferentialModes, ImageMatchesOsmesa) {
+  Image ref = reference(GetParam());
+  Image got = primflow(GetParam(), 1);
+  ASSERT_TRUE(ref.ok && got.ok);
+  int drawn = 0;
+  for (int i = 0; i < kSize * kSize; ++i) drawn += !isClear(&ref.rgba[size_t(i) * 4]);
+  EXPECT_GT(drawn, kSize * kSize / 10) << "the reference drew (almost) nothing";
+  expectSameColours(ref, got, 2, sceneName(GetParam()));
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, DifferentialModes,
+                         ::testing::Values(Scene::StripGouraud, Scene::FanModeGouraud, Scene::QuadsGouraud,
+                                           Scene::QuadStripGouraud, Scene::PolygonGouraud),
+                         [](const ::testing::TestParamInfo<Scene>& info) { return sceneName(info.param); });
+
 TEST(Differential, GouraudColoursWithinTwoLevels) {
   Image ref = reference(Scene::FanGouraud);
   Image got = primflow(Scene::FanGouraud, 1);
@@ -299,5 +327,6 @@ TEST_P(DifferentialThreads, ByteIdenticalForAnyThreadCount) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, DifferentialThreads,
                          ::testing::Values(Scene::FanIds, Scene::MeshIds, Scene::FanGouraud,
-                                           Scene::DepthFarThenNear, Scene::DepthNearThenFar, Scene::Showcase),
+                                           Scene::DepthFarThenNear, Scene::DepthNearThenFar, Scene::Showcase,
+                                           Scene::StripGouraud, Scene::QuadsGouraud, Scene::PolygonGouraud),
                          [](const ::testing::TestParamInfo<Scene>& info) { return sceneName(info.param); });

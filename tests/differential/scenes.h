@@ -19,6 +19,14 @@ enum class Scene : int {
   DepthNever, DepthLess, DepthEqual, DepthLequal, DepthGreater, DepthNotequal, DepthGequal, DepthAlways,
   DepthMaskOff,      // the far triangle with depth writes on, the others with glDepthMask(GL_FALSE)
   DepthRangeNarrow,  // glDepthRange(0.2, 0.6), far to near
+  // The other glBegin modes, each vertex its own colour (the colours are no affine function of
+  // position, so they show how each mode splits its polygons into triangles):
+  StripGouraud,      // GL_TRIANGLE_STRIP: a zig-zag band, both windings
+  FanModeGouraud,    // GL_TRIANGLE_FAN: the fan of FanGouraud in one glBegin
+  QuadsGouraud,      // GL_QUADS: a row of quadrilaterals of different shapes
+  QuadStripGouraud,  // GL_QUAD_STRIP: a curved band
+  PolygonGouraud,    // GL_POLYGON: a convex heptagon and a triangle-shaped pentagon
+  QuadMeshIds,       // the jittered grid of MeshIds as 144 GL_QUADS, each in its own ID colour
 };
 
 constexpr int kSize = 256;  // the scenes are drawn at 256 x 256, glOrtho(0, 256, 0, 256, -1, 1)
@@ -30,6 +38,7 @@ constexpr uint8_t kClear[4] = {16, 32, 48, 255};
 // R = (id + 1) & 255, G = (id + 1) >> 8, B = (id * 37) & 255 (for the eye only), A = 255.
 constexpr int kFanTriangles = 64;
 constexpr int kMeshTriangles = 288;
+constexpr int kMeshQuads = 144;
 constexpr int kNoId = -1;
 
 struct Image {

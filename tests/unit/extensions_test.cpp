@@ -119,3 +119,49 @@ TEST(Extensions, RecompilingReplacesButKeepsPendingDrawing) {
   EXPECT_FLOAT_EQ(static_cast<const float*>(d)[0], 0.25f);
   EXPECT_FLOAT_EQ(static_cast<const float*>(d)[15], 1.0f);
 }
+
+// A user primitive with a parameter-sized vertex array that calls the built-in `triangles`
+// draws, through glBegin, exactly what GL_TRIANGLES draws with the same triangles listed.
+TEST(Extensions, UserPrimitiveCallingTrianglesDrawsLikeGlTriangles) {
+  const char* kUserFan =
+      "primitive user_fan(int vertex_count; point vertex[]; interpolator_data interp_data[]) {\n"
+      "  for (int i = 2; i < vertex_count; i += 1) {\n"
+      "    point v[3];\n"
+      "    interpolator_data d[3];\n"
+      "    v[0] = vertex[0];      d[0] = interp_data[0];\n"
+      "    v[1] = vertex[i - 1];  d[1] = interp_data[i - 1];\n"
+      "    v[2] = vertex[i];      d[2] = interp_data[i];\n"
+      "    triangles(v, d);\n"
+      "  }\n"
+      "}\n";
+  const float xy[6][2] = {{8, 8}, {15, 3}, {15.5f, 12}, {9, 15.75f}, {1, 14}, {0.5f, 2}};
+  auto draw = [&](GLenum mode, bool listed) {
+    pfglClear(GL_COLOR_BUFFER_BIT);
+    pfglBegin(mode);
+    for (int i = 2; i < (listed ? 6 : 3); ++i)
+      for (int k : {0, i - 1, i}) {
+        if (!listed && k != 0) continue;
+        pfglColor3f(xy[k][0] / 16, xy[k][1] / 16, 0.5f);
+        pfglVertex3f(xy[k][0], xy[k][1], 0);
+      }
+    if (!listed)
+      for (int k = 1; k < 6; ++k) {
+        pfglColor3f(xy[k][0] / 16, xy[k][1] / 16, 0.5f);
+        pfglVertex3f(xy[k][0], xy[k][1], 0);
+      }
+    pfglEnd();
+    pfglFinish();
+  };
+  Ctx c;
+  ASSERT_NE(pfglCompilePrimitivesEXT(kUserFan), 0u);
+  draw(GL_TRIANGLES, true);
+  std::vector<unsigned char> want = c.px;
+  draw(pfglGetPrimitiveEXT("user_fan"), false);
+  int drawn = 0;
+  for (size_t i = 0; i < want.size(); i += 4) drawn += want[i + 2] != 0;
+  EXPECT_GT(drawn, 100);
+  EXPECT_EQ(c.px, want);
+  draw(GL_TRIANGLE_FAN, false);
+  EXPECT_EQ(c.px, want) << "the built-in GL_TRIANGLE_FAN";
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
