@@ -21,7 +21,9 @@ struct ModeName {
 constexpr ModeName kModes[] = {
     {GL_TRIANGLES, "triangles"},         {GL_TRIANGLE_STRIP, "triangle_strip"},
     {GL_TRIANGLE_FAN, "triangle_fan"},   {GL_QUADS, "quads"},
-    {GL_QUAD_STRIP, "quad_strip"},       {GL_POLYGON, "polygon"}};
+    {GL_QUAD_STRIP, "quad_strip"},       {GL_POLYGON, "polygon"},
+    {GL_POINTS, "points"},               {GL_LINES, "lines"},
+    {GL_LINE_STRIP, "line_strip"},       {GL_LINE_LOOP, "line_loop"}};
 
 bool registerBuiltins(PFcontextRec& ctx) {
   const BuiltinPrimitives& builtins = builtinPrimitives();
@@ -30,7 +32,7 @@ bool registerBuiltins(PFcontextRec& ctx) {
     return false;
   }
   for (const auto& p : builtins.in_order) {
-    GLenum mode = 0;
+    GLenum mode = PrimitiveRegistry::kAnyMode;
     for (const ModeName& m : kModes)
       if (p->name == m.primitive) mode = m.mode;
     ctx.primitives.add(p, mode);
@@ -44,7 +46,7 @@ PFcontextRec* currentContext() { return g_current; }
 
 void PrimitiveRegistry::add(std::shared_ptr<const CompiledPrimitive> p, GLenum mode) {
   auto known = mode_of.find(p->name);
-  if (mode == 0) mode = known != mode_of.end() ? known->second : next_mode++;
+  if (mode == kAnyMode) mode = known != mode_of.end() ? known->second : next_mode++;
   if (known != mode_of.end()) {
     replaced.push_back(by_name[p->name]);
     if (known->second != mode) by_mode.erase(known->second);

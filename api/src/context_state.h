@@ -36,7 +36,9 @@ struct PrimitiveRegistry {
 
   // Registers a compiled primitive under its name: a new name gets the next mode, a known
   // name keeps its mode (a built-in GL mode, or an earlier one) and gets the new program.
-  void add(std::shared_ptr<const CompiledPrimitive> p, GLenum mode = 0);
+  // `mode`: a GL mode of its own (GL_POINTS is 0, so "none" is kAnyMode).
+  static constexpr GLenum kAnyMode = 0xffffffffu;
+  void add(std::shared_ptr<const CompiledPrimitive> p, GLenum mode = kAnyMode);
 };
 
 }  // namespace pf

@@ -27,6 +27,10 @@ enum class Scene : int {
   QuadStripGouraud,  // GL_QUAD_STRIP: a curved band
   PolygonGouraud,    // GL_POLYGON: a convex heptagon and a triangle-shaped pentagon
   QuadMeshIds,       // the jittered grid of MeshIds as 144 GL_QUADS, each in its own ID colour
+  PointsGouraud,     // GL_POINTS on a grid of quarter-pixel offsets (integers and halves included)
+  LinesStar,         // GL_LINES in 48 directions from a centre and short ones at every offset
+  LineStripGouraud,  // GL_LINE_STRIP: a spiral
+  LineLoopGouraud,   // GL_LINE_LOOP: a star polygon, closed
 };
 
 constexpr int kSize = 256;  // the scenes are drawn at 256 x 256, glOrtho(0, 256, 0, 256, -1, 1)
