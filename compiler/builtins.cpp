@@ -126,6 +126,14 @@ void typeBuiltinCall(Expr& e, UnitKind unit, const std::function<void(SourceLoc,
   } else if (f == "depth_range") {
     if (!arity(0, 0)) return;
     e.type = Type::of(BaseType::Vector);
+  } else if (f == "culled") {
+    // GL's face culling for a polygon of this window-space orientation (> 0: counter-clockwise).
+    if (!arity(1, 1) || any_void || !needScalars()) return;
+    e.type = Type::of(BaseType::Bool);
+  } else if (f == "flat_shading") {
+    // glShadeModel(GL_FLAT): per-vertex parameters take the provoking vertex's value.
+    if (!arity(0, 0)) return;
+    e.type = Type::of(BaseType::Bool);
   } else if (f == "ztest") {
     if (unit != UnitKind::Primitive) {
       err(e.loc, "ztest() is only available in a primitive");

@@ -70,7 +70,9 @@ const char* opName(Op op);
 // Values of the GL context that programs can read (screen() and depth_range() use these).
 enum class StateValue : uint16_t {
   ViewportScaleX, ViewportOffsetX, ViewportScaleY, ViewportOffsetY, DepthScale, DepthOffset,
-  DepthNear, DepthFar
+  DepthNear, DepthFar,
+  // 1 or 0: culled() and flat_shading() read these
+  CullFront, CullBack, FrontFaceCCW, FlatShading
 };
 
 // An operand: a kind in the top 2 bits, an index below.

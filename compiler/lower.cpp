@@ -766,8 +766,7 @@ class Lowerer {
         std::vector<int> ac = convert(a, e.type), bc = convert(b, e.type);
         Binding out;
         out.type = e.type;
-        for (size_t k = 0; k < ac.size(); ++k)
-          out.comps.push_back(emit(Op::Sel, cls(ac[k]), false, c, ac[k], bc[k]));
+        for (size_t k = 0; k < ac.size(); ++k) out.comps.push_back(select(c, ac[k], bc[k]));
         return out;
       }
       case ExprKind::Call: return call(e);
@@ -1026,6 +1025,18 @@ class Lowerer {
     if (f == "int")
       return scalar(e.type, cls(arg(0)) == ValueClass::I32 ? arg(0) : emit(Op::F2I, ValueClass::I32, false, arg(0)));
     if (f == "ztest") return scalar(e.type, emit(Op::ZTest, ValueClass::Bool, true, farg(0), -1, -1, 0, e.loc));
+    if (f == "culled") {
+      // front = (orientation > 0) == counter-clockwise fronts; culled = front ? cull front : cull back.
+      auto on = [&](StateValue v) { return emit(Op::FLt, ValueClass::Bool, false, constF(0.5f), state(v)); };
+      int ccw_area = emit(Op::FLt, ValueClass::Bool, false, constF(0.0f), farg(0));
+      int ccw_front = on(StateValue::FrontFaceCCW);
+      int front = emit(Op::BOr, ValueClass::Bool, false, emit(Op::BAnd, ValueClass::Bool, false, ccw_area, ccw_front),
+                       emit(Op::BAnd, ValueClass::Bool, false, emit(Op::BNot, ValueClass::Bool, false, ccw_area),
+                            emit(Op::BNot, ValueClass::Bool, false, ccw_front)));
+      return scalar(e.type, emit(Op::Sel, ValueClass::Bool, false, front, on(StateValue::CullFront), on(StateValue::CullBack)));
+    }
+    if (f == "flat_shading")
+      return scalar(e.type, emit(Op::FLt, ValueClass::Bool, false, constF(0.5f), state(StateValue::FlatShading)));
     if (f == "depth_range") {
       Binding out;
       out.type = e.type;

@@ -578,8 +578,8 @@ class Analyzer {
         if (t1 == t2) e.type = t1;
         else if (isNumericScalar(t1) && isNumericScalar(t2)) e.type = Type::of(BaseType::Float);
         else err(e.loc, "the two results of '?:' have different types: " + typeName(t1) + " and " + typeName(t2));
-        if (e.type.isArray() || e.type.base == BaseType::InterpData)
-          err(e.loc, "'?:' chooses between scalars or vectors, not " + typeName(e.type));
+        if (e.type.isArray())
+          err(e.loc, "'?:' chooses between scalars, vectors or interpolator_data, not " + typeName(e.type));
         return;
       }
       case ExprKind::Member: {

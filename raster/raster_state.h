@@ -20,6 +20,11 @@ struct RasterState {
   bool depth_test = false;
   bool depth_write = true;
   DepthFunc depth_func = DepthFunc::Less;
+  // Polygon state the primitives read (culled(), flat_shading()).
+  bool cull_front = false, cull_back = false, front_ccw = true, flat_shading = false;
+  // Colour channels written (bit k: channel k of RGBA). The renderer keeps one mask per flush,
+  // so that the deferred shading pass writes every pixel with the mask its instance had.
+  uint8_t color_mask = 0xf;
   // Iterations one loop may run per pixel (pixel program) or per instance (setup) before the
   // pixel, or the instance, is stopped and the hit reported.
   uint32_t iteration_cap = 65536;

@@ -21,11 +21,13 @@ void Renderer::setTarget(uint8_t* color, float* depth, int width, int height) {
   scene_.bins.assign(static_cast<size_t>(scene_.tiles_x) * scene_.tiles_y, TileBin{});
 }
 
-void Renderer::clear(bool color, bool depth, const float rgba[4], float z) {
-  // A clear after drawing ends the frame so far: what was drawn must land first.
-  if (!scene_.instances.empty()) flush();
+void Renderer::clear(bool color, bool depth, const float rgba[4], float z, uint8_t color_mask) {
+  // A clear after drawing ends the frame so far: what was drawn must land first; so does a
+  // pending colour clear with another mask.
+  if (!scene_.instances.empty() || (color && scene_.clear.color && scene_.clear.color_mask != color_mask)) flush();
   if (color) {
     scene_.clear.color = true;
+    scene_.clear.color_mask = color_mask;
     std::copy(rgba, rgba + 4, scene_.clear.rgba);
   }
   if (depth) {
@@ -52,6 +54,9 @@ bool Renderer::submit(const CompiledPrimitive& prim, const uint32_t* params, con
                       const ChannelLayout& layout, const RasterState& state, const ShadeState& shade,
                       int sequence_points) {
   if (!color_) return false;
+  // The shading pass writes with one colour mask: instances with another wait for a flush.
+  if (!scene_.instances.empty() && scene_.color_mask != state.color_mask) flush();
+  scene_.color_mask = state.color_mask;
   // Shared state: appended only when it changes.
   if (scene_.states.empty() || !(scene_.states.back() == state)) scene_.states.push_back(state);
   if (scene_.layouts.empty() || !(scene_.layouts.back() == layout)) scene_.layouts.push_back(layout);
@@ -150,8 +155,17 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
   if (scene_.clear.color) {
     uint8_t c[4];
     for (int k = 0; k < 4; ++k) c[k] = toUnorm8(scene_.clear.rgba[k]);
+    const uint8_t mask = scene_.clear.color_mask;
     for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x) std::copy(c, c + 4, color_ + (static_cast<size_t>(y0 + y) * width_ + x0 + x) * 4);
+      for (int x = 0; x < w; ++x) {
+        uint8_t* px = color_ + (static_cast<size_t>(y0 + y) * width_ + x0 + x) * 4;
+        if (mask == 0xf) {
+          std::copy(c, c + 4, px);
+        } else {
+          for (int k = 0; k < 4; ++k)
+            if (mask & (1u << k)) px[k] = c[k];
+        }
+      }
   }
   if (scene_.clear.depth && depth_)
     for (int y = 0; y < h; ++y)
@@ -200,7 +214,7 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
       }
     }
   }
-  ShadeTarget st{color_, width_, x0, y0, w, h};
+  ShadeTarget st{color_, width_, x0, y0, w, h, scene_.color_mask};
   s.pixels_shaded += shadeTile(s.shade_ids.data(), s.slot_planes.data(), scene_.shades.data(), st);
 }
 

@@ -50,8 +50,9 @@ class Renderer : private SubInstanceSink {
   // The colour buffer (caller's, RGBA8, row 0 at the bottom) and the depth buffer (may be null).
   void setTarget(uint8_t* color, float* depth, int width, int height);
 
-  // Recorded; applied at flush before the instances that follow it.
-  void clear(bool color, bool depth, const float rgba[4], float z);
+  // Recorded; applied at flush before the instances that follow it. `color_mask`: the RGBA
+  // channels (bit k: channel k) the colour clear writes.
+  void clear(bool color, bool depth, const float rgba[4], float z, uint8_t color_mask = 0xf);
 
   // Runs setup and bins the instance (`sequence_points`: how many it has, for primitives
   // with parameter-sized arrays; otherwise the primitive's own count). Instances of other

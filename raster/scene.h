@@ -30,6 +30,7 @@ struct PendingClear {
   bool color = false, depth = false;
   float rgba[4] = {0, 0, 0, 0};
   float z = 1.0f;
+  uint8_t color_mask = 0xf;  // RGBA channels the colour clear writes
 };
 
 struct Scene {
@@ -41,6 +42,7 @@ struct Scene {
   std::vector<TileBin> bins;
   int tiles_x = 0, tiles_y = 0;
   int gbuffer_slots = 0;
+  uint8_t color_mask = 0xf;  // of every instance in the scene (a change of mask flushes)
   PendingClear clear;
 
   bool empty() const { return instances.empty() && !clear.color && !clear.depth; }

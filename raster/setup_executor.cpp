@@ -41,6 +41,10 @@ SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& 
       case StateValue::DepthOffset: return s.depth_offset;
       case StateValue::DepthNear: return s.depth_near;
       case StateValue::DepthFar: return s.depth_far;
+      case StateValue::CullFront: return s.cull_front ? 1.0f : 0.0f;
+      case StateValue::CullBack: return s.cull_back ? 1.0f : 0.0f;
+      case StateValue::FrontFaceCCW: return s.front_ccw ? 1.0f : 0.0f;
+      case StateValue::FlatShading: return s.flat_shading ? 1.0f : 0.0f;
     }
     return 0.0f;
   };

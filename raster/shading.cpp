@@ -19,7 +19,8 @@ uint64_t shadeTile(const uint32_t* shade_ids, const float* const* slots, const S
       float c[4];
       for (int k = 0; k < 4; ++k) c[k] = s.color_slot >= 0 ? slots[s.color_slot + k][i] : s.constant_color[k];
       uint8_t* px = t.color + (static_cast<size_t>(t.y0 + y) * t.stride + t.x0 + x) * 4;
-      for (int k = 0; k < 4; ++k) px[k] = toUnorm8(c[k]);
+      for (int k = 0; k < 4; ++k)
+        if (t.color_mask & (1u << k)) px[k] = toUnorm8(c[k]);
       ++shaded;
     }
   }

@@ -19,6 +19,7 @@ struct ShadeTarget {
   uint8_t* color;   // RGBA8, row 0 at the bottom
   int stride;       // pixels per row
   int x0, y0, w, h; // the tile's pixels in window coordinates
+  uint8_t color_mask = 0xf;  // RGBA channels written (bit k: channel k)
 };
 
 // Shades the tile: for every pixel with a non-zero shade id (1 + index into `shades`).

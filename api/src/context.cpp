@@ -44,6 +44,15 @@ bool registerBuiltins(PFcontextRec& ctx) {
 
 PFcontextRec* currentContext() { return g_current; }
 
+PFcontextRec* contextOutsideBegin() {
+  PFcontextRec* ctx = g_current;
+  if (ctx && ctx->in_begin) {
+    ctx->setError(GL_INVALID_OPERATION);
+    return nullptr;
+  }
+  return ctx;
+}
+
 void PrimitiveRegistry::add(std::shared_ptr<const CompiledPrimitive> p, GLenum mode) {
   auto known = mode_of.find(p->name);
   if (mode == kAnyMode) mode = known != mode_of.end() ? known->second : next_mode++;
@@ -79,6 +88,12 @@ PFcontext pfCreateContextAttribs(const int* attribs) {
   try {
     auto* ctx = new PFcontextRec(threads);
     ctx->format = format;
+    // The names glVertex, glNormal and glTexCoord set, with GL's initial values.
+    ctx->vertex_param = ctx->paramId("vertex");
+    ctx->normal_param = ctx->paramId("normal");
+    ctx->texcoord_param = ctx->paramId("texcoord");
+    ctx->current_params[ctx->normal_param - 1] = pf::ParamValue{{0, 0, 1}, 3};
+    ctx->current_params[ctx->texcoord_param - 1] = pf::ParamValue{{0, 0, 0, 1}, 4};
     ctx->depth_bits = depth_bits;
     ctx->iteration_cap = cap > 0 ? static_cast<unsigned>(cap) : pf::kDefaultIterationCap;
     if (!pf::registerBuiltins(*ctx)) {

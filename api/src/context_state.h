@@ -16,10 +16,29 @@
 
 namespace pf {
 
-// One glSequencePointEXT / glVertex: the current values bound together.
-struct SequencePoint {
-  glm::vec4 position;  // clip coordinates (point parameters are transformed when bound)
-  glm::vec4 color;
+// The current value of a named parameter (paper section 3.1): set by pfglRastParam*EXT, and
+// by glVertex, glNormal and glTexCoord for the names "vertex", "normal" and "texcoord".
+struct ParamValue {
+  double v[16] = {};
+  int count = 0;  // values given; 0: never set
+};
+
+// How the primitive of a glBegin takes one of its parameters: the current value it reads, and
+// where the value goes in the snapshot each sequence point takes (its row).
+struct FeedEntry {
+  const ParamInfo* info;
+  GLuint name;     // parameter name id (index + 1 into the context's names)
+  int row_offset;  // floats from the start of a row
+};
+
+// A GL matrix stack (GL 1.5 section 2.11.2): the top is the current matrix; its depth limit
+// is what glGetIntegerv(GL_MAX_*_STACK_DEPTH) reports.
+struct MatrixStack {
+  explicit MatrixStack(size_t max_depth) : max_depth(max_depth) {}
+  std::vector<glm::mat4> below;  // the pushed matrices
+  glm::mat4 top{1.0f};
+  size_t max_depth;
+  size_t depth() const { return below.size() + 1; }
 };
 
 // Registered primitives: by name, and by the enum glBegin takes.
@@ -67,20 +86,44 @@ struct PFcontextRec {
   bool depth_test = false;
   bool depth_write = true;
   GLenum depth_func = GL_LESS;
+  bool cull = false;
+  GLenum cull_face = GL_BACK;
+  GLenum front_face = GL_CCW;
+  GLenum shade_model = GL_SMOOTH;
+  uint8_t color_mask = 0xf;  // bit k: RGBA channel k written
+  int pack_alignment = 4;
   GLenum matrix_mode = GL_MODELVIEW;
-  glm::mat4 modelview{1.0f}, projection{1.0f};
+  pf::MatrixStack modelview{32}, projection{4}, texture{4};
   glm::vec4 current_color{1.0f, 1.0f, 1.0f, 1.0f};
 
-  // Immediate mode.
+  // Named parameters: ids (1, 2, ...) by name, and their current values (index id - 1).
+  std::map<std::string, GLuint> param_ids;
+  std::vector<std::string> param_names;
+  std::vector<pf::ParamValue> current_params;
+  GLuint vertex_param = 0, normal_param = 0, texcoord_param = 0;
+  GLuint paramId(const std::string& name);  // interns the name
+
+  // Immediate mode: between glBegin and glEnd, each sequence point appends a row with the
+  // values of the primitive's parameters (points already in clip coordinates) and the colour.
   bool in_begin = false;
+  GLenum begin_mode = 0;
   const pf::CompiledPrimitive* begin_primitive = nullptr;
-  std::vector<pf::SequencePoint> sequence_points;
+  std::vector<pf::FeedEntry> feed;
+  int row_floats = 0;
+  glm::mat4 begin_mvp{1.0f};  // matrices cannot change inside glBegin / glEnd
+  size_t rows_count = 0;
+  std::vector<uint32_t> rows;
+  std::vector<float> row_colors;
+  std::string reject_reason;  // non-empty: the sequence points do not fit the primitive
   // Scratch for building instances (kept to avoid allocation per instance).
   std::vector<uint32_t> param_block;
   std::vector<float> vertex_channels;
 
   void setError(GLenum e) {
     if (error == GL_NO_ERROR) error = e;
+  }
+  pf::MatrixStack& matrixStack() {
+    return matrix_mode == GL_PROJECTION ? projection : matrix_mode == GL_TEXTURE ? texture : modelview;
   }
   // Runs all recorded drawing, then reports runaway primitives: GL_TOO_MANY_ITERATIONS_EXT and
   // a line on stderr.
@@ -90,4 +133,7 @@ struct PFcontextRec {
 
 namespace pf {
 PFcontextRec* currentContext();
+// The current context, or null if there is none or (GL_INVALID_OPERATION set) it is between
+// glBegin and glEnd, where GL allows only the vertex-attribute commands.
+PFcontextRec* contextOutsideBegin();
 }

@@ -1,8 +1,6 @@
-// The GL-1.x entry points of the spine subset: errors, clears, viewport, matrices, enables,
-// and immediate mode. glVertex binds the current values as a sequence point (paper section
-// 3.1); glEnd groups the sequence points into instances of the mode's primitive and hands each
-// to the renderer. Nothing here knows what a triangle is: the primitive's declaration says how
-// many sequence points an instance takes and which parameters it wants.
+// The GL-1.x state commands: errors, strings, synchronisation, clears, viewport, depth state,
+// enables. (Matrices: matrix_commands.cpp; glBegin / glEnd and what comes between them:
+// immediate_mode.cpp.)
 #include <bit>
 #include <cstdio>
 
@@ -17,19 +15,7 @@ using pf::currentContext;
 
 namespace {
 
-// Commands that GL forbids between glBegin and glEnd report GL_INVALID_OPERATION.
-PFcontextRec* outsideBegin() {
-  PFcontextRec* ctx = currentContext();
-  if (ctx && ctx->in_begin) {
-    ctx->setError(GL_INVALID_OPERATION);
-    return nullptr;
-  }
-  return ctx;
-}
-
-glm::mat4& currentMatrix(PFcontextRec& ctx) {
-  return ctx.matrix_mode == GL_PROJECTION ? ctx.projection : ctx.modelview;
-}
+PFcontextRec* outsideBegin() { return pf::contextOutsideBegin(); }
 
 pf::DepthFunc toDepthFunc(GLenum f) {
   switch (f) {
@@ -45,56 +31,6 @@ pf::DepthFunc toDepthFunc(GLenum f) {
 }
 
 float clamp01(double v) { return v < 0 ? 0.0f : v > 1 ? 1.0f : static_cast<float>(v); }
-
-// Hands the sequence points gathered since glBegin to the renderer: for a primitive with a
-// fixed count, one instance per `sequence_points` of them (a trailing incomplete group is
-// dropped, as GL drops it); for one with parameter-sized arrays, one instance holding them all.
-void submitInstances(PFcontextRec& ctx) {
-  const pf::CompiledPrimitive& prim = *ctx.begin_primitive;
-  const size_t total = ctx.sequence_points.size();
-  const bool sized = prim.sequence_points == 0;
-  const size_t per = sized ? total : static_cast<size_t>(prim.sequence_points);
-  if (per == 0) return;
-  const int count = static_cast<int>(per);
-  const pf::ParamInfo* vertex = prim.findParam("vertex");
-  // The colour is the one per-vertex shading parameter so far: 4 channels, interpolated
-  // perspective-correct (GL's default), in G-buffer slots 0-3.
-  pf::ChannelLayout layout;
-  if (prim.has_interp_data) layout = pf::ChannelLayout::ofKind(4, pf::InterpKind::PerspectiveLinear);
-  pf::ShadeState shade;
-  if (prim.has_interp_data) {
-    shade.color_slot = 0;
-  } else {
-    for (int k = 0; k < 4; ++k) shade.constant_color[k] = ctx.current_color[k];
-  }
-  const pf::RasterState state = ctx.rasterState();
-  ctx.param_block.assign(static_cast<size_t>(prim.paramFloats(count)), 0u);
-  if (sized) ctx.param_block[static_cast<size_t>(prim.count_slot)] = static_cast<uint32_t>(count);
-  ctx.vertex_channels.assign(per * static_cast<size_t>(layout.count), 0.0f);
-  for (size_t first = 0; first + per <= total; first += per) {
-    for (size_t i = 0; i < per; ++i) {
-      const pf::SequencePoint& sp = ctx.sequence_points[first + i];
-      if (vertex) {
-        const size_t at = static_cast<size_t>(prim.paramOffset(*vertex, count, static_cast<int>(i)));
-        for (int c = 0; c < 4; ++c) ctx.param_block[at + c] = std::bit_cast<uint32_t>(sp.position[c]);
-      }
-      for (int c = 0; c < layout.count; ++c) ctx.vertex_channels[i * layout.count + c] = sp.color[c];
-    }
-    ctx.renderer.submit(prim, ctx.param_block.data(), ctx.vertex_channels.data(), layout, state, shade, count);
-  }
-}
-
-// The parameters this API can feed so far: a per-sequence-point point `vertex`, the count of
-// a parameter-sized one, and the interpolator_data. A primitive wanting others cannot be drawn
-// through glBegin yet.
-bool feedable(const pf::CompiledPrimitive& prim) {
-  for (const pf::ParamInfo& p : prim.params) {
-    bool is_vertex = p.name == "vertex" && p.per_sequence_point && p.type.base == pf::BaseType::Point;
-    bool is_count = prim.sequence_points == 0 && !p.per_sequence_point && p.offset == prim.count_slot;
-    if (!is_vertex && !is_count) return false;
-  }
-  return true;
-}
 
 }  // namespace
 
@@ -130,6 +66,11 @@ pf::RasterState PFcontextRec::rasterState() const {
   s.depth_write = depth_write;
   s.depth_func = toDepthFunc(depth_func);
   s.iteration_cap = iteration_cap;
+  s.cull_front = cull && (cull_face == GL_FRONT || cull_face == GL_FRONT_AND_BACK);
+  s.cull_back = cull && (cull_face == GL_BACK || cull_face == GL_FRONT_AND_BACK);
+  s.front_ccw = front_face == GL_CCW;
+  s.flat_shading = shade_model == GL_FLAT;
+  s.color_mask = color_mask;
   return s;
 }
 
@@ -178,7 +119,8 @@ void pfglClear(GLbitfield mask) {
     return;
   }
   bool depth = (mask & GL_DEPTH_BUFFER_BIT) && ctx->depth_bits > 0 && ctx->depth_write;
-  ctx->renderer.clear((mask & GL_COLOR_BUFFER_BIT) != 0, depth, ctx->clear_color, ctx->clear_depth);
+  ctx->renderer.clear((mask & GL_COLOR_BUFFER_BIT) != 0 && ctx->color_mask != 0, depth, ctx->clear_color,
+                      ctx->clear_depth, ctx->color_mask);
 }
 
 void pfglClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) {
@@ -228,114 +170,68 @@ void pfglDepthRange(GLclampd zNear, GLclampd zFar) {
   ctx->depth_range[1] = clamp01(zFar);
 }
 
+// The capabilities primflow has: GL_DEPTH_TEST, GL_CULL_FACE.
+static bool* capability(PFcontextRec& ctx, GLenum cap) {
+  switch (cap) {
+    case GL_DEPTH_TEST: return &ctx.depth_test;
+    case GL_CULL_FACE: return &ctx.cull;
+    default: ctx.setError(GL_INVALID_ENUM); return nullptr;
+  }
+}
+
 void pfglEnable(GLenum cap) {
   PFcontextRec* ctx = outsideBegin();
   if (!ctx) return;
-  if (cap == GL_DEPTH_TEST) ctx->depth_test = true;
-  else ctx->setError(GL_INVALID_ENUM);
+  if (bool* c = capability(*ctx, cap)) *c = true;
 }
 
 void pfglDisable(GLenum cap) {
   PFcontextRec* ctx = outsideBegin();
   if (!ctx) return;
-  if (cap == GL_DEPTH_TEST) ctx->depth_test = false;
-  else ctx->setError(GL_INVALID_ENUM);
+  if (bool* c = capability(*ctx, cap)) *c = false;
 }
 
 GLboolean pfglIsEnabled(GLenum cap) {
   PFcontextRec* ctx = outsideBegin();
   if (!ctx) return GL_FALSE;
-  if (cap == GL_DEPTH_TEST) return ctx->depth_test ? GL_TRUE : GL_FALSE;
-  ctx->setError(GL_INVALID_ENUM);
-  return GL_FALSE;
+  bool* c = capability(*ctx, cap);
+  return c && *c ? GL_TRUE : GL_FALSE;
 }
 
-void pfglMatrixMode(GLenum mode) {
+void pfglColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a) {
   PFcontextRec* ctx = outsideBegin();
   if (!ctx) return;
-  if (mode != GL_MODELVIEW && mode != GL_PROJECTION) {
+  ctx->color_mask = static_cast<uint8_t>((r ? 1 : 0) | (g ? 2 : 0) | (b ? 4 : 0) | (a ? 8 : 0));
+}
+
+void pfglCullFace(GLenum mode) {
+  PFcontextRec* ctx = outsideBegin();
+  if (!ctx) return;
+  if (mode != GL_FRONT && mode != GL_BACK && mode != GL_FRONT_AND_BACK) {
     ctx->setError(GL_INVALID_ENUM);
     return;
   }
-  ctx->matrix_mode = mode;
+  ctx->cull_face = mode;
 }
 
-void pfglLoadIdentity(void) {
-  if (PFcontextRec* ctx = outsideBegin()) currentMatrix(*ctx) = glm::mat4(1.0f);
-}
-
-void pfglOrtho(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) {
+void pfglFrontFace(GLenum mode) {
   PFcontextRec* ctx = outsideBegin();
   if (!ctx) return;
-  if (l == r || b == t || n == f) {
-    ctx->setError(GL_INVALID_VALUE);
-    return;
-  }
-  glm::mat4& m = currentMatrix(*ctx);
-  m = m * glm::mat4(glm::ortho(l, r, b, t, n, f));
-}
-
-void pfglFrustum(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) {
-  PFcontextRec* ctx = outsideBegin();
-  if (!ctx) return;
-  if (n <= 0 || f <= 0 || l == r || b == t || n == f) {
-    ctx->setError(GL_INVALID_VALUE);
-    return;
-  }
-  glm::mat4& m = currentMatrix(*ctx);
-  m = m * glm::mat4(glm::frustum(l, r, b, t, n, f));
-}
-
-void pfglBegin(GLenum mode) {
-  PFcontextRec* ctx = currentContext();
-  if (!ctx) return;
-  if (ctx->in_begin) {
-    ctx->setError(GL_INVALID_OPERATION);
-    return;
-  }
-  auto it = ctx->primitives.by_mode.find(mode);
-  if (it == ctx->primitives.by_mode.end()) {
+  if (mode != GL_CW && mode != GL_CCW) {
     ctx->setError(GL_INVALID_ENUM);
     return;
   }
-  if (!feedable(*it->second)) {
-    ctx->setError(GL_INVALID_OPERATION);
-    return;
-  }
-  ctx->in_begin = true;
-  ctx->begin_primitive = it->second.get();
-  ctx->sequence_points.clear();
+  ctx->front_face = mode;
 }
 
-void pfglEnd(void) {
-  PFcontextRec* ctx = currentContext();
+void pfglShadeModel(GLenum mode) {
+  PFcontextRec* ctx = outsideBegin();
   if (!ctx) return;
-  if (!ctx->in_begin) {
-    ctx->setError(GL_INVALID_OPERATION);
+  if (mode != GL_FLAT && mode != GL_SMOOTH) {
+    ctx->setError(GL_INVALID_ENUM);
     return;
   }
-  ctx->in_begin = false;
-  if (ctx->color) submitInstances(*ctx);
-  ctx->sequence_points.clear();
-  ctx->begin_primitive = nullptr;
+  ctx->shade_model = mode;
 }
-
-void pfglVertex3f(GLfloat x, GLfloat y, GLfloat z) {
-  PFcontextRec* ctx = currentContext();
-  if (!ctx || !ctx->in_begin) return;  // outside Begin/End a vertex has no effect (GL: undefined)
-  pf::SequencePoint sp;
-  sp.position = ctx->projection * (ctx->modelview * glm::vec4(x, y, z, 1.0f));
-  sp.color = ctx->current_color;
-  ctx->sequence_points.push_back(sp);
-}
-
-void pfglVertex2f(GLfloat x, GLfloat y) { pfglVertex3f(x, y, 0.0f); }
-
-void pfglColor4f(GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
-  PFcontextRec* ctx = currentContext();
-  if (ctx) ctx->current_color = glm::vec4(r, g, b, a);
-}
-
-void pfglColor3f(GLfloat r, GLfloat g, GLfloat b) { pfglColor4f(r, g, b, 1.0f); }
 
 }  // extern "C"

@@ -31,6 +31,14 @@ enum class Scene : int {
   LinesStar,         // GL_LINES in 48 directions from a centre and short ones at every offset
   LineStripGouraud,  // GL_LINE_STRIP: a spiral
   LineLoopGouraud,   // GL_LINE_LOOP: a star polygon, closed
+  // Polygon and framebuffer state:
+  CullBack,          // the ID fan (odd triangles clockwise) with back faces culled
+  CullFrontCw,       // glFrontFace(GL_CW), glCullFace(GL_FRONT)
+  CullBoth,          // GL_FRONT_AND_BACK: nothing but the clear colour
+  FlatModes,         // glShadeModel(GL_FLAT) with every polygon and line mode: provoking vertices
+  ColorMasks,        // glColorMask on clears and on drawing
+  MatrixOps,         // perspective, push / pop, translate, rotate, scale, load and mult matrix
+  NearClipCull,      // perspective triangles crossing the near plane, culled by orientation
 };
 
 constexpr int kSize = 256;  // the scenes are drawn at 256 x 256, glOrtho(0, 256, 0, 256, -1, 1)

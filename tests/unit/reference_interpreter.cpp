@@ -78,6 +78,10 @@ class Interpreter {
       case StateValue::DepthOffset: return st_.depth_offset;
       case StateValue::DepthNear: return st_.depth_near;
       case StateValue::DepthFar: return st_.depth_far;
+      case StateValue::CullFront: return st_.cull_front ? 1.0f : 0.0f;
+      case StateValue::CullBack: return st_.cull_back ? 1.0f : 0.0f;
+      case StateValue::FrontFaceCCW: return st_.front_ccw ? 1.0f : 0.0f;
+      case StateValue::FlatShading: return st_.flat_shading ? 1.0f : 0.0f;
     }
     return 0.0f;
   }

@@ -25,25 +25,75 @@ void pfglViewport(GLint x, GLint y, GLsizei width, GLsizei height);
 void pfglDepthFunc(GLenum func);
 void pfglDepthMask(GLboolean flag);
 void pfglDepthRange(GLclampd zNear, GLclampd zFar);
-void pfglEnable(GLenum cap);
+void pfglEnable(GLenum cap);   /* GL_DEPTH_TEST, GL_CULL_FACE; others: GL_INVALID_ENUM */
 void pfglDisable(GLenum cap);
 GLboolean pfglIsEnabled(GLenum cap);
+void pfglColorMask(GLboolean red, GLboolean green, GLboolean blue, GLboolean alpha);
 
-/* Matrices */
+/* Polygons: face culling, winding, flat or smooth shading (GL's provoking vertex per mode) */
+void pfglCullFace(GLenum mode);
+void pfglFrontFace(GLenum mode);
+void pfglShadeModel(GLenum mode);
+
+/* State queries (the state listed in docs/api.md; others: GL_INVALID_ENUM; NULL: ignored) */
+void pfglGetBooleanv(GLenum pname, GLboolean *params);
+void pfglGetIntegerv(GLenum pname, GLint *params);
+void pfglGetFloatv(GLenum pname, GLfloat *params);
+void pfglGetDoublev(GLenum pname, GLdouble *params);
+
+/* Reading pixels: GL_RGBA / GL_RGB x GL_UNSIGNED_BYTE / GL_FLOAT, GL_DEPTH_COMPONENT x
+ * GL_FLOAT / GL_UNSIGNED_INT / GL_UNSIGNED_SHORT / GL_UNSIGNED_BYTE; rows aligned to
+ * GL_PACK_ALIGNMENT (glPixelStorei: 1, 2, 4 or 8). Finishes drawing first. */
+void pfglPixelStorei(GLenum pname, GLint param);
+void pfglReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type,
+                    GLvoid *pixels);
+
+/* Matrices (stacks: modelview 32 deep, projection and texture 4; NULL matrices are ignored) */
 void pfglMatrixMode(GLenum mode);
 void pfglLoadIdentity(void);
+void pfglLoadMatrixf(const GLfloat *m);
+void pfglLoadMatrixd(const GLdouble *m);
+void pfglMultMatrixf(const GLfloat *m);
+void pfglMultMatrixd(const GLdouble *m);
+void pfglTranslatef(GLfloat x, GLfloat y, GLfloat z);
+void pfglTranslated(GLdouble x, GLdouble y, GLdouble z);
+void pfglRotatef(GLfloat angle, GLfloat x, GLfloat y, GLfloat z);
+void pfglRotated(GLdouble angle, GLdouble x, GLdouble y, GLdouble z);
+void pfglScalef(GLfloat x, GLfloat y, GLfloat z);
+void pfglScaled(GLdouble x, GLdouble y, GLdouble z);
 void pfglOrtho(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top, GLdouble zNear,
                GLdouble zFar);
 void pfglFrustum(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top, GLdouble zNear,
                  GLdouble zFar);
+void pfglPushMatrix(void);
+void pfglPopMatrix(void);
 
-/* Immediate mode */
+/* Immediate mode. Every glBegin mode (GL_POINTS ... GL_POLYGON) is a primitive of
+ * primitives/*.pfl. The vector forms ignore a NULL pointer. */
 void pfglBegin(GLenum mode);
 void pfglEnd(void);
 void pfglVertex2f(GLfloat x, GLfloat y);
 void pfglVertex3f(GLfloat x, GLfloat y, GLfloat z);
+void pfglVertex4f(GLfloat x, GLfloat y, GLfloat z, GLfloat w);
+void pfglVertex2d(GLdouble x, GLdouble y);
+void pfglVertex3d(GLdouble x, GLdouble y, GLdouble z);
+void pfglVertex4d(GLdouble x, GLdouble y, GLdouble z, GLdouble w);
+void pfglVertex2fv(const GLfloat *v);
+void pfglVertex3fv(const GLfloat *v);
+void pfglVertex4fv(const GLfloat *v);
+void pfglVertex2dv(const GLdouble *v);
+void pfglVertex3dv(const GLdouble *v);
+void pfglVertex4dv(const GLdouble *v);
 void pfglColor3f(GLfloat red, GLfloat green, GLfloat blue);
 void pfglColor4f(GLfloat red, GLfloat green, GLfloat blue, GLfloat alpha);
+void pfglColor3fv(const GLfloat *v);
+void pfglColor4fv(const GLfloat *v);
+void pfglColor3ub(GLubyte red, GLubyte green, GLubyte blue);
+void pfglColor4ub(GLubyte red, GLubyte green, GLubyte blue, GLubyte alpha);
+void pfglNormal3f(GLfloat nx, GLfloat ny, GLfloat nz);
+void pfglNormal3fv(const GLfloat *v);
+void pfglTexCoord1f(GLfloat s);
+void pfglTexCoord2f(GLfloat s, GLfloat t);
 
 /* ---- PixelFlow extensions (tokens in primflow's own range, 0x31000-0x31FFF) ---------------- */
 #define GL_TOO_MANY_ITERATIONS_EXT 0x31001 /* error: a primitive program hit the iteration cap */
@@ -61,6 +111,28 @@ void pfglGetCompileLogEXT(GLuint module, GLsizei bufSize, GLsizei *length, GLcha
 /* The glBegin mode of a registered primitive by name (built-in ones included, e.g.
  * "triangles" gives GL_TRIANGLES); 0 and GL_INVALID_VALUE if there is none. */
 GLenum pfglGetPrimitiveEXT(const GLchar *name);
+
+/* Named parameters (paper section 3.1). pfglGetParamNameEXT interns a parameter name and
+ * returns its id (never 0; NULL or "": GL_INVALID_VALUE, 0). "vertex", "normal" and
+ * "texcoord" are the names glVertex, glNormal and glTexCoord set. pfglRastParam*EXT set a
+ * parameter's current value (allowed inside glBegin / glEnd; unknown id: GL_INVALID_VALUE;
+ * the vector forms take 1 to 16 values). pfglSequencePointEXT binds the current values of
+ * the parameters the glBegin's primitive declares, as glVertex does after setting "vertex"
+ * (outside glBegin / glEnd: GL_INVALID_OPERATION). Per-sequence-point parameters (arrays)
+ * take each sequence point's value, per-primitive ones the value at the first sequence point
+ * of their instance; point parameters are transformed to clip coordinates by the matrices
+ * current at glBegin. A glBegin / glEnd whose values do not fit the declaration (a parameter
+ * never set, a wrong number of values, or -- for a primitive of the extension -- sequence
+ * points that do not make whole instances) draws nothing, sets GL_INVALID_OPERATION at
+ * glEnd and says why on stderr. */
+GLuint pfglGetParamNameEXT(const GLchar *name);
+void pfglRastParamfEXT(GLuint name, GLfloat value);
+void pfglRastParamiEXT(GLuint name, GLint value);
+void pfglRastParam3fEXT(GLuint name, GLfloat x, GLfloat y, GLfloat z);
+void pfglRastParam4fEXT(GLuint name, GLfloat x, GLfloat y, GLfloat z, GLfloat w);
+void pfglRastParamfvEXT(GLuint name, GLsizei count, const GLfloat *values);
+void pfglRastParamivEXT(GLuint name, GLsizei count, const GLint *values);
+void pfglSequencePointEXT(void);
 
 #ifdef __cplusplus
 }

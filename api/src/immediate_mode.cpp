@@ -1,0 +1,334 @@
+// glBegin / glEnd and what goes between them: the paper's sequence points (section 3.1).
+//
+// Every parameter has a current value, set by pfglRastParam*EXT (and by glVertex, glNormal,
+// glTexCoord for "vertex", "normal", "texcoord"); the current colour is the per-vertex shading
+// parameter. pfglSequencePointEXT binds the current values of the parameters the glBegin's
+// primitive declares into a row, as glVertex does after setting "vertex". glEnd makes instances
+// of the rows: per-sequence-point parameters from each row, per-primitive ones from the first
+// row of their instance. Nothing here knows what a triangle is: the primitive's declaration
+// says how many sequence points an instance takes and which parameters it wants.
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdio>
+
+#include <primflow/gl.h>
+
+#include "api/src/context_state.h"
+
+using pf::currentContext;
+
+namespace {
+
+// Converts the current value `v` to parameter `p`'s type (one sequence point's element):
+// false, with `why`, if it does not fit. Points take 2 to 4 values (z = 0, w = 1 by default)
+// and are transformed to clip coordinates, as glVertex's; colours 3 or 4 (alpha 1).
+bool convertValue(const pf::ParamInfo& p, const pf::ParamValue& v, const glm::mat4& mvp, uint32_t* out,
+                  std::string& why) {
+  using pf::BaseType;
+  const int want = p.components;
+  const bool element_is_base = p.type.dims.size() <= (p.per_sequence_point ? 1u : 0u);
+  auto bad = [&](const std::string& expected) {
+    why = "parameter '" + p.name + "' (" + pf::typeName(p.type) + ") needs " + expected + ", its current value has " +
+          std::to_string(v.count) + (v.count == 1 ? " value" : " values");
+    return false;
+  };
+  if (v.count == 0) {
+    why = "parameter '" + p.name + "' has no value (set it with pfglRastParam*EXT before the sequence point)";
+    return false;
+  }
+  if (element_is_base && p.type.base == BaseType::Point) {
+    if (v.count < 2 || v.count > 4) return bad("2 to 4 values");
+    glm::vec4 q(static_cast<float>(v.v[0]), static_cast<float>(v.v[1]), v.count > 2 ? static_cast<float>(v.v[2]) : 0.0f,
+                v.count > 3 ? static_cast<float>(v.v[3]) : 1.0f);
+    q = mvp * q;
+    for (int c = 0; c < 4; ++c) out[c] = std::bit_cast<uint32_t>(q[c]);
+    return true;
+  }
+  if (element_is_base && p.type.base == BaseType::Color) {
+    if (v.count < 3 || v.count > 4) return bad("3 or 4 values");
+    for (int c = 0; c < 4; ++c) out[c] = std::bit_cast<uint32_t>(c < v.count ? static_cast<float>(v.v[c]) : 1.0f);
+    return true;
+  }
+  if (v.count != want) return bad(std::to_string(want) + (want == 1 ? " value" : " values"));
+  for (int c = 0; c < want; ++c) {
+    if (p.type.base == BaseType::Int) {
+      double r = std::nearbyint(v.v[c]);
+      if (!(std::fabs(r) < 2147483648.0)) return bad("int values in range");
+      out[c] = static_cast<uint32_t>(static_cast<int32_t>(r));
+    } else if (p.type.base == BaseType::Bool) {
+      out[c] = v.v[c] != 0.0 ? 1u : 0u;
+    } else {
+      out[c] = std::bit_cast<uint32_t>(static_cast<float>(v.v[c]));
+    }
+  }
+  return true;
+}
+
+// The parameters glBegin's primitive wants, except the count of a parameter-sized one (the
+// API supplies it).
+void planFeed(PFcontextRec& ctx, const pf::CompiledPrimitive& prim) {
+  ctx.feed.clear();
+  ctx.row_floats = 0;
+  for (const pf::ParamInfo& p : prim.params) {
+    if (prim.sequence_points == 0 && !p.per_sequence_point && p.offset == prim.count_slot) continue;
+    ctx.feed.push_back({&p, ctx.paramId(p.name), ctx.row_floats});
+    ctx.row_floats += p.components;
+  }
+}
+
+// Binds the current values as one sequence point of the open glBegin.
+void sequencePoint(PFcontextRec& ctx) {
+  const size_t row = ctx.rows_count++;
+  ctx.rows.resize(ctx.rows_count * static_cast<size_t>(ctx.row_floats));
+  uint32_t* out = ctx.rows.data() + row * static_cast<size_t>(ctx.row_floats);
+  for (const pf::FeedEntry& f : ctx.feed) {
+    std::string why;
+    if (!convertValue(*f.info, ctx.current_params[f.name - 1], ctx.begin_mvp, out + f.row_offset, why) &&
+        ctx.reject_reason.empty())
+      ctx.reject_reason = "sequence point " + std::to_string(row) + ": " + why;
+  }
+  ctx.row_colors.insert(ctx.row_colors.end(), &ctx.current_color[0], &ctx.current_color[0] + 4);
+}
+
+// Hands the rows to the renderer: for a primitive with a fixed count, one instance per
+// `sequence_points` rows; for one with parameter-sized arrays, one instance holding them all.
+void submitInstances(PFcontextRec& ctx) {
+  const pf::CompiledPrimitive& prim = *ctx.begin_primitive;
+  const size_t total = ctx.rows_count;
+  const bool sized = prim.sequence_points == 0;
+  const size_t per = sized ? total : static_cast<size_t>(prim.sequence_points);
+  if (per == 0) return;
+  const int count = static_cast<int>(per);
+  // The colour is the one per-vertex shading parameter so far: 4 channels, interpolated
+  // perspective-correct (GL's default), in G-buffer slots 0-3.
+  pf::ChannelLayout layout;
+  if (prim.has_interp_data) layout = pf::ChannelLayout::ofKind(4, pf::InterpKind::PerspectiveLinear);
+  pf::ShadeState shade;
+  if (prim.has_interp_data) {
+    shade.color_slot = 0;
+  } else {
+    for (int k = 0; k < 4; ++k) shade.constant_color[k] = ctx.current_color[k];
+  }
+  const pf::RasterState state = ctx.rasterState();
+  ctx.param_block.assign(static_cast<size_t>(prim.paramFloats(count)), 0u);
+  if (sized) ctx.param_block[static_cast<size_t>(prim.count_slot)] = static_cast<uint32_t>(count);
+  ctx.vertex_channels.assign(per * static_cast<size_t>(layout.count), 0.0f);
+  const size_t stride = static_cast<size_t>(ctx.row_floats);
+  for (size_t first = 0; first + per <= total; first += per) {
+    for (const pf::FeedEntry& f : ctx.feed) {
+      const pf::ParamInfo& p = *f.info;
+      if (!p.per_sequence_point) {
+        const uint32_t* v = ctx.rows.data() + first * stride + f.row_offset;
+        std::copy(v, v + p.components, ctx.param_block.begin() + p.offset);
+        continue;
+      }
+      for (size_t i = 0; i < per; ++i) {
+        const uint32_t* v = ctx.rows.data() + (first + i) * stride + f.row_offset;
+        std::copy(v, v + p.components, ctx.param_block.begin() + prim.paramOffset(p, count, static_cast<int>(i)));
+      }
+    }
+    for (size_t i = 0; i < per; ++i)
+      for (int c = 0; c < layout.count; ++c)
+        ctx.vertex_channels[i * layout.count + c] = ctx.row_colors[(first + i) * 4 + c];
+    ctx.renderer.submit(prim, ctx.param_block.data(), ctx.vertex_channels.data(), layout, state, shade, count);
+  }
+}
+
+// The GL modes keep GL's rule for a trailing incomplete group (dropped); a primitive of the
+// extension takes exactly whole instances or nothing.
+bool isGlMode(GLenum mode) { return mode <= GL_POLYGON; }
+
+void setParam(GLuint name, int count, const double* v) {
+  PFcontextRec* ctx = currentContext();
+  if (!ctx) return;
+  if (name == 0 || name > ctx->current_params.size()) {
+    ctx->setError(GL_INVALID_VALUE);
+    return;
+  }
+  pf::ParamValue& p = ctx->current_params[name - 1];
+  p.count = count;
+  for (int i = 0; i < count; ++i) p.v[i] = v[i];
+}
+
+void setVertex(double x, double y, double z, double w, int count) {
+  PFcontextRec* ctx = currentContext();
+  if (!ctx || !ctx->in_begin) return;  // outside Begin/End a vertex has no effect (GL: undefined)
+  const double v[4] = {x, y, z, w};
+  pf::ParamValue& p = ctx->current_params[ctx->vertex_param - 1];
+  p.count = count;
+  for (int i = 0; i < 4; ++i) p.v[i] = v[i];
+  sequencePoint(*ctx);
+}
+
+void setColor(float r, float g, float b, float a) {
+  if (PFcontextRec* ctx = currentContext()) ctx->current_color = glm::vec4(r, g, b, a);
+}
+
+float unorm(GLubyte v) { return static_cast<float>(v) / 255.0f; }
+
+}  // namespace
+
+GLuint PFcontextRec::paramId(const std::string& name) {
+  auto it = param_ids.find(name);
+  if (it != param_ids.end()) return it->second;
+  param_names.push_back(name);
+  current_params.emplace_back();
+  GLuint id = static_cast<GLuint>(param_names.size());
+  param_ids[name] = id;
+  return id;
+}
+
+extern "C" {
+
+void pfglBegin(GLenum mode) {
+  PFcontextRec* ctx = currentContext();
+  if (!ctx) return;
+  if (ctx->in_begin) {
+    ctx->setError(GL_INVALID_OPERATION);
+    return;
+  }
+  auto it = ctx->primitives.by_mode.find(mode);
+  if (it == ctx->primitives.by_mode.end()) {
+    ctx->setError(GL_INVALID_ENUM);
+    return;
+  }
+  ctx->in_begin = true;
+  ctx->begin_mode = mode;
+  ctx->begin_primitive = it->second.get();
+  ctx->begin_mvp = ctx->projection.top * ctx->modelview.top;
+  planFeed(*ctx, *ctx->begin_primitive);
+  ctx->rows_count = 0;
+  ctx->rows.clear();
+  ctx->row_colors.clear();
+  ctx->reject_reason.clear();
+}
+
+void pfglEnd(void) {
+  PFcontextRec* ctx = currentContext();
+  if (!ctx) return;
+  if (!ctx->in_begin) {
+    ctx->setError(GL_INVALID_OPERATION);
+    return;
+  }
+  ctx->in_begin = false;
+  const pf::CompiledPrimitive& prim = *ctx->begin_primitive;
+  if (ctx->reject_reason.empty() && !isGlMode(ctx->begin_mode) && prim.sequence_points > 0 &&
+      ctx->rows_count % static_cast<size_t>(prim.sequence_points) != 0)
+    ctx->reject_reason = std::to_string(ctx->rows_count) + " sequence point(s) do not make whole instances of " +
+                         std::to_string(prim.sequence_points);
+  if (!ctx->reject_reason.empty()) {
+    // Never half-drawn: the whole glBegin / glEnd is dropped.
+    ctx->setError(GL_INVALID_OPERATION);
+    std::fprintf(stderr, "primflow: glEnd: instances of '%s' rejected, nothing drawn: %s\n", prim.name.c_str(),
+                 ctx->reject_reason.c_str());
+  } else if (ctx->color) {
+    submitInstances(*ctx);
+  }
+  ctx->begin_primitive = nullptr;
+}
+
+void pfglVertex2f(GLfloat x, GLfloat y) { setVertex(x, y, 0, 1, 2); }
+void pfglVertex3f(GLfloat x, GLfloat y, GLfloat z) { setVertex(x, y, z, 1, 3); }
+void pfglVertex4f(GLfloat x, GLfloat y, GLfloat z, GLfloat w) { setVertex(x, y, z, w, 4); }
+void pfglVertex2d(GLdouble x, GLdouble y) { setVertex(x, y, 0, 1, 2); }
+void pfglVertex3d(GLdouble x, GLdouble y, GLdouble z) { setVertex(x, y, z, 1, 3); }
+void pfglVertex4d(GLdouble x, GLdouble y, GLdouble z, GLdouble w) { setVertex(x, y, z, w, 4); }
+void pfglVertex2fv(const GLfloat* v) { if (v) setVertex(v[0], v[1], 0, 1, 2); }
+void pfglVertex3fv(const GLfloat* v) { if (v) setVertex(v[0], v[1], v[2], 1, 3); }
+void pfglVertex4fv(const GLfloat* v) { if (v) setVertex(v[0], v[1], v[2], v[3], 4); }
+void pfglVertex2dv(const GLdouble* v) { if (v) setVertex(v[0], v[1], 0, 1, 2); }
+void pfglVertex3dv(const GLdouble* v) { if (v) setVertex(v[0], v[1], v[2], 1, 3); }
+void pfglVertex4dv(const GLdouble* v) { if (v) setVertex(v[0], v[1], v[2], v[3], 4); }
+
+void pfglColor3f(GLfloat r, GLfloat g, GLfloat b) { setColor(r, g, b, 1.0f); }
+void pfglColor4f(GLfloat r, GLfloat g, GLfloat b, GLfloat a) { setColor(r, g, b, a); }
+void pfglColor3fv(const GLfloat* v) { if (v) setColor(v[0], v[1], v[2], 1.0f); }
+void pfglColor4fv(const GLfloat* v) { if (v) setColor(v[0], v[1], v[2], v[3]); }
+void pfglColor3ub(GLubyte r, GLubyte g, GLubyte b) { setColor(unorm(r), unorm(g), unorm(b), 1.0f); }
+void pfglColor4ub(GLubyte r, GLubyte g, GLubyte b, GLubyte a) { setColor(unorm(r), unorm(g), unorm(b), unorm(a)); }
+
+void pfglNormal3f(GLfloat x, GLfloat y, GLfloat z) {
+  PFcontextRec* ctx = currentContext();
+  if (!ctx) return;
+  const double v[3] = {x, y, z};
+  setParam(ctx->normal_param, 3, v);
+}
+void pfglNormal3fv(const GLfloat* v) { if (v) pfglNormal3f(v[0], v[1], v[2]); }
+
+// GL keeps four texture coordinates (s, t, r, q); glTexCoord1 and 2 fill the rest with 0, 0, 1.
+void pfglTexCoord1f(GLfloat s) {
+  PFcontextRec* ctx = currentContext();
+  if (!ctx) return;
+  const double v[4] = {s, 0, 0, 1};
+  setParam(ctx->texcoord_param, 4, v);
+}
+void pfglTexCoord2f(GLfloat s, GLfloat t) {
+  PFcontextRec* ctx = currentContext();
+  if (!ctx) return;
+  const double v[4] = {s, t, 0, 1};
+  setParam(ctx->texcoord_param, 4, v);
+}
+
+// ---- the extension: named parameters and sequence points ----
+
+GLuint pfglGetParamNameEXT(const GLchar* name) {
+  PFcontextRec* ctx = currentContext();
+  if (!ctx) return 0;
+  if (!name || !*name) {
+    ctx->setError(GL_INVALID_VALUE);
+    return 0;
+  }
+  return ctx->paramId(name);
+}
+
+void pfglRastParamfEXT(GLuint name, GLfloat v) {
+  const double d[1] = {v};
+  setParam(name, 1, d);
+}
+void pfglRastParamiEXT(GLuint name, GLint v) {
+  const double d[1] = {static_cast<double>(v)};
+  setParam(name, 1, d);
+}
+void pfglRastParam3fEXT(GLuint name, GLfloat x, GLfloat y, GLfloat z) {
+  const double d[3] = {x, y, z};
+  setParam(name, 3, d);
+}
+void pfglRastParam4fEXT(GLuint name, GLfloat x, GLfloat y, GLfloat z, GLfloat w) {
+  const double d[4] = {x, y, z, w};
+  setParam(name, 4, d);
+}
+void pfglRastParamfvEXT(GLuint name, GLsizei count, const GLfloat* v) {
+  PFcontextRec* ctx = currentContext();
+  if (!ctx) return;
+  if (count < 1 || count > 16 || !v) {
+    ctx->setError(GL_INVALID_VALUE);
+    return;
+  }
+  double d[16];
+  for (int i = 0; i < count; ++i) d[i] = v[i];
+  setParam(name, count, d);
+}
+void pfglRastParamivEXT(GLuint name, GLsizei count, const GLint* v) {
+  PFcontextRec* ctx = currentContext();
+  if (!ctx) return;
+  if (count < 1 || count > 16 || !v) {
+    ctx->setError(GL_INVALID_VALUE);
+    return;
+  }
+  double d[16];
+  for (int i = 0; i < count; ++i) d[i] = v[i];
+  setParam(name, count, d);
+}
+
+void pfglSequencePointEXT(void) {
+  PFcontextRec* ctx = currentContext();
+  if (!ctx) return;
+  if (!ctx->in_begin) {
+    ctx->setError(GL_INVALID_OPERATION);
+    return;
+  }
+  sequencePoint(*ctx);
+}
+
+}  // extern "C"

@@ -1,0 +1,207 @@
+// Reading state back: glGet{Boolean,Integer,Float,Double}v for the state primflow has
+// (GL 1.5 section 6.1), glPixelStorei's pack alignment, and glReadPixels.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <primflow/gl.h>
+
+#include "api/src/context_state.h"
+#include "raster/limits.h"
+
+namespace {
+
+// One queried value: up to 16 numbers, and whether GL maps them to integers as normalised
+// values (colours, depths, normals: 1.0 -> 2^31 - 1, GL 1.5 section 6.1.2).
+struct Query {
+  double v[16];
+  int count = 0;
+  bool normalized = false;
+};
+
+bool query(const PFcontextRec& ctx, GLenum pname, Query& q) {
+  auto set = [&](std::initializer_list<double> values, bool normalized = false) {
+    q.count = 0;
+    for (double d : values) q.v[q.count++] = d;
+    q.normalized = normalized;
+  };
+  auto matrix = [&](const glm::mat4& m) {
+    const float* p = glm::value_ptr(m);
+    q.count = 16;
+    for (int i = 0; i < 16; ++i) q.v[i] = p[i];
+  };
+  const auto& cc = ctx.clear_color;
+  const auto& col = ctx.current_color;
+  switch (pname) {
+    case GL_VIEWPORT: set({double(ctx.viewport[0]), double(ctx.viewport[1]), double(ctx.viewport[2]), double(ctx.viewport[3])}); return true;
+    case GL_MAX_VIEWPORT_DIMS: set({double(pf::kMaxFramebufferSize), double(pf::kMaxFramebufferSize)}); return true;
+    case GL_DEPTH_RANGE: set({ctx.depth_range[0], ctx.depth_range[1]}, true); return true;
+    case GL_COLOR_CLEAR_VALUE: set({cc[0], cc[1], cc[2], cc[3]}, true); return true;
+    case GL_DEPTH_CLEAR_VALUE: set({ctx.clear_depth}, true); return true;
+    case GL_DEPTH_FUNC: set({double(ctx.depth_func)}); return true;
+    case GL_DEPTH_WRITEMASK: set({ctx.depth_write ? 1.0 : 0.0}); return true;
+    case GL_DEPTH_TEST: set({ctx.depth_test ? 1.0 : 0.0}); return true;
+    case GL_CULL_FACE: set({ctx.cull ? 1.0 : 0.0}); return true;
+    case GL_CULL_FACE_MODE: set({double(ctx.cull_face)}); return true;
+    case GL_FRONT_FACE: set({double(ctx.front_face)}); return true;
+    case GL_SHADE_MODEL: set({double(ctx.shade_model)}); return true;
+    case GL_COLOR_WRITEMASK:
+      set({double(ctx.color_mask & 1), double((ctx.color_mask >> 1) & 1), double((ctx.color_mask >> 2) & 1),
+           double((ctx.color_mask >> 3) & 1)});
+      return true;
+    case GL_MATRIX_MODE: set({double(ctx.matrix_mode)}); return true;
+    case GL_MODELVIEW_MATRIX: matrix(ctx.modelview.top); return true;
+    case GL_PROJECTION_MATRIX: matrix(ctx.projection.top); return true;
+    case GL_TEXTURE_MATRIX: matrix(ctx.texture.top); return true;
+    case GL_MODELVIEW_STACK_DEPTH: set({double(ctx.modelview.depth())}); return true;
+    case GL_PROJECTION_STACK_DEPTH: set({double(ctx.projection.depth())}); return true;
+    case GL_TEXTURE_STACK_DEPTH: set({double(ctx.texture.depth())}); return true;
+    case GL_MAX_MODELVIEW_STACK_DEPTH: set({double(ctx.modelview.max_depth)}); return true;
+    case GL_MAX_PROJECTION_STACK_DEPTH: set({double(ctx.projection.max_depth)}); return true;
+    case GL_MAX_TEXTURE_STACK_DEPTH: set({double(ctx.texture.max_depth)}); return true;
+    case GL_CURRENT_COLOR: set({col[0], col[1], col[2], col[3]}, true); return true;
+    case GL_CURRENT_NORMAL: {
+      const pf::ParamValue& n = ctx.current_params[ctx.normal_param - 1];
+      set({n.v[0], n.v[1], n.v[2]}, true);
+      return true;
+    }
+    case GL_CURRENT_TEXTURE_COORDS: {
+      const pf::ParamValue& t = ctx.current_params[ctx.texcoord_param - 1];
+      set({t.v[0], t.v[1], t.v[2], t.v[3]});
+      return true;
+    }
+    case GL_PACK_ALIGNMENT: set({double(ctx.pack_alignment)}); return true;
+    case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS: set({8}); return true;
+    case GL_DEPTH_BITS: set({double(ctx.depth_bits > 0 ? 24 : 0)}); return true;
+    default: return false;
+  }
+}
+
+// The query, or GL_INVALID_ENUM; not between glBegin and glEnd.
+const Query* lookup(GLenum pname, Query& q) {
+  PFcontextRec* ctx = pf::contextOutsideBegin();
+  if (!ctx) return nullptr;
+  if (!query(*ctx, pname, q)) {
+    ctx->setError(GL_INVALID_ENUM);
+    return nullptr;
+  }
+  return &q;
+}
+
+GLint toInt(double v, bool normalized) {
+  double r = normalized ? std::nearbyint(v * 2147483647.0) : std::nearbyint(v);
+  return static_cast<GLint>(std::clamp(r, -2147483648.0, 2147483647.0));
+}
+
+}  // namespace
+
+extern "C" {
+
+void pfglGetBooleanv(GLenum pname, GLboolean* params) {
+  Query q;
+  if (!lookup(pname, q) || !params) return;
+  for (int i = 0; i < q.count; ++i) params[i] = q.v[i] != 0.0 ? GL_TRUE : GL_FALSE;
+}
+
+void pfglGetIntegerv(GLenum pname, GLint* params) {
+  Query q;
+  if (!lookup(pname, q) || !params) return;
+  for (int i = 0; i < q.count; ++i) params[i] = toInt(q.v[i], q.normalized);
+}
+
+void pfglGetFloatv(GLenum pname, GLfloat* params) {
+  Query q;
+  if (!lookup(pname, q) || !params) return;
+  for (int i = 0; i < q.count; ++i) params[i] = static_cast<GLfloat>(q.v[i]);
+}
+
+void pfglGetDoublev(GLenum pname, GLdouble* params) {
+  Query q;
+  if (!lookup(pname, q) || !params) return;
+  for (int i = 0; i < q.count; ++i) params[i] = q.v[i];
+}
+
+void pfglPixelStorei(GLenum pname, GLint param) {
+  PFcontextRec* ctx = pf::contextOutsideBegin();
+  if (!ctx) return;
+  if (pname != GL_PACK_ALIGNMENT) {
+    ctx->setError(GL_INVALID_ENUM);
+    return;
+  }
+  if (param != 1 && param != 2 && param != 4 && param != 8) {
+    ctx->setError(GL_INVALID_VALUE);
+    return;
+  }
+  ctx->pack_alignment = param;
+}
+
+// Colour as RGBA or RGB, bytes or floats; depth as floats, or unsigned ints / shorts scaled to
+// their range. Rows start on GL_PACK_ALIGNMENT boundaries; pixels outside the framebuffer
+// are left as they are in `pixels` (GL leaves them undefined). Drawing is finished first.
+void pfglReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type, GLvoid* pixels) {
+  PFcontextRec* ctx = pf::contextOutsideBegin();
+  if (!ctx) return;
+  if (width < 0 || height < 0) {
+    ctx->setError(GL_INVALID_VALUE);
+    return;
+  }
+  int components;
+  switch (format) {
+    case GL_RGBA: components = 4; break;
+    case GL_RGB: components = 3; break;
+    case GL_DEPTH_COMPONENT: components = 1; break;
+    default: ctx->setError(GL_INVALID_ENUM); return;
+  }
+  size_t bytes;
+  switch (type) {
+    case GL_UNSIGNED_BYTE: bytes = 1; break;
+    case GL_UNSIGNED_SHORT: bytes = 2; break;
+    case GL_UNSIGNED_INT: case GL_FLOAT: bytes = 4; break;
+    default: ctx->setError(GL_INVALID_ENUM); return;
+  }
+  if (format == GL_DEPTH_COMPONENT && ctx->depth_bits <= 0) {
+    ctx->setError(GL_INVALID_OPERATION);
+    return;
+  }
+  if (!pixels || !ctx->color || width == 0 || height == 0) return;
+  ctx->finish();
+  const size_t align = static_cast<size_t>(ctx->pack_alignment);
+  const size_t row_bytes = (static_cast<size_t>(width) * components * bytes + align - 1) / align * align;
+  auto* out = static_cast<unsigned char*>(pixels);
+  for (int row = 0; row < height; ++row) {
+    const long fy = static_cast<long>(y) + row;
+    if (fy < 0 || fy >= ctx->height) continue;
+    for (int col = 0; col < width; ++col) {
+      const long fx = static_cast<long>(x) + col;
+      if (fx < 0 || fx >= ctx->width) continue;
+      const size_t at = static_cast<size_t>(fy) * ctx->width + static_cast<size_t>(fx);
+      double v[4];
+      if (format == GL_DEPTH_COMPONENT) {
+        v[0] = ctx->depth[at];
+      } else {
+        for (int c = 0; c < 4; ++c) v[c] = ctx->color[at * 4 + c] / 255.0;
+      }
+      unsigned char* dst = out + row * row_bytes + static_cast<size_t>(col) * components * bytes;
+      for (int c = 0; c < components; ++c) {
+        const double f = std::clamp(v[c], 0.0, 1.0);
+        if (type == GL_FLOAT) {
+          const float s = static_cast<float>(format == GL_DEPTH_COMPONENT ? v[c] : f);
+          std::memcpy(dst + c * 4, &s, 4);
+        } else if (type == GL_UNSIGNED_BYTE) {
+          dst[c] = format == GL_DEPTH_COMPONENT ? static_cast<unsigned char>(std::nearbyint(f * 255.0))
+                                                : ctx->color[at * 4 + c];
+        } else if (type == GL_UNSIGNED_SHORT) {
+          const uint16_t s = static_cast<uint16_t>(std::nearbyint(f * 65535.0));
+          std::memcpy(dst + c * 2, &s, 2);
+        } else {
+          const uint32_t s = static_cast<uint32_t>(std::nearbyint(f * 4294967295.0));
+          std::memcpy(dst + c * 4, &s, 4);
+        }
+      }
+    }
+  }
+}
+
+}  // extern "C"
