@@ -41,6 +41,15 @@ struct MatrixStack {
   size_t depth() const { return below.size() + 1; }
 };
 
+// One client-side vertex array (glVertexPointer and its siblings).
+struct ClientArray {
+  bool enabled = false;
+  GLint size = 4;
+  GLenum type = GL_FLOAT;
+  GLsizei stride = 0;
+  const void* pointer = nullptr;
+};
+
 // Registered primitives: by name, and by the enum glBegin takes.
 struct PrimitiveRegistry {
   std::map<std::string, std::shared_ptr<const CompiledPrimitive>> by_name;
@@ -95,6 +104,8 @@ struct PFcontextRec {
   GLenum matrix_mode = GL_MODELVIEW;
   pf::MatrixStack modelview{32}, projection{4}, texture{4};
   glm::vec4 current_color{1.0f, 1.0f, 1.0f, 1.0f};
+
+  pf::ClientArray vertex_array, color_array, normal_array;
 
   // Named parameters: ids (1, 2, ...) by name, and their current values (index id - 1).
   std::map<std::string, GLuint> param_ids;

@@ -52,6 +52,9 @@ bool query(const PFcontextRec& ctx, GLenum pname, Query& q) {
            double((ctx.color_mask >> 3) & 1)});
       return true;
     case GL_MATRIX_MODE: set({double(ctx.matrix_mode)}); return true;
+    case GL_VERTEX_ARRAY: set({ctx.vertex_array.enabled ? 1.0 : 0.0}); return true;
+    case GL_COLOR_ARRAY: set({ctx.color_array.enabled ? 1.0 : 0.0}); return true;
+    case GL_NORMAL_ARRAY: set({ctx.normal_array.enabled ? 1.0 : 0.0}); return true;
     case GL_MODELVIEW_MATRIX: matrix(ctx.modelview.top); return true;
     case GL_PROJECTION_MATRIX: matrix(ctx.projection.top); return true;
     case GL_TEXTURE_MATRIX: matrix(ctx.texture.top); return true;

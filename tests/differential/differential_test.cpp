@@ -59,6 +59,7 @@ const char* sceneName(Scene s) {
     case Scene::ColorMasks: return "ColorMasks";
     case Scene::MatrixOps: return "MatrixOps";
     case Scene::NearClipCull: return "NearClipCull";
+    case Scene::VertexArrays: return "VertexArrays";
   }
   return "?";
 }
@@ -385,6 +386,23 @@ TEST(Differential, NearPlaneCrossingTrianglesCullLikeOsmesa) {
   }
   EXPECT_GT(drawn, kSize * kSize / 20);
   EXPECT_LE(off, kSize * kSize / 1000);
+}
+
+// Vertex arrays: the ID mesh through glDrawElements covers exactly what OSMesa covers with the
+// same arrays, and the same as immediate mode; the interleaved strip's colours within 2/255.
+TEST(Differential, VertexArraysMatchOsmesaAndImmediateMode) {
+  Image ref = reference(Scene::VertexArrays);
+  Image got = primflow(Scene::VertexArrays, 1);
+  Image immediate = primflow(Scene::MeshIds, 1);
+  ASSERT_TRUE(ref.ok && got.ok && immediate.ok);
+  expectSameColours(ref, got, 2, "vertex arrays");
+  int mesh_pixels = 0;
+  for (int y = 0; y < 236; ++y)  // below the strip: the mesh alone
+    for (int x = 0; x < kSize; ++x) {
+      EXPECT_EQ(rgba(pixel(got, x, y)), rgba(pixel(immediate, x, y))) << "(" << x << ", " << y << ")";
+      mesh_pixels += !isClear(pixel(got, x, y));
+    }
+  EXPECT_GT(mesh_pixels, 40000);
 }
 
 TEST(Differential, GouraudColoursWithinTwoLevels) {

@@ -39,6 +39,7 @@ enum class Scene : int {
   ColorMasks,        // glColorMask on clears and on drawing
   MatrixOps,         // perspective, push / pop, translate, rotate, scale, load and mult matrix
   NearClipCull,      // perspective triangles crossing the near plane, culled by orientation
+  VertexArrays,      // the ID mesh through glDrawElements, a strip through glDrawArrays
 };
 
 constexpr int kSize = 256;  // the scenes are drawn at 256 x 256, glOrtho(0, 256, 0, 256, -1, 1)

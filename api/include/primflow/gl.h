@@ -35,6 +35,17 @@ void pfglCullFace(GLenum mode);
 void pfglFrontFace(GLenum mode);
 void pfglShadeModel(GLenum mode);
 
+/* Vertex arrays: GL_VERTEX_ARRAY, GL_COLOR_ARRAY, GL_NORMAL_ARRAY. glDrawArrays /
+ * glDrawElements are glBegin, glArrayElement per index, glEnd, as GL defines them. */
+void pfglEnableClientState(GLenum array);
+void pfglDisableClientState(GLenum array);
+void pfglVertexPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *pointer);
+void pfglColorPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *pointer);
+void pfglNormalPointer(GLenum type, GLsizei stride, const GLvoid *pointer);
+void pfglArrayElement(GLint i);
+void pfglDrawArrays(GLenum mode, GLint first, GLsizei count);
+void pfglDrawElements(GLenum mode, GLsizei count, GLenum type, const GLvoid *indices);
+
 /* State queries (the state listed in docs/api.md; others: GL_INVALID_ENUM; NULL: ignored) */
 void pfglGetBooleanv(GLenum pname, GLboolean *params);
 void pfglGetIntegerv(GLenum pname, GLint *params);

@@ -71,5 +71,13 @@
 #define glNormal3fv pfglNormal3fv
 #define glTexCoord1f pfglTexCoord1f
 #define glTexCoord2f pfglTexCoord2f
+#define glEnableClientState pfglEnableClientState
+#define glDisableClientState pfglDisableClientState
+#define glVertexPointer pfglVertexPointer
+#define glColorPointer pfglColorPointer
+#define glNormalPointer pfglNormalPointer
+#define glArrayElement pfglArrayElement
+#define glDrawArrays pfglDrawArrays
+#define glDrawElements pfglDrawElements
 
 #endif

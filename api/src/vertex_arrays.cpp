@@ -1,0 +1,179 @@
+// Vertex arrays (GL 1.5 section 2.8): glDrawArrays and glDrawElements are, by GL's own
+// definition, glBegin, then glArrayElement for each index (the enabled arrays' values set as
+// the current ones, the vertex last), then glEnd -- and are implemented exactly so, through
+// the same sequence points as immediate mode.
+#include <cstring>
+
+#include <primflow/gl.h>
+
+#include "api/src/context_state.h"
+
+namespace {
+
+size_t typeSize(GLenum type) {
+  switch (type) {
+    case GL_BYTE: case GL_UNSIGNED_BYTE: return 1;
+    case GL_SHORT: case GL_UNSIGNED_SHORT: return 2;
+    case GL_INT: case GL_UNSIGNED_INT: case GL_FLOAT: return 4;
+    case GL_DOUBLE: return 8;
+    default: return 0;
+  }
+}
+
+// Component k of element i, as a double; `normalize`: integer types map to [0, 1] / [-1, 1]
+// as GL does for colours and normals.
+double fetch(const pf::ClientArray& a, GLint i, int k, bool normalize) {
+  const size_t size = typeSize(a.type);
+  const size_t stride = a.stride ? static_cast<size_t>(a.stride) : size * static_cast<size_t>(a.size);
+  const unsigned char* p = static_cast<const unsigned char*>(a.pointer) + stride * static_cast<size_t>(i) + size * k;
+  switch (a.type) {
+    case GL_BYTE: { int8_t v; std::memcpy(&v, p, 1); return normalize ? (2.0 * v + 1) / 255.0 : v; }
+    case GL_UNSIGNED_BYTE: { uint8_t v; std::memcpy(&v, p, 1); return normalize ? v / 255.0 : v; }
+    case GL_SHORT: { int16_t v; std::memcpy(&v, p, 2); return normalize ? (2.0 * v + 1) / 65535.0 : v; }
+    case GL_UNSIGNED_SHORT: { uint16_t v; std::memcpy(&v, p, 2); return normalize ? v / 65535.0 : v; }
+    case GL_INT: { int32_t v; std::memcpy(&v, p, 4); return normalize ? (2.0 * v + 1) / 4294967295.0 : v; }
+    case GL_UNSIGNED_INT: { uint32_t v; std::memcpy(&v, p, 4); return normalize ? v / 4294967295.0 : v; }
+    case GL_FLOAT: { float v; std::memcpy(&v, p, 4); return v; }
+    default: { double v; std::memcpy(&v, p, 8); return v; }
+  }
+}
+
+// glArrayElement's work: the enabled arrays' element i as the current values, the vertex last.
+void arrayElement(PFcontextRec& ctx, GLint i) {
+  if (ctx.color_array.enabled && ctx.color_array.pointer) {
+    const pf::ClientArray& a = ctx.color_array;
+    pfglColor4f(static_cast<float>(fetch(a, i, 0, true)), static_cast<float>(fetch(a, i, 1, true)),
+                static_cast<float>(fetch(a, i, 2, true)), a.size == 4 ? static_cast<float>(fetch(a, i, 3, true)) : 1.0f);
+  }
+  if (ctx.normal_array.enabled && ctx.normal_array.pointer) {
+    const pf::ClientArray& a = ctx.normal_array;
+    pfglNormal3f(static_cast<float>(fetch(a, i, 0, true)), static_cast<float>(fetch(a, i, 1, true)),
+                 static_cast<float>(fetch(a, i, 2, true)));
+  }
+  if (ctx.vertex_array.enabled && ctx.vertex_array.pointer) {
+    const pf::ClientArray& a = ctx.vertex_array;
+    double v[4] = {0, 0, 0, 1};
+    for (int k = 0; k < a.size; ++k) v[k] = fetch(a, i, k, false);
+    if (a.size == 2) pfglVertex2d(v[0], v[1]);
+    else if (a.size == 3) pfglVertex3d(v[0], v[1], v[2]);
+    else pfglVertex4d(v[0], v[1], v[2], v[3]);
+  }
+}
+
+pf::ClientArray* clientArray(PFcontextRec& ctx, GLenum array) {
+  switch (array) {
+    case GL_VERTEX_ARRAY: return &ctx.vertex_array;
+    case GL_COLOR_ARRAY: return &ctx.color_array;
+    case GL_NORMAL_ARRAY: return &ctx.normal_array;
+    default: return nullptr;
+  }
+}
+
+// Sets a pointer after GL's checks: the sizes and types each array takes, stride >= 0.
+void pointer(GLenum which, GLint size, GLenum type, GLsizei stride, const GLvoid* ptr, bool size_ok, bool type_ok) {
+  PFcontextRec* ctx = pf::contextOutsideBegin();
+  if (!ctx) return;
+  if (!size_ok || stride < 0) {
+    ctx->setError(GL_INVALID_VALUE);
+    return;
+  }
+  if (!type_ok) {
+    ctx->setError(GL_INVALID_ENUM);
+    return;
+  }
+  pf::ClientArray& a = *clientArray(*ctx, which);
+  a.size = size;
+  a.type = type;
+  a.stride = stride;
+  a.pointer = ptr;
+}
+
+// Checks shared by glDrawArrays and glDrawElements; the context to draw with, or null.
+PFcontextRec* drawable(GLenum mode, GLsizei count) {
+  PFcontextRec* ctx = pf::contextOutsideBegin();
+  if (!ctx) return nullptr;
+  if (mode > GL_POLYGON) {
+    ctx->setError(GL_INVALID_ENUM);
+    return nullptr;
+  }
+  if (count < 0) {
+    ctx->setError(GL_INVALID_VALUE);
+    return nullptr;
+  }
+  return ctx;
+}
+
+}  // namespace
+
+extern "C" {
+
+void pfglEnableClientState(GLenum array) {
+  PFcontextRec* ctx = pf::contextOutsideBegin();
+  if (!ctx) return;
+  if (pf::ClientArray* a = clientArray(*ctx, array)) a->enabled = true;
+  else ctx->setError(GL_INVALID_ENUM);
+}
+
+void pfglDisableClientState(GLenum array) {
+  PFcontextRec* ctx = pf::contextOutsideBegin();
+  if (!ctx) return;
+  if (pf::ClientArray* a = clientArray(*ctx, array)) a->enabled = false;
+  else ctx->setError(GL_INVALID_ENUM);
+}
+
+void pfglVertexPointer(GLint size, GLenum type, GLsizei stride, const GLvoid* ptr) {
+  pointer(GL_VERTEX_ARRAY, size, type, stride, ptr, size >= 2 && size <= 4,
+          type == GL_SHORT || type == GL_INT || type == GL_FLOAT || type == GL_DOUBLE);
+}
+
+void pfglColorPointer(GLint size, GLenum type, GLsizei stride, const GLvoid* ptr) {
+  pointer(GL_COLOR_ARRAY, size, type, stride, ptr, size == 3 || size == 4, typeSize(type) != 0);
+}
+
+void pfglNormalPointer(GLenum type, GLsizei stride, const GLvoid* ptr) {
+  pointer(GL_NORMAL_ARRAY, 3, type, stride, ptr, true,
+          type == GL_BYTE || type == GL_SHORT || type == GL_INT || type == GL_FLOAT || type == GL_DOUBLE);
+}
+
+void pfglArrayElement(GLint i) {
+  PFcontextRec* ctx = pf::currentContext();
+  if (ctx) arrayElement(*ctx, i);
+}
+
+void pfglDrawArrays(GLenum mode, GLint first, GLsizei count) {
+  PFcontextRec* ctx = drawable(mode, count);
+  if (!ctx) return;
+  if (first < 0) {
+    ctx->setError(GL_INVALID_VALUE);
+    return;
+  }
+  pfglBegin(mode);
+  for (GLsizei i = 0; i < count; ++i) arrayElement(*ctx, first + i);
+  pfglEnd();
+}
+
+void pfglDrawElements(GLenum mode, GLsizei count, GLenum type, const GLvoid* indices) {
+  PFcontextRec* ctx = drawable(mode, count);
+  if (!ctx) return;
+  if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) {
+    ctx->setError(GL_INVALID_ENUM);
+    return;
+  }
+  if (!indices) return;
+  pfglBegin(mode);
+  for (GLsizei i = 0; i < count; ++i) {
+    GLint index;
+    if (type == GL_UNSIGNED_BYTE) {
+      index = static_cast<const GLubyte*>(indices)[i];
+    } else if (type == GL_UNSIGNED_SHORT) {
+      index = static_cast<const GLushort*>(indices)[i];
+    } else {
+      GLuint u = static_cast<const GLuint*>(indices)[i];
+      index = u > 0x7fffffffu ? 0x7fffffff : static_cast<GLint>(u);
+    }
+    arrayElement(*ctx, index);
+  }
+  pfglEnd();
+}
+
+}  // extern "C"
