@@ -130,6 +130,11 @@ void typeBuiltinCall(Expr& e, UnitKind unit, const std::function<void(SourceLoc,
     // GL's face culling for a polygon of this window-space orientation (> 0: counter-clockwise).
     if (!arity(1, 1) || any_void || !needScalars()) return;
     e.type = Type::of(BaseType::Bool);
+  } else if (f == "facing") {
+    // The instance's facing for two-sided lighting, from its window-space orientation: a
+    // statement (uniform; sema checks).
+    if (!arity(1, 1) || any_void || !needScalars()) return;
+    e.type = Type::of(BaseType::Void);
   } else if (f == "flat_shading") {
     // glShadeModel(GL_FLAT): per-vertex parameters take the provoking vertex's value.
     if (!arity(0, 0)) return;

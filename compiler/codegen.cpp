@@ -9,7 +9,10 @@ namespace pf {
 namespace {
 
 // The effects of calling another primitive: setup's, in program order.
-bool isCallEffect(Op op) { return op == Op::OutParam || op == Op::OutVertex || op == Op::Emit; }
+// (and facing(), setup's too: the instance's facing is uniform).
+bool isCallEffect(Op op) {
+  return op == Op::OutParam || op == Op::OutVertex || op == Op::Emit || op == Op::BackFacing;
+}
 
 // Reads of the instance's parameters at run-time indices: only setup has the parameters.
 bool isSetupOnlyLoad(Op op) { return op == Op::LoadParamAt || op == Op::XLoadVertexAt; }

@@ -49,6 +49,7 @@ enum class Op : uint8_t {
   OutParam,      // setup: outgoing parameter slot imm = a
   OutVertex,     // setup: outgoing sequence point imm's channels = interp register a
   Emit,          // setup: submit an instance of callee imm with the outgoing parameters
+  BackFacing,    // setup: a (bool) says the instance shows its back (two-sided lighting)
   // loops (setup: jumps and a counter; pixel: masks). LoopBegin pushes a loop frame; LoopTest
   // removes the lanes whose b is false from the loop; Break / Continue remove the active lanes
   // for good / for this iteration; LoopContinue brings the continuing lanes back; LoopBack

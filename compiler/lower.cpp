@@ -913,6 +913,17 @@ class Lowerer {
   }
 
   int state(StateValue s) { return emit(Op::LoadState, ValueClass::F32, false, -1, -1, -1, static_cast<int>(s)); }
+  int stateOn(StateValue s) { return emit(Op::FLt, ValueClass::Bool, false, constF(0.5f), state(s)); }
+
+  // GL's front face for a window-space orientation (> 0: counter-clockwise):
+  // (orientation > 0) == (glFrontFace is GL_CCW).
+  int frontFacing(int orientation) {
+    int ccw_area = emit(Op::FLt, ValueClass::Bool, false, constF(0.0f), orientation);
+    int ccw_front = stateOn(StateValue::FrontFaceCCW);
+    return emit(Op::BOr, ValueClass::Bool, false, emit(Op::BAnd, ValueClass::Bool, false, ccw_area, ccw_front),
+                emit(Op::BAnd, ValueClass::Bool, false, emit(Op::BNot, ValueClass::Bool, false, ccw_area),
+                     emit(Op::BNot, ValueClass::Bool, false, ccw_front)));
+  }
 
   // A call of another primitive (sema checked it is uniform): the arguments fill the outgoing
   // parameter block and sequence points, then Emit submits the callee's instance.
@@ -1026,17 +1037,17 @@ class Lowerer {
       return scalar(e.type, cls(arg(0)) == ValueClass::I32 ? arg(0) : emit(Op::F2I, ValueClass::I32, false, arg(0)));
     if (f == "ztest") return scalar(e.type, emit(Op::ZTest, ValueClass::Bool, true, farg(0), -1, -1, 0, e.loc));
     if (f == "culled") {
-      // front = (orientation > 0) == counter-clockwise fronts; culled = front ? cull front : cull back.
-      auto on = [&](StateValue v) { return emit(Op::FLt, ValueClass::Bool, false, constF(0.5f), state(v)); };
-      int ccw_area = emit(Op::FLt, ValueClass::Bool, false, constF(0.0f), farg(0));
-      int ccw_front = on(StateValue::FrontFaceCCW);
-      int front = emit(Op::BOr, ValueClass::Bool, false, emit(Op::BAnd, ValueClass::Bool, false, ccw_area, ccw_front),
-                       emit(Op::BAnd, ValueClass::Bool, false, emit(Op::BNot, ValueClass::Bool, false, ccw_area),
-                            emit(Op::BNot, ValueClass::Bool, false, ccw_front)));
-      return scalar(e.type, emit(Op::Sel, ValueClass::Bool, false, front, on(StateValue::CullFront), on(StateValue::CullBack)));
+      int front = frontFacing(farg(0));
+      return scalar(e.type, emit(Op::Sel, ValueClass::Bool, false, front, stateOn(StateValue::CullFront),
+                                 stateOn(StateValue::CullBack)));
     }
-    if (f == "flat_shading")
-      return scalar(e.type, emit(Op::FLt, ValueClass::Bool, false, constF(0.5f), state(StateValue::FlatShading)));
+    if (f == "facing") {
+      emitEffect(Op::BackFacing, emit(Op::BNot, ValueClass::Bool, false, frontFacing(farg(0))), -1, -1, -1, 0, e.loc);
+      Binding none;
+      none.type = Type::of(BaseType::Void);
+      return none;
+    }
+    if (f == "flat_shading") return scalar(e.type, stateOn(StateValue::FlatShading));
     if (f == "depth_range") {
       Binding out;
       out.type = e.type;

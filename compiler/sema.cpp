@@ -753,6 +753,14 @@ class Analyzer {
     }
     if (f == functions_.units.end()) {
       typeBuiltinCall(e, unit_->kind, [this](SourceLoc loc, const std::string& msg) { err(loc, msg); });
+      if (e.name == "facing") {
+        // An effect on the whole instance: uniform, and a statement.
+        if (&e != statement_call_) err(e.loc, "facing() is a statement: it sets the instance's facing and has no value");
+        if (unit_->kind != UnitKind::Primitive) err(e.loc, "facing() is only available in a primitive");
+        if (varying_control_ > 0 || (!e.args.empty() && e.args[0]->varying))
+          err(e.loc, "facing() sets the facing of the whole instance, so it must be uniform; " +
+                         (varying_control_ > 0 ? varying_control_why_ : whyOf(*e.args[0])));
+      }
       return;
     }
     const Unit& fn = *f->second;

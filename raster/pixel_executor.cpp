@@ -278,6 +278,7 @@ void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* reco
         continue;
       case Op::LoadState: case Op::XLoadVertex: case Op::Bound: case Op::Kill: case Op::OpCount:
       case Op::LoadParamAt: case Op::XLoadVertexAt: case Op::OutParam: case Op::OutVertex: case Op::Emit:
+      case Op::BackFacing:
         continue;  // setup-only instructions never reach a pixel program
       case Op::XSel:
         forChannels(ins.imm, [&](int ch) {

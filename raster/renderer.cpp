@@ -60,7 +60,16 @@ bool Renderer::submit(const CompiledPrimitive& prim, const uint32_t* params, con
   // Shared state: appended only when it changes.
   if (scene_.states.empty() || !(scene_.states.back() == state)) scene_.states.push_back(state);
   if (scene_.layouts.empty() || !(scene_.layouts.back() == layout)) scene_.layouts.push_back(layout);
-  if (scene_.shades.empty() || !(scene_.shades.back() == shade)) scene_.shades.push_back(shade);
+  if (scene_.shades.empty() || !(scene_.shades[scene_.current_shade] == shade)) {
+    scene_.current_shade = static_cast<uint32_t>(scene_.shades.size());
+    scene_.shades.push_back(shade);
+    if (shade.back_color_slot >= 0) {  // its back variant follows it
+      ShadeState back = shade;
+      back.color_slot = shade.back_color_slot;
+      back.back_color_slot = -1;
+      scene_.shades.push_back(back);
+    }
+  }
   if (scene_.states.size() > 0xffff || scene_.layouts.size() > 0xffff) {
     flush();
     return submit(prim, params, vertex_channels, layout, state, shade, sequence_points);
@@ -79,7 +88,7 @@ bool Renderer::submitAt(const CompiledPrimitive& prim, const uint32_t* params, c
   ++stats_.instances_submitted;
   const RasterState& state = scene_.states.back();
   const ChannelLayout& layout = scene_.layouts.back();
-  const ShadeState& shade = scene_.shades.back();
+  const ShadeState& shade = scene_.shades[scene_.current_shade];
   size_t offset = scene_.records.size();
   const size_t words = SetupExecutor::recordWords(prim, layout.count);
   SetupInput in{params, vertex_channels, &layout, &state, sequence_points, this, depth};
@@ -114,7 +123,7 @@ bool Renderer::submitAt(const CompiledPrimitive& prim, const uint32_t* params, c
   inst.record_offset = static_cast<uint32_t>(offset);
   inst.state = static_cast<uint16_t>(scene_.states.size() - 1);
   inst.layout = static_cast<uint16_t>(scene_.layouts.size() - 1);
-  inst.shade_id = static_cast<uint32_t>(scene_.shades.size());
+  inst.shade_id = scene_.current_shade + 1 + (out.back_facing && shade.back_color_slot >= 0 ? 1u : 0u);
   // The pixels it may touch: its bound within the viewport and the framebuffer.
   int vx0 = std::max(state.vp_x0, 0), vy0 = std::max(state.vp_y0, 0);
   int vx1 = std::min(state.vp_x1, width_), vy1 = std::min(state.vp_y1, height_);
@@ -135,6 +144,7 @@ bool Renderer::submitAt(const CompiledPrimitive& prim, const uint32_t* params, c
   int max_slot = 0;
   for (int s : layout.gbuffer_slot) max_slot = std::max(max_slot, s + 1);
   if (shade.color_slot >= 0) max_slot = std::max(max_slot, shade.color_slot + 4);
+  if (shade.back_color_slot >= 0) max_slot = std::max(max_slot, shade.back_color_slot + 4);
   scene_.gbuffer_slots = std::max(scene_.gbuffer_slots, max_slot);
 
   uint32_t index = static_cast<uint32_t>(scene_.instances.size());

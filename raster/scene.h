@@ -39,6 +39,7 @@ struct Scene {
   std::vector<RasterState> states;
   std::vector<ChannelLayout> layouts;
   std::vector<ShadeState> shades;
+  uint32_t current_shade = 0;  // of the instances being submitted (a back variant may follow it)
   std::vector<TileBin> bins;
   int tiles_x = 0, tiles_y = 0;
   int gbuffer_slots = 0;

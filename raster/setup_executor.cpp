@@ -124,6 +124,7 @@ SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& 
         forChannels(ins.imm, [&](int c) { d[c] = pick_a ? a[c] : b[c]; });
         continue;
       }
+      case Op::BackFacing: out.back_facing = read(ins.a) != 0; continue;
       case Op::OutParam: {
         if (out_params_.size() <= ins.imm) out_params_.resize(ins.imm + 1u, 0u);
         out_params_[ins.imm] = read(ins.a);

@@ -35,6 +35,7 @@ struct SetupOutput {
   bool killed = false;
   bool iteration_cap_hit = false;  // killed because a loop ran past the context's cap
   bool has_bound = false;
+  bool back_facing = false;  // facing(): the instance shows its back
   uint32_t instructions = 0;  // executed
   float bound[4] = {0, 0, 0, 0};  // xmin, ymin, xmax, ymax in window coordinates
 };

@@ -10,6 +10,9 @@ namespace pf {
 // What the shading pass needs to know about a shading state: where its parameters are.
 struct ShadeState {
   int color_slot = -1;  // first of 4 G-buffer slots (r, g, b, a); -1: the state's constant colour
+  // Two-sided lighting: the slots of the back colour, for instances that show their back
+  // (facing()); -1: one colour for both faces.
+  int back_color_slot = -1;
   float constant_color[4] = {1, 1, 1, 1};
 
   bool operator==(const ShadeState&) const = default;

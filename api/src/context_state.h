@@ -11,6 +11,7 @@
 
 #include <primflow/context.h>
 
+#include "api/src/lighting.h"
 #include "compiler/compiler.h"
 #include "raster/renderer.h"
 
@@ -106,6 +107,7 @@ struct PFcontextRec {
   glm::vec4 current_color{1.0f, 1.0f, 1.0f, 1.0f};
 
   pf::ClientArray vertex_array, color_array, normal_array;
+  pf::LightingState lighting;
 
   // Named parameters: ids (1, 2, ...) by name, and their current values (index id - 1).
   std::map<std::string, GLuint> param_ids;
@@ -122,6 +124,13 @@ struct PFcontextRec {
   std::vector<pf::FeedEntry> feed;
   int row_floats = 0;
   glm::mat4 begin_mvp{1.0f};  // matrices cannot change inside glBegin / glEnd
+  // Per-vertex lighting (a primitive with a `vertex` parameter, GL_LIGHTING on): the
+  // modelview, the normal matrix (rescaled as GL_RESCALE_NORMAL asks), and the channels of a
+  // row's colour: 4, or 8 with two-sided lighting (front, then back).
+  bool begin_lit = false;
+  glm::mat4 begin_modelview{1.0f};
+  glm::mat3 begin_normal_matrix{1.0f};
+  int row_channels = 4;
   size_t rows_count = 0;
   std::vector<uint32_t> rows;
   std::vector<float> row_colors;

@@ -170,11 +170,17 @@ void pfglDepthRange(GLclampd zNear, GLclampd zFar) {
   ctx->depth_range[1] = clamp01(zFar);
 }
 
-// The capabilities primflow has: GL_DEPTH_TEST, GL_CULL_FACE.
+// The capabilities primflow has: depth test, face culling, lighting and its lights, colour
+// material, normalising and rescaling normals.
 static bool* capability(PFcontextRec& ctx, GLenum cap) {
+  if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + pf::kMaxLights) return &ctx.lighting.lights[cap - GL_LIGHT0].enabled;
   switch (cap) {
     case GL_DEPTH_TEST: return &ctx.depth_test;
     case GL_CULL_FACE: return &ctx.cull;
+    case GL_LIGHTING: return &ctx.lighting.enabled;
+    case GL_COLOR_MATERIAL: return &ctx.lighting.color_material;
+    case GL_NORMALIZE: return &ctx.lighting.normalize;
+    case GL_RESCALE_NORMAL: return &ctx.lighting.rescale_normal;
     default: ctx.setError(GL_INVALID_ENUM); return nullptr;
   }
 }
@@ -183,6 +189,7 @@ void pfglEnable(GLenum cap) {
   PFcontextRec* ctx = outsideBegin();
   if (!ctx) return;
   if (bool* c = capability(*ctx, cap)) *c = true;
+  if (cap == GL_COLOR_MATERIAL) ctx->lighting.trackColor(ctx->current_color);  // tracks from now on
 }
 
 void pfglDisable(GLenum cap) {

@@ -77,6 +77,8 @@ void planFeed(PFcontextRec& ctx, const pf::CompiledPrimitive& prim) {
   }
 }
 
+void rowColors(PFcontextRec& ctx);
+
 // Binds the current values as one sequence point of the open glBegin.
 void sequencePoint(PFcontextRec& ctx) {
   const size_t row = ctx.rows_count++;
@@ -88,7 +90,7 @@ void sequencePoint(PFcontextRec& ctx) {
         ctx.reject_reason.empty())
       ctx.reject_reason = "sequence point " + std::to_string(row) + ": " + why;
   }
-  ctx.row_colors.insert(ctx.row_colors.end(), &ctx.current_color[0], &ctx.current_color[0] + 4);
+  rowColors(ctx);
 }
 
 // Hands the rows to the renderer: for a primitive with a fixed count, one instance per
@@ -100,13 +102,15 @@ void submitInstances(PFcontextRec& ctx) {
   const size_t per = sized ? total : static_cast<size_t>(prim.sequence_points);
   if (per == 0) return;
   const int count = static_cast<int>(per);
-  // The colour is the one per-vertex shading parameter so far: 4 channels, interpolated
-  // perspective-correct (GL's default), in G-buffer slots 0-3.
+  // The colour is the one per-vertex shading parameter so far: 4 channels (8 with two-sided
+  // lighting: front, back), interpolated perspective-correct (GL's default), from G-buffer slot 0.
+  const int nch = ctx.row_channels;
   pf::ChannelLayout layout;
-  if (prim.has_interp_data) layout = pf::ChannelLayout::ofKind(4, pf::InterpKind::PerspectiveLinear);
+  if (prim.has_interp_data) layout = pf::ChannelLayout::ofKind(nch, pf::InterpKind::PerspectiveLinear);
   pf::ShadeState shade;
   if (prim.has_interp_data) {
     shade.color_slot = 0;
+    if (nch == 8) shade.back_color_slot = 4;
   } else {
     for (int k = 0; k < 4; ++k) shade.constant_color[k] = ctx.current_color[k];
   }
@@ -130,7 +134,7 @@ void submitInstances(PFcontextRec& ctx) {
     }
     for (size_t i = 0; i < per; ++i)
       for (int c = 0; c < layout.count; ++c)
-        ctx.vertex_channels[i * layout.count + c] = ctx.row_colors[(first + i) * 4 + c];
+        ctx.vertex_channels[i * layout.count + c] = ctx.row_colors[(first + i) * nch + c];
     ctx.renderer.submit(prim, ctx.param_block.data(), ctx.vertex_channels.data(), layout, state, shade, count);
   }
 }
@@ -162,7 +166,32 @@ void setVertex(double x, double y, double z, double w, int count) {
 }
 
 void setColor(float r, float g, float b, float a) {
-  if (PFcontextRec* ctx = currentContext()) ctx->current_color = glm::vec4(r, g, b, a);
+  PFcontextRec* ctx = currentContext();
+  if (!ctx) return;
+  ctx->current_color = glm::vec4(r, g, b, a);
+  ctx->lighting.trackColor(ctx->current_color);
+}
+
+// The colour channels of a sequence point: the current colour, or (lit) the colours GL's
+// lighting gives the vertex -- front, and back with two-sided lighting.
+void rowColors(PFcontextRec& ctx) {
+  if (!ctx.begin_lit) {
+    ctx.row_colors.insert(ctx.row_colors.end(), &ctx.current_color[0], &ctx.current_color[0] + 4);
+    return;
+  }
+  const pf::ParamValue& v = ctx.current_params[ctx.vertex_param - 1];
+  const pf::ParamValue& nv = ctx.current_params[ctx.normal_param - 1];
+  glm::vec4 p(static_cast<float>(v.v[0]), static_cast<float>(v.v[1]), v.count > 2 ? static_cast<float>(v.v[2]) : 0.0f,
+              v.count > 3 ? static_cast<float>(v.v[3]) : 1.0f);
+  glm::vec4 eye4 = ctx.begin_modelview * p;
+  glm::vec3 eye = eye4.w != 0.0f ? glm::vec3(eye4) / eye4.w : glm::vec3(eye4);
+  glm::vec3 n = ctx.begin_normal_matrix *
+                glm::vec3(static_cast<float>(nv.v[0]), static_cast<float>(nv.v[1]), static_cast<float>(nv.v[2]));
+  if (ctx.lighting.normalize && glm::length(n) > 0.0f) n = glm::normalize(n);
+  for (int face = 0; face < ctx.row_channels / 4; ++face) {
+    glm::vec4 c = pf::litColor(ctx.lighting, eye, n, face);
+    ctx.row_colors.insert(ctx.row_colors.end(), &c[0], &c[0] + 4);
+  }
 }
 
 float unorm(GLubyte v) { return static_cast<float>(v) / 255.0f; }
@@ -197,6 +226,20 @@ void pfglBegin(GLenum mode) {
   ctx->begin_mode = mode;
   ctx->begin_primitive = it->second.get();
   ctx->begin_mvp = ctx->projection.top * ctx->modelview.top;
+  // GL lights vertices: a primitive with a `vertex` parameter is lit per sequence point.
+  ctx->begin_lit = ctx->lighting.enabled && ctx->begin_primitive->findParam("vertex") != nullptr;
+  ctx->row_channels = ctx->begin_lit && ctx->lighting.two_side ? 8 : 4;
+  if (ctx->begin_lit) {
+    ctx->begin_modelview = ctx->modelview.top;
+    // Normals go by the inverse transpose of the modelview's upper 3x3; GL_RESCALE_NORMAL
+    // divides by the length of the inverse's third row (GL 1.5 section 2.11.3).
+    glm::mat3 inverse = glm::inverse(glm::mat3(ctx->modelview.top));
+    ctx->begin_normal_matrix = glm::transpose(inverse);
+    if (ctx->lighting.rescale_normal && !ctx->lighting.normalize) {
+      float len = std::sqrt(inverse[0][2] * inverse[0][2] + inverse[1][2] * inverse[1][2] + inverse[2][2] * inverse[2][2]);
+      if (len > 0.0f) ctx->begin_normal_matrix /= len;
+    }
+  }
   planFeed(*ctx, *ctx->begin_primitive);
   ctx->rows_count = 0;
   ctx->rows.clear();

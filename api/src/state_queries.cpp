@@ -52,6 +52,20 @@ bool query(const PFcontextRec& ctx, GLenum pname, Query& q) {
            double((ctx.color_mask >> 3) & 1)});
       return true;
     case GL_MATRIX_MODE: set({double(ctx.matrix_mode)}); return true;
+    case GL_LIGHTING: set({ctx.lighting.enabled ? 1.0 : 0.0}); return true;
+    case GL_COLOR_MATERIAL: set({ctx.lighting.color_material ? 1.0 : 0.0}); return true;
+    case GL_COLOR_MATERIAL_FACE: set({double(ctx.lighting.color_material_face)}); return true;
+    case GL_COLOR_MATERIAL_PARAMETER: set({double(ctx.lighting.color_material_mode)}); return true;
+    case GL_NORMALIZE: set({ctx.lighting.normalize ? 1.0 : 0.0}); return true;
+    case GL_RESCALE_NORMAL: set({ctx.lighting.rescale_normal ? 1.0 : 0.0}); return true;
+    case GL_MAX_LIGHTS: set({double(pf::kMaxLights)}); return true;
+    case GL_LIGHT_MODEL_AMBIENT: {
+      const glm::vec4& a = ctx.lighting.model_ambient;
+      set({a[0], a[1], a[2], a[3]}, true);
+      return true;
+    }
+    case GL_LIGHT_MODEL_LOCAL_VIEWER: set({ctx.lighting.local_viewer ? 1.0 : 0.0}); return true;
+    case GL_LIGHT_MODEL_TWO_SIDE: set({ctx.lighting.two_side ? 1.0 : 0.0}); return true;
     case GL_VERTEX_ARRAY: set({ctx.vertex_array.enabled ? 1.0 : 0.0}); return true;
     case GL_COLOR_ARRAY: set({ctx.color_array.enabled ? 1.0 : 0.0}); return true;
     case GL_NORMAL_ARRAY: set({ctx.normal_array.enabled ? 1.0 : 0.0}); return true;
@@ -78,7 +92,12 @@ bool query(const PFcontextRec& ctx, GLenum pname, Query& q) {
     case GL_PACK_ALIGNMENT: set({double(ctx.pack_alignment)}); return true;
     case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS: set({8}); return true;
     case GL_DEPTH_BITS: set({double(ctx.depth_bits > 0 ? 24 : 0)}); return true;
-    default: return false;
+    default:
+      if (pname >= GL_LIGHT0 && pname < GL_LIGHT0 + pf::kMaxLights) {
+        set({ctx.lighting.lights[pname - GL_LIGHT0].enabled ? 1.0 : 0.0});
+        return true;
+      }
+      return false;
   }
 }
 

@@ -40,6 +40,14 @@ enum class Scene : int {
   MatrixOps,         // perspective, push / pop, translate, rotate, scale, load and mult matrix
   NearClipCull,      // perspective triangles crossing the near plane, culled by orientation
   VertexArrays,      // the ID mesh through glDrawElements, a strip through glDrawArrays
+  // GL lighting on tessellated spheres and an open cylinder (seen inside), one feature each:
+  LitDirectional,    // a directional light, specular material
+  LitPointLights,    // two positional lights with constant / linear / quadratic attenuation
+  LitSpot,           // a spot light: exponent and cutoff
+  LitTwoSide,        // two-sided lighting, a back material, the inside of a cylinder
+  LitLocalViewer,    // specular with a local viewer
+  LitNormalize,      // a scaled modelview with GL_NORMALIZE, and with GL_RESCALE_NORMAL
+  LitColorMaterial,  // GL_COLOR_MATERIAL tracking per-vertex glColor, emission, global ambient
 };
 
 constexpr int kSize = 256;  // the scenes are drawn at 256 x 256, glOrtho(0, 256, 0, 256, -1, 1)

@@ -192,7 +192,7 @@ TEST(GlState, QueriesReturnTheStateInEachType) {
   pfglGetIntegerv(GL_DEPTH_BITS, v);
   EXPECT_EQ(v[0], 24);
   EXPECT_EQ(error(), static_cast<GLenum>(GL_NO_ERROR));
-  pfglGetIntegerv(GL_LIGHTING, v);  // not state primflow has (yet)
+  pfglGetIntegerv(GL_FOG_MODE, v);  // not state primflow has
   EXPECT_EQ(error(), static_cast<GLenum>(GL_INVALID_ENUM));
   pfglGetIntegerv(GL_VIEWPORT, nullptr);  // NULL: nothing written, no crash
   EXPECT_EQ(error(), static_cast<GLenum>(GL_NO_ERROR));
@@ -259,7 +259,7 @@ TEST(GlState, BadEnumsAndCommandsInsideBeginEnd) {
   EXPECT_EQ(error(), static_cast<GLenum>(GL_INVALID_ENUM));
   pfglShadeModel(GL_LINE);
   EXPECT_EQ(error(), static_cast<GLenum>(GL_INVALID_ENUM));
-  pfglEnable(GL_LIGHTING);
+  pfglEnable(GL_FOG);
   EXPECT_EQ(error(), static_cast<GLenum>(GL_INVALID_ENUM));
   pfglLoadMatrixf(nullptr);  // ignored
   pfglVertex3fv(nullptr);

@@ -35,6 +35,25 @@ void pfglCullFace(GLenum mode);
 void pfglFrontFace(GLenum mode);
 void pfglShadeModel(GLenum mode);
 
+/* Lighting (GL 1.5 section 2.14): 8 lights, front and back materials, the light model,
+ * GL_COLOR_MATERIAL, GL_NORMALIZE, GL_RESCALE_NORMAL. Vertex primitives (those with a `vertex`
+ * parameter) are lit per vertex, as GL lights them. glMaterial is allowed inside glBegin. */
+void pfglLightf(GLenum light, GLenum pname, GLfloat param);
+void pfglLighti(GLenum light, GLenum pname, GLint param);
+void pfglLightfv(GLenum light, GLenum pname, const GLfloat *params);
+void pfglLightiv(GLenum light, GLenum pname, const GLint *params);
+void pfglLightModelf(GLenum pname, GLfloat param);
+void pfglLightModeli(GLenum pname, GLint param);
+void pfglLightModelfv(GLenum pname, const GLfloat *params);
+void pfglLightModeliv(GLenum pname, const GLint *params);
+void pfglMaterialf(GLenum face, GLenum pname, GLfloat param);
+void pfglMateriali(GLenum face, GLenum pname, GLint param);
+void pfglMaterialfv(GLenum face, GLenum pname, const GLfloat *params);
+void pfglMaterialiv(GLenum face, GLenum pname, const GLint *params);
+void pfglColorMaterial(GLenum face, GLenum mode);
+void pfglGetLightfv(GLenum light, GLenum pname, GLfloat *params);
+void pfglGetMaterialfv(GLenum face, GLenum pname, GLfloat *params);
+
 /* Vertex arrays: GL_VERTEX_ARRAY, GL_COLOR_ARRAY, GL_NORMAL_ARRAY. glDrawArrays /
  * glDrawElements are glBegin, glArrayElement per index, glEnd, as GL defines them. */
 void pfglEnableClientState(GLenum array);

@@ -1,0 +1,269 @@
+// GL's lighting equation (GL 1.5 section 2.14.1) and the lighting commands: glLight,
+// glLightModel, glMaterial, glColorMaterial, glGetLight, glGetMaterial.
+#include "api/src/lighting.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <primflow/gl.h>
+
+#include "api/src/context_state.h"
+
+namespace pf {
+
+void LightingState::trackColor(const glm::vec4& color) {
+  if (!color_material) return;
+  for (int face = 0; face < 2; ++face) {
+    if (face == 0 && color_material_face == GL_BACK) continue;
+    if (face == 1 && color_material_face == GL_FRONT) continue;
+    Material& m = material[face];
+    switch (color_material_mode) {
+      case GL_AMBIENT: m.ambient = color; break;
+      case GL_DIFFUSE: m.diffuse = color; break;
+      case GL_SPECULAR: m.specular = color; break;
+      case GL_EMISSION: m.emission = color; break;
+      default: m.ambient = m.diffuse = color; break;  // GL_AMBIENT_AND_DIFFUSE
+    }
+  }
+}
+
+glm::vec4 litColor(const LightingState& s, const glm::vec3& eye, const glm::vec3& normal_in, int face) {
+  const Material& m = s.material[face];
+  const glm::vec3 n = face == 0 ? normal_in : -normal_in;
+  glm::vec3 c = glm::vec3(m.emission) + glm::vec3(m.ambient) * glm::vec3(s.model_ambient);
+  for (const Light& l : s.lights) {
+    if (!l.enabled) continue;
+    // VP: from the vertex to the light (a direction for a light at infinity), and attenuation.
+    glm::vec3 vp;
+    float attenuation = 1.0f;
+    if (l.position.w != 0.0f) {
+      glm::vec3 d = glm::vec3(l.position) / l.position.w - eye;
+      float dist = glm::length(d);
+      vp = dist > 0 ? d / dist : glm::vec3(0);
+      float k = l.constant_attenuation + l.linear_attenuation * dist + l.quadratic_attenuation * dist * dist;
+      attenuation = k > 0 ? 1.0f / k : 0.0f;
+    } else {
+      vp = glm::length(glm::vec3(l.position)) > 0 ? glm::normalize(glm::vec3(l.position)) : glm::vec3(0);
+    }
+    float spot = 1.0f;
+    if (l.spot_cutoff != 180.0f) {
+      glm::vec3 sd = glm::length(l.spot_direction) > 0 ? glm::normalize(l.spot_direction) : glm::vec3(0);
+      float cos_angle = std::max(glm::dot(-vp, sd), 0.0f);
+      spot = cos_angle >= std::cos(glm::radians(l.spot_cutoff)) ? std::pow(cos_angle, l.spot_exponent) : 0.0f;
+    }
+    const float n_dot_vp = std::max(glm::dot(n, vp), 0.0f);
+    glm::vec3 term = glm::vec3(m.ambient) * glm::vec3(l.ambient) + n_dot_vp * glm::vec3(m.diffuse) * glm::vec3(l.diffuse);
+    if (n_dot_vp > 0.0f) {
+      glm::vec3 h = vp + (s.local_viewer ? (glm::length(eye) > 0 ? -glm::normalize(eye) : glm::vec3(0)) : glm::vec3(0, 0, 1));
+      float hl = glm::length(h);
+      float n_dot_h = hl > 0 ? std::max(glm::dot(n, h / hl), 0.0f) : 0.0f;
+      float spec = m.shininess == 0.0f ? 1.0f : std::pow(n_dot_h, m.shininess);
+      term += spec * glm::vec3(m.specular) * glm::vec3(l.specular);
+    }
+    c += attenuation * spot * term;
+  }
+  return glm::clamp(glm::vec4(c, m.diffuse.a), 0.0f, 1.0f);
+}
+
+}  // namespace pf
+
+namespace {
+
+using pf::contextOutsideBegin;
+
+// glLight's and glMaterial's parameters: how many values each takes.
+int lightValues(GLenum pname) {
+  switch (pname) {
+    case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_POSITION: return 4;
+    case GL_SPOT_DIRECTION: return 3;
+    case GL_SPOT_EXPONENT: case GL_SPOT_CUTOFF: case GL_CONSTANT_ATTENUATION: case GL_LINEAR_ATTENUATION:
+    case GL_QUADRATIC_ATTENUATION: return 1;
+    default: return 0;
+  }
+}
+
+void light(GLenum which, GLenum pname, const float* v, int given) {
+  PFcontextRec* ctx = contextOutsideBegin();
+  if (!ctx) return;
+  const int need = lightValues(pname);
+  if (which < GL_LIGHT0 || which >= GL_LIGHT0 + pf::kMaxLights || need == 0 || (given == 1 && need != 1)) {
+    ctx->setError(GL_INVALID_ENUM);
+    return;
+  }
+  if (!v) return;
+  pf::Light& l = ctx->lighting.lights[which - GL_LIGHT0];
+  const glm::mat4& mv = ctx->modelview.top;
+  switch (pname) {
+    case GL_AMBIENT: l.ambient = glm::vec4(v[0], v[1], v[2], v[3]); break;
+    case GL_DIFFUSE: l.diffuse = glm::vec4(v[0], v[1], v[2], v[3]); break;
+    case GL_SPECULAR: l.specular = glm::vec4(v[0], v[1], v[2], v[3]); break;
+    case GL_POSITION: l.position = mv * glm::vec4(v[0], v[1], v[2], v[3]); break;
+    case GL_SPOT_DIRECTION: l.spot_direction = glm::mat3(mv) * glm::vec3(v[0], v[1], v[2]); break;
+    case GL_SPOT_EXPONENT:
+      if (v[0] < 0 || v[0] > 128) return ctx->setError(GL_INVALID_VALUE);
+      l.spot_exponent = v[0];
+      break;
+    case GL_SPOT_CUTOFF:
+      if ((v[0] < 0 || v[0] > 90) && v[0] != 180) return ctx->setError(GL_INVALID_VALUE);
+      l.spot_cutoff = v[0];
+      break;
+    default: {  // attenuation
+      if (v[0] < 0) return ctx->setError(GL_INVALID_VALUE);
+      (pname == GL_CONSTANT_ATTENUATION ? l.constant_attenuation
+       : pname == GL_LINEAR_ATTENUATION ? l.linear_attenuation : l.quadratic_attenuation) = v[0];
+    }
+  }
+}
+
+void lightModel(GLenum pname, const float* v, int given) {
+  PFcontextRec* ctx = contextOutsideBegin();
+  if (!ctx) return;
+  if ((pname != GL_LIGHT_MODEL_AMBIENT && pname != GL_LIGHT_MODEL_LOCAL_VIEWER && pname != GL_LIGHT_MODEL_TWO_SIDE) ||
+      (given == 1 && pname == GL_LIGHT_MODEL_AMBIENT)) {
+    ctx->setError(GL_INVALID_ENUM);
+    return;
+  }
+  if (!v) return;
+  if (pname == GL_LIGHT_MODEL_AMBIENT) ctx->lighting.model_ambient = glm::vec4(v[0], v[1], v[2], v[3]);
+  else if (pname == GL_LIGHT_MODEL_LOCAL_VIEWER) ctx->lighting.local_viewer = v[0] != 0;
+  else ctx->lighting.two_side = v[0] != 0;
+}
+
+// glMaterial is allowed between glBegin and glEnd (it changes the material of later vertices).
+void material(GLenum face, GLenum pname, const float* v, int given) {
+  PFcontextRec* ctx = pf::currentContext();
+  if (!ctx) return;
+  if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) {
+    ctx->setError(GL_INVALID_ENUM);
+    return;
+  }
+  const bool scalar = pname == GL_SHININESS;
+  const bool known = scalar || pname == GL_AMBIENT || pname == GL_DIFFUSE || pname == GL_SPECULAR ||
+                     pname == GL_EMISSION || pname == GL_AMBIENT_AND_DIFFUSE;
+  if (!known || (given == 1 && !scalar)) {
+    ctx->setError(GL_INVALID_ENUM);
+    return;
+  }
+  if (!v) return;
+  if (scalar && (v[0] < 0 || v[0] > 128)) {
+    ctx->setError(GL_INVALID_VALUE);
+    return;
+  }
+  for (int f = 0; f < 2; ++f) {
+    if ((f == 0 && face == GL_BACK) || (f == 1 && face == GL_FRONT)) continue;
+    pf::Material& m = ctx->lighting.material[f];
+    glm::vec4 c = scalar ? glm::vec4(0) : glm::vec4(v[0], v[1], v[2], v[3]);
+    switch (pname) {
+      case GL_AMBIENT: m.ambient = c; break;
+      case GL_DIFFUSE: m.diffuse = c; break;
+      case GL_SPECULAR: m.specular = c; break;
+      case GL_EMISSION: m.emission = c; break;
+      case GL_AMBIENT_AND_DIFFUSE: m.ambient = m.diffuse = c; break;
+      default: m.shininess = v[0]; break;
+    }
+  }
+}
+
+}  // namespace
+
+extern "C" {
+
+void pfglLightf(GLenum l, GLenum pname, GLfloat v) { light(l, pname, &v, 1); }
+void pfglLighti(GLenum l, GLenum pname, GLint v) {
+  const float f = static_cast<float>(v);
+  light(l, pname, &f, 1);
+}
+void pfglLightfv(GLenum l, GLenum pname, const GLfloat* v) { light(l, pname, v, 4); }
+void pfglLightiv(GLenum l, GLenum pname, const GLint* v) {
+  // Integer colours map 2^31 - 1 to 1.0 (GL 1.5 table 2.9); positions and the rest as they are.
+  float f[4] = {0, 0, 0, 0};
+  const bool color = pname == GL_AMBIENT || pname == GL_DIFFUSE || pname == GL_SPECULAR;
+  for (int i = 0; v && i < lightValues(pname); ++i)
+    f[i] = color ? static_cast<float>(v[i] / 2147483647.0) : static_cast<float>(v[i]);
+  light(l, pname, v ? f : nullptr, 4);
+}
+
+void pfglLightModelf(GLenum pname, GLfloat v) { lightModel(pname, &v, 1); }
+void pfglLightModeli(GLenum pname, GLint v) {
+  const float f = static_cast<float>(v);
+  lightModel(pname, &f, 1);
+}
+void pfglLightModelfv(GLenum pname, const GLfloat* v) { lightModel(pname, v, 4); }
+void pfglLightModeliv(GLenum pname, const GLint* v) {
+  float f[4] = {0, 0, 0, 0};
+  const int n = pname == GL_LIGHT_MODEL_AMBIENT ? 4 : 1;
+  for (int i = 0; v && i < n; ++i)
+    f[i] = pname == GL_LIGHT_MODEL_AMBIENT ? static_cast<float>(v[i] / 2147483647.0) : static_cast<float>(v[i]);
+  lightModel(pname, v ? f : nullptr, 4);
+}
+
+void pfglMaterialf(GLenum face, GLenum pname, GLfloat v) { material(face, pname, &v, 1); }
+void pfglMateriali(GLenum face, GLenum pname, GLint v) {
+  const float f = static_cast<float>(v);
+  material(face, pname, &f, 1);
+}
+void pfglMaterialfv(GLenum face, GLenum pname, const GLfloat* v) { material(face, pname, v, 4); }
+void pfglMaterialiv(GLenum face, GLenum pname, const GLint* v) {
+  float f[4] = {0, 0, 0, 0};
+  const int n = pname == GL_SHININESS ? 1 : 4;
+  for (int i = 0; v && i < n; ++i)
+    f[i] = pname == GL_SHININESS ? static_cast<float>(v[i]) : static_cast<float>(v[i] / 2147483647.0);
+  material(face, pname, v ? f : nullptr, 4);
+}
+
+void pfglColorMaterial(GLenum face, GLenum mode) {
+  PFcontextRec* ctx = contextOutsideBegin();
+  if (!ctx) return;
+  if ((face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) ||
+      (mode != GL_EMISSION && mode != GL_AMBIENT && mode != GL_DIFFUSE && mode != GL_SPECULAR &&
+       mode != GL_AMBIENT_AND_DIFFUSE)) {
+    ctx->setError(GL_INVALID_ENUM);
+    return;
+  }
+  ctx->lighting.color_material_face = face;
+  ctx->lighting.color_material_mode = mode;
+  ctx->lighting.trackColor(ctx->current_color);
+}
+
+void pfglGetLightfv(GLenum which, GLenum pname, GLfloat* v) {
+  PFcontextRec* ctx = contextOutsideBegin();
+  if (!ctx) return;
+  if (which < GL_LIGHT0 || which >= GL_LIGHT0 + pf::kMaxLights || lightValues(pname) == 0) {
+    ctx->setError(GL_INVALID_ENUM);
+    return;
+  }
+  if (!v) return;
+  const pf::Light& l = ctx->lighting.lights[which - GL_LIGHT0];
+  auto put = [&](const float* src, int n) { std::copy(src, src + n, v); };
+  switch (pname) {
+    case GL_AMBIENT: put(&l.ambient[0], 4); break;
+    case GL_DIFFUSE: put(&l.diffuse[0], 4); break;
+    case GL_SPECULAR: put(&l.specular[0], 4); break;
+    case GL_POSITION: put(&l.position[0], 4); break;
+    case GL_SPOT_DIRECTION: put(&l.spot_direction[0], 3); break;
+    case GL_SPOT_EXPONENT: v[0] = l.spot_exponent; break;
+    case GL_SPOT_CUTOFF: v[0] = l.spot_cutoff; break;
+    case GL_CONSTANT_ATTENUATION: v[0] = l.constant_attenuation; break;
+    case GL_LINEAR_ATTENUATION: v[0] = l.linear_attenuation; break;
+    default: v[0] = l.quadratic_attenuation; break;
+  }
+}
+
+void pfglGetMaterialfv(GLenum face, GLenum pname, GLfloat* v) {
+  PFcontextRec* ctx = contextOutsideBegin();
+  if (!ctx) return;
+  if ((face != GL_FRONT && face != GL_BACK) ||
+      (pname != GL_AMBIENT && pname != GL_DIFFUSE && pname != GL_SPECULAR && pname != GL_EMISSION &&
+       pname != GL_SHININESS)) {
+    ctx->setError(GL_INVALID_ENUM);
+    return;
+  }
+  if (!v) return;
+  const pf::Material& m = ctx->lighting.material[face == GL_FRONT ? 0 : 1];
+  const float* src = pname == GL_AMBIENT ? &m.ambient[0] : pname == GL_DIFFUSE ? &m.diffuse[0]
+                     : pname == GL_SPECULAR ? &m.specular[0] : pname == GL_EMISSION ? &m.emission[0] : nullptr;
+  if (src) std::copy(src, src + 4, v);
+  else v[0] = m.shininess;
+}
+
+}  // extern "C"

@@ -1,0 +1,57 @@
+// GL's fixed-function lighting state and its per-vertex evaluation (GL 1.5 section 2.14).
+// Vertex primitives (those with a `vertex` parameter) are lit per sequence point, as GL lights
+// per vertex; the lit colours are the per-vertex colour channels their primitives interpolate.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <GL/gl.h>
+
+namespace pf {
+
+constexpr int kMaxLights = 8;
+
+struct Light {
+  bool enabled = false;
+  glm::vec4 ambient{0, 0, 0, 1};
+  glm::vec4 diffuse{0, 0, 0, 1};   // light 0: (1, 1, 1, 1)
+  glm::vec4 specular{0, 0, 0, 1};  // light 0: (1, 1, 1, 1)
+  glm::vec4 position{0, 0, 1, 0};  // eye coordinates (transformed by the modelview when set)
+  glm::vec3 spot_direction{0, 0, -1};  // eye coordinates
+  float spot_exponent = 0, spot_cutoff = 180;
+  float constant_attenuation = 1, linear_attenuation = 0, quadratic_attenuation = 0;
+};
+
+struct Material {
+  glm::vec4 ambient{0.2f, 0.2f, 0.2f, 1};
+  glm::vec4 diffuse{0.8f, 0.8f, 0.8f, 1};
+  glm::vec4 specular{0, 0, 0, 1};
+  glm::vec4 emission{0, 0, 0, 1};
+  float shininess = 0;
+};
+
+struct LightingState {
+  bool enabled = false;            // GL_LIGHTING
+  Light lights[kMaxLights];
+  Material material[2];            // front, back
+  glm::vec4 model_ambient{0.2f, 0.2f, 0.2f, 1};
+  bool local_viewer = false, two_side = false;
+  bool color_material = false;     // GL_COLOR_MATERIAL
+  GLenum color_material_face = GL_FRONT_AND_BACK;
+  GLenum color_material_mode = GL_AMBIENT_AND_DIFFUSE;
+  bool normalize = false, rescale_normal = false;
+
+  LightingState() {
+    lights[0].diffuse = glm::vec4(1);
+    lights[0].specular = glm::vec4(1);
+  }
+  // glColor under GL_COLOR_MATERIAL: the tracked material properties take the colour.
+  void trackColor(const glm::vec4& color);
+};
+
+// The colour of a vertex at eye-space position `eye` with eye-space normal `normal` (already
+// normalised or rescaled as the state asks), lit with material `face` (0 front, 1 back; the
+// back face is lit with the normal reversed), clamped to [0, 1].
+glm::vec4 litColor(const LightingState& s, const glm::vec3& eye, const glm::vec3& normal, int face);
+
+}  // namespace pf
