@@ -92,8 +92,9 @@ PFcontext pfCreateContextAttribs(const int* attribs) {
     ctx->vertex_param = ctx->paramId("vertex");
     ctx->normal_param = ctx->paramId("normal");
     ctx->texcoord_param = ctx->paramId("texcoord");
-    ctx->current_params[ctx->normal_param - 1] = pf::ParamValue{{0, 0, 1}, 3};
-    ctx->current_params[ctx->texcoord_param - 1] = pf::ParamValue{{0, 0, 0, 1}, 4};
+    ctx->color_param = ctx->paramId("color");
+    ctx->param(ctx->normal_param) = pf::ParamValue{{0, 0, 1}, 3};
+    ctx->param(ctx->texcoord_param) = pf::ParamValue{{0, 0, 0, 1}, 4};
     ctx->depth_bits = depth_bits;
     ctx->iteration_cap = cap > 0 ? static_cast<unsigned>(cap) : pf::kDefaultIterationCap;
     if (!pf::registerBuiltins(*ctx)) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <primflow/context.h>
+#include <primflow/gl.h>
 
 #include "api/src/lighting.h"
 #include "compiler/compiler.h"
@@ -40,6 +41,14 @@ struct MatrixStack {
   glm::mat4 top{1.0f};
   size_t max_depth;
   size_t depth() const { return below.size() + 1; }
+};
+
+// One per-vertex shading parameter of the instances of a glBegin: 4 channels from `first`.
+struct ShadingChannel {
+  GLuint param;  // name id; the colour's: its front (`back` false) or back (`back` true) lit colour
+  bool back = false;
+  InterpKind kind;
+  int first;
 };
 
 // One client-side vertex array (glVertexPointer and its siblings).
@@ -109,12 +118,22 @@ struct PFcontextRec {
   pf::ClientArray vertex_array, color_array, normal_array;
   pf::LightingState lighting;
 
-  // Named parameters: ids (1, 2, ...) by name, and their current values (index id - 1).
+  // Named parameters: ids (GL_FIRST_PARAM_NAME_EXT + index) by name, and their current values.
+  // "color" is the current colour (current_color), the one per-vertex shading parameter GL has.
+  static constexpr GLuint kParamNameBase = GL_FIRST_PARAM_NAME_EXT;
   std::map<std::string, GLuint> param_ids;
   std::vector<std::string> param_names;
   std::vector<pf::ParamValue> current_params;
-  GLuint vertex_param = 0, normal_param = 0, texcoord_param = 0;
+  GLuint vertex_param = 0, normal_param = 0, texcoord_param = 0, color_param = 0;
   GLuint paramId(const std::string& name);  // interns the name
+  bool isParam(GLuint id) const { return id >= kParamNameBase && id - kParamNameBase < current_params.size(); }
+  pf::ParamValue& param(GLuint id) { return current_params[id - kParamNameBase]; }
+  const pf::ParamValue& param(GLuint id) const { return current_params[id - kParamNameBase]; }
+
+  // How each glBegin mode interpolates shading parameters (pfglMaterialInterpEXT): by mode,
+  // the parameter and its interpolator (GL_PERSPECTIVE_LINEAR_INTERPOLATOR_EXT or
+  // GL_LINEAR_INTERPOLATOR_EXT). "color" is perspective-linear unless bound otherwise.
+  std::map<GLenum, std::vector<std::pair<GLuint, GLenum>>> shading_bindings;
 
   // Immediate mode: between glBegin and glEnd, each sequence point appends a row with the
   // values of the primitive's parameters (points already in clip coordinates) and the colour.
@@ -131,9 +150,13 @@ struct PFcontextRec {
   glm::mat4 begin_modelview{1.0f};
   glm::mat3 begin_normal_matrix{1.0f};
   int row_channels = 4;
+  // The shading parameters of the glBegin's instances: where each goes in a row's channels.
+  std::vector<pf::ShadingChannel> shading;
+  pf::ChannelLayout begin_layout;
+  int color_channel = -1, back_color_channel = -1;  // first channel of the colour(s); -1: none
   size_t rows_count = 0;
   std::vector<uint32_t> rows;
-  std::vector<float> row_colors;
+  std::vector<float> row_shading;  // row_channels floats per sequence point
   std::string reject_reason;  // non-empty: the sequence points do not fit the primitive
   // Scratch for building instances (kept to avoid allocation per instance).
   std::vector<uint32_t> param_block;

@@ -77,7 +77,7 @@ void planFeed(PFcontextRec& ctx, const pf::CompiledPrimitive& prim) {
   }
 }
 
-void rowColors(PFcontextRec& ctx);
+void rowChannels(PFcontextRec& ctx);
 
 // Binds the current values as one sequence point of the open glBegin.
 void sequencePoint(PFcontextRec& ctx) {
@@ -86,11 +86,11 @@ void sequencePoint(PFcontextRec& ctx) {
   uint32_t* out = ctx.rows.data() + row * static_cast<size_t>(ctx.row_floats);
   for (const pf::FeedEntry& f : ctx.feed) {
     std::string why;
-    if (!convertValue(*f.info, ctx.current_params[f.name - 1], ctx.begin_mvp, out + f.row_offset, why) &&
+    if (!convertValue(*f.info, ctx.param(f.name), ctx.begin_mvp, out + f.row_offset, why) &&
         ctx.reject_reason.empty())
       ctx.reject_reason = "sequence point " + std::to_string(row) + ": " + why;
   }
-  rowColors(ctx);
+  rowChannels(ctx);
 }
 
 // Hands the rows to the renderer: for a primitive with a fixed count, one instance per
@@ -102,15 +102,14 @@ void submitInstances(PFcontextRec& ctx) {
   const size_t per = sized ? total : static_cast<size_t>(prim.sequence_points);
   if (per == 0) return;
   const int count = static_cast<int>(per);
-  // The colour is the one per-vertex shading parameter so far: 4 channels (8 with two-sided
-  // lighting: front, back), interpolated perspective-correct (GL's default), from G-buffer slot 0.
+  // The shading channels planned at glBegin; the colour in them, or (no per-vertex parameters)
+  // the current colour for the whole instance.
   const int nch = ctx.row_channels;
-  pf::ChannelLayout layout;
-  if (prim.has_interp_data) layout = pf::ChannelLayout::ofKind(nch, pf::InterpKind::PerspectiveLinear);
+  const pf::ChannelLayout& layout = ctx.begin_layout;
   pf::ShadeState shade;
   if (prim.has_interp_data) {
-    shade.color_slot = 0;
-    if (nch == 8) shade.back_color_slot = 4;
+    shade.color_slot = ctx.color_channel;
+    shade.back_color_slot = ctx.back_color_channel;
   } else {
     for (int k = 0; k < 4; ++k) shade.constant_color[k] = ctx.current_color[k];
   }
@@ -134,7 +133,7 @@ void submitInstances(PFcontextRec& ctx) {
     }
     for (size_t i = 0; i < per; ++i)
       for (int c = 0; c < layout.count; ++c)
-        ctx.vertex_channels[i * layout.count + c] = ctx.row_colors[(first + i) * nch + c];
+        ctx.vertex_channels[i * layout.count + c] = ctx.row_shading[(first + i) * nch + c];
     ctx.renderer.submit(prim, ctx.param_block.data(), ctx.vertex_channels.data(), layout, state, shade, count);
   }
 }
@@ -146,11 +145,11 @@ bool isGlMode(GLenum mode) { return mode <= GL_POLYGON; }
 void setParam(GLuint name, int count, const double* v) {
   PFcontextRec* ctx = currentContext();
   if (!ctx) return;
-  if (name == 0 || name > ctx->current_params.size()) {
+  if (!ctx->isParam(name)) {
     ctx->setError(GL_INVALID_VALUE);
     return;
   }
-  pf::ParamValue& p = ctx->current_params[name - 1];
+  pf::ParamValue& p = ctx->param(name);
   p.count = count;
   for (int i = 0; i < count; ++i) p.v[i] = v[i];
 }
@@ -159,7 +158,7 @@ void setVertex(double x, double y, double z, double w, int count) {
   PFcontextRec* ctx = currentContext();
   if (!ctx || !ctx->in_begin) return;  // outside Begin/End a vertex has no effect (GL: undefined)
   const double v[4] = {x, y, z, w};
-  pf::ParamValue& p = ctx->current_params[ctx->vertex_param - 1];
+  pf::ParamValue& p = ctx->param(ctx->vertex_param);
   p.count = count;
   for (int i = 0; i < 4; ++i) p.v[i] = v[i];
   sequencePoint(*ctx);
@@ -172,26 +171,70 @@ void setColor(float r, float g, float b, float a) {
   ctx->lighting.trackColor(ctx->current_color);
 }
 
-// The colour channels of a sequence point: the current colour, or (lit) the colours GL's
-// lighting gives the vertex -- front, and back with two-sided lighting.
-void rowColors(PFcontextRec& ctx) {
-  if (!ctx.begin_lit) {
-    ctx.row_colors.insert(ctx.row_colors.end(), &ctx.current_color[0], &ctx.current_color[0] + 4);
-    return;
+// The shading channels of a sequence point, in the layout planned at glBegin: each bound
+// parameter's current value, the colour's being GL's lit colour(s) when lighting applies.
+void rowChannels(PFcontextRec& ctx) {
+  const size_t at = ctx.row_shading.size();
+  ctx.row_shading.resize(at + static_cast<size_t>(ctx.row_channels));
+  float* out = ctx.row_shading.data() + at;
+  glm::vec4 lit[2];
+  if (ctx.begin_lit) {
+    const pf::ParamValue& v = ctx.param(ctx.vertex_param);
+    const pf::ParamValue& nv = ctx.param(ctx.normal_param);
+    glm::vec4 p(static_cast<float>(v.v[0]), static_cast<float>(v.v[1]), v.count > 2 ? static_cast<float>(v.v[2]) : 0.0f,
+                v.count > 3 ? static_cast<float>(v.v[3]) : 1.0f);
+    glm::vec4 eye4 = ctx.begin_modelview * p;
+    glm::vec3 eye = eye4.w != 0.0f ? glm::vec3(eye4) / eye4.w : glm::vec3(eye4);
+    glm::vec3 n = ctx.begin_normal_matrix *
+                  glm::vec3(static_cast<float>(nv.v[0]), static_cast<float>(nv.v[1]), static_cast<float>(nv.v[2]));
+    if (ctx.lighting.normalize && glm::length(n) > 0.0f) n = glm::normalize(n);
+    lit[0] = pf::litColor(ctx.lighting, eye, n, 0);
+    if (ctx.back_color_channel >= 0) lit[1] = pf::litColor(ctx.lighting, eye, n, 1);
   }
-  const pf::ParamValue& v = ctx.current_params[ctx.vertex_param - 1];
-  const pf::ParamValue& nv = ctx.current_params[ctx.normal_param - 1];
-  glm::vec4 p(static_cast<float>(v.v[0]), static_cast<float>(v.v[1]), v.count > 2 ? static_cast<float>(v.v[2]) : 0.0f,
-              v.count > 3 ? static_cast<float>(v.v[3]) : 1.0f);
-  glm::vec4 eye4 = ctx.begin_modelview * p;
-  glm::vec3 eye = eye4.w != 0.0f ? glm::vec3(eye4) / eye4.w : glm::vec3(eye4);
-  glm::vec3 n = ctx.begin_normal_matrix *
-                glm::vec3(static_cast<float>(nv.v[0]), static_cast<float>(nv.v[1]), static_cast<float>(nv.v[2]));
-  if (ctx.lighting.normalize && glm::length(n) > 0.0f) n = glm::normalize(n);
-  for (int face = 0; face < ctx.row_channels / 4; ++face) {
-    glm::vec4 c = pf::litColor(ctx.lighting, eye, n, face);
-    ctx.row_colors.insert(ctx.row_colors.end(), &c[0], &c[0] + 4);
+  for (const pf::ShadingChannel& s : ctx.shading) {
+    float* dst = out + s.first;
+    if (s.param == ctx.color_param) {
+      const glm::vec4& c = ctx.begin_lit ? lit[s.back ? 1 : 0] : ctx.current_color;
+      for (int k = 0; k < 4; ++k) dst[k] = c[k];
+      continue;
+    }
+    const pf::ParamValue& v = ctx.param(s.param);
+    for (int k = 0; k < 4; ++k) dst[k] = k < v.count ? static_cast<float>(v.v[k]) : (k == 3 ? 1.0f : 0.0f);
   }
+}
+
+// Plans the shading channels of a glBegin: the parameters bound for its mode (the colour
+// perspective-linear unless bound otherwise; front and back with two-sided lighting), 4
+// channels each, ordered by interpolation kind as ChannelLayout wants.
+void planShading(PFcontextRec& ctx, GLenum mode, const pf::CompiledPrimitive& prim) {
+  ctx.shading.clear();
+  ctx.color_channel = ctx.back_color_channel = -1;
+  ctx.begin_layout = pf::ChannelLayout{};
+  ctx.row_channels = 0;
+  if (!prim.has_interp_data) return;
+  std::vector<std::pair<GLuint, GLenum>> bound;
+  auto it = ctx.shading_bindings.find(mode);
+  if (it != ctx.shading_bindings.end()) bound = it->second;
+  bool has_color = false;
+  for (const auto& b : bound) has_color = has_color || b.first == ctx.color_param;
+  if (!has_color) bound.insert(bound.begin(), {ctx.color_param, GL_PERSPECTIVE_LINEAR_INTERPOLATOR_EXT});
+  for (int kind = 0; kind < pf::kInterpKindCount; ++kind) {
+    ctx.begin_layout.kind_begin[kind] = 4 * static_cast<int>(ctx.shading.size());
+    for (const auto& [param, interpolator] : bound) {
+      pf::InterpKind k = interpolator == GL_LINEAR_INTERPOLATOR_EXT ? pf::InterpKind::Linear : pf::InterpKind::PerspectiveLinear;
+      if (static_cast<int>(k) != kind) continue;
+      const bool color = param == ctx.color_param;
+      for (int face = 0; face < (color && ctx.begin_lit && ctx.lighting.two_side ? 2 : 1); ++face) {
+        const int first = 4 * static_cast<int>(ctx.shading.size());
+        ctx.shading.push_back({param, face == 1, k, first});
+        if (color) (face == 0 ? ctx.color_channel : ctx.back_color_channel) = first;
+      }
+    }
+    ctx.begin_layout.kind_end[kind] = 4 * static_cast<int>(ctx.shading.size());
+  }
+  ctx.row_channels = 4 * static_cast<int>(ctx.shading.size());
+  ctx.begin_layout.count = ctx.row_channels;
+  for (int c = 0; c < ctx.row_channels; ++c) ctx.begin_layout.gbuffer_slot.push_back(c);
 }
 
 float unorm(GLubyte v) { return static_cast<float>(v) / 255.0f; }
@@ -203,7 +246,7 @@ GLuint PFcontextRec::paramId(const std::string& name) {
   if (it != param_ids.end()) return it->second;
   param_names.push_back(name);
   current_params.emplace_back();
-  GLuint id = static_cast<GLuint>(param_names.size());
+  GLuint id = kParamNameBase + static_cast<GLuint>(param_names.size()) - 1;
   param_ids[name] = id;
   return id;
 }
@@ -228,7 +271,6 @@ void pfglBegin(GLenum mode) {
   ctx->begin_mvp = ctx->projection.top * ctx->modelview.top;
   // GL lights vertices: a primitive with a `vertex` parameter is lit per sequence point.
   ctx->begin_lit = ctx->lighting.enabled && ctx->begin_primitive->findParam("vertex") != nullptr;
-  ctx->row_channels = ctx->begin_lit && ctx->lighting.two_side ? 8 : 4;
   if (ctx->begin_lit) {
     ctx->begin_modelview = ctx->modelview.top;
     // Normals go by the inverse transpose of the modelview's upper 3x3; GL_RESCALE_NORMAL
@@ -241,9 +283,10 @@ void pfglBegin(GLenum mode) {
     }
   }
   planFeed(*ctx, *ctx->begin_primitive);
+  planShading(*ctx, mode, *ctx->begin_primitive);
   ctx->rows_count = 0;
   ctx->rows.clear();
-  ctx->row_colors.clear();
+  ctx->row_shading.clear();
   ctx->reject_reason.clear();
 }
 
@@ -362,6 +405,26 @@ void pfglRastParamivEXT(GLuint name, GLsizei count, const GLint* v) {
   double d[16];
   for (int i = 0; i < count; ++i) d[i] = v[i];
   setParam(name, count, d);
+}
+
+void pfglMaterialInterpEXT(GLuint param, GLenum primitive, GLenum interpolator) {
+  PFcontextRec* ctx = pf::contextOutsideBegin();
+  if (!ctx) return;
+  if (!ctx->isParam(param) || !ctx->primitives.by_mode.count(primitive)) {
+    ctx->setError(GL_INVALID_VALUE);
+    return;
+  }
+  if (interpolator != GL_PERSPECTIVE_LINEAR_INTERPOLATOR_EXT && interpolator != GL_LINEAR_INTERPOLATOR_EXT) {
+    ctx->setError(GL_INVALID_ENUM);
+    return;
+  }
+  auto& bound = ctx->shading_bindings[primitive];
+  for (auto& b : bound)
+    if (b.first == param) {
+      b.second = interpolator;
+      return;
+    }
+  bound.push_back({param, interpolator});
 }
 
 void pfglSequencePointEXT(void) {

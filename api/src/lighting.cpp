@@ -130,11 +130,21 @@ void lightModel(GLenum pname, const float* v, int given) {
 }
 
 // glMaterial is allowed between glBegin and glEnd (it changes the material of later vertices).
+// A parameter name (pfglGetParamNameEXT) instead of a GL material property sets that
+// parameter's current value (paper section 3.1: glMaterial generalised): `given` values (the
+// vector forms: 4).
 void material(GLenum face, GLenum pname, const float* v, int given) {
   PFcontextRec* ctx = pf::currentContext();
   if (!ctx) return;
   if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) {
     ctx->setError(GL_INVALID_ENUM);
+    return;
+  }
+  if (ctx->isParam(pname)) {
+    if (!v) return;
+    pf::ParamValue& p = ctx->param(pname);
+    p.count = given;
+    for (int i = 0; i < given; ++i) p.v[i] = v[i];
     return;
   }
   const bool scalar = pname == GL_SHININESS;

@@ -80,12 +80,12 @@ bool query(const PFcontextRec& ctx, GLenum pname, Query& q) {
     case GL_MAX_TEXTURE_STACK_DEPTH: set({double(ctx.texture.max_depth)}); return true;
     case GL_CURRENT_COLOR: set({col[0], col[1], col[2], col[3]}, true); return true;
     case GL_CURRENT_NORMAL: {
-      const pf::ParamValue& n = ctx.current_params[ctx.normal_param - 1];
+      const pf::ParamValue& n = ctx.param(ctx.normal_param);
       set({n.v[0], n.v[1], n.v[2]}, true);
       return true;
     }
     case GL_CURRENT_TEXTURE_COORDS: {
-      const pf::ParamValue& t = ctx.current_params[ctx.texcoord_param - 1];
+      const pf::ParamValue& t = ctx.param(ctx.texcoord_param);
       set({t.v[0], t.v[1], t.v[2], t.v[3]});
       return true;
     }

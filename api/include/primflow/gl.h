@@ -125,9 +125,12 @@ void pfglNormal3fv(const GLfloat *v);
 void pfglTexCoord1f(GLfloat s);
 void pfglTexCoord2f(GLfloat s, GLfloat t);
 
-/* ---- PixelFlow extensions (tokens in primflow's own range, 0x31000-0x31FFF) ---------------- */
+/* ---- PixelFlow extensions (tokens in primflow's own range, 0x31000-0x3FFFF) ---------------- */
 #define GL_TOO_MANY_ITERATIONS_EXT 0x31001 /* error: a primitive program hit the iteration cap */
+#define GL_PERSPECTIVE_LINEAR_INTERPOLATOR_EXT 0x31010 /* pfglMaterialInterpEXT interpolators */
+#define GL_LINEAR_INTERPOLATOR_EXT 0x31011
 #define GL_FIRST_PRIMITIVE_MODE_EXT 0x31800 /* glBegin modes of compiled primitives start here */
+#define GL_FIRST_PARAM_NAME_EXT 0x38000     /* pfglGetParamNameEXT's ids start here */
 
 /* Compiles primitive-language source (docs/language.md) and registers its primitives, as the
  * built-in ones are registered. Returns a module id, or 0 if it does not compile (then
@@ -156,6 +159,13 @@ GLenum pfglGetPrimitiveEXT(const GLchar *name);
  * points that do not make whole instances) draws nothing, sets GL_INVALID_OPERATION at
  * glEnd and says why on stderr. */
 GLuint pfglGetParamNameEXT(const GLchar *name);
+/* How instances of glBegin mode `primitive` interpolate the per-vertex shading parameter
+ * `param` (a name id; "color" is GL's colour): GL_PERSPECTIVE_LINEAR_INTERPOLATOR_EXT (the
+ * default of "color") or GL_LINEAR_INTERPOLATOR_EXT (linear in window space). Each bound
+ * parameter takes 4 channels; its per-vertex value is its current value at each sequence point
+ * (missing components (0, 0, 0, 1)), set with pfglRastParam*EXT or glMaterial with the name id.
+ * Unknown ids or modes: GL_INVALID_VALUE; other interpolators: GL_INVALID_ENUM. */
+void pfglMaterialInterpEXT(GLuint param, GLenum primitive, GLenum interpolator);
 void pfglRastParamfEXT(GLuint name, GLfloat value);
 void pfglRastParamiEXT(GLuint name, GLint value);
 void pfglRastParam3fEXT(GLuint name, GLfloat x, GLfloat y, GLfloat z);

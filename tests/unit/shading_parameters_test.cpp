@@ -1,0 +1,139 @@
+// Shading parameters and their interpolators (paper sections 3.1 and 5.1): pfglMaterialInterpEXT
+// chooses how a glBegin mode's instances interpolate a per-vertex parameter. Checked on a
+// receding triangle against both interpolations computed here in double precision, and the
+// generalised glMaterial setting a named parameter's current value.
+#include <gtest/gtest.h>
+
+#include <primflow/gl.h>
+
+#include <cmath>
+#include <vector>
+
+namespace {
+
+constexpr int kN = 64;
+
+struct Ctx {
+  PFcontext ctx;
+  std::vector<unsigned char> px;
+  Ctx() : ctx(pfCreateContext(GL_RGBA, 24)), px(size_t(kN) * kN * 4) {
+    pfMakeCurrent(ctx, px.data(), GL_UNSIGNED_BYTE, kN, kN);
+    pfglMatrixMode(GL_PROJECTION);
+    pfglFrustum(-1, 1, -1, 1, 1, 10);
+    pfglMatrixMode(GL_MODELVIEW);
+  }
+  ~Ctx() {
+    pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
+    pfDestroyContext(ctx);
+  }
+};
+
+// The triangle: object = eye coordinates; red is 1 at the far vertex, 0 at the near ones.
+const double kTri[3][3] = {{-0.9, -0.9, -1.2}, {2.5, -2.0, -8.0}, {-0.5, 0.9, -1.5}};
+const double kRed[3] = {0.0, 1.0, 0.0};
+
+void draw() {
+  pfglClear(GL_COLOR_BUFFER_BIT);
+  pfglBegin(GL_TRIANGLES);
+  for (int i = 0; i < 3; ++i) {
+    pfglColor3f(static_cast<float>(kRed[i]), 0.0f, 1.0f);
+    pfglVertex3d(kTri[i][0], kTri[i][1], kTri[i][2]);
+  }
+  pfglEnd();
+  pfglFinish();
+}
+
+// Red at pixel (x, y) by GL's two interpolations, from window-space barycentrics.
+void expected(int x, int y, double& linear, double& perspective, bool& inside) {
+  double wx[3], wy[3], w[3];
+  for (int i = 0; i < 3; ++i) {
+    // glFrustum(-1, 1, -1, 1, 1, 10): x_clip = z_near * x / ... ; w_clip = -z.
+    w[i] = -kTri[i][2];
+    wx[i] = (kTri[i][0] / w[i] * 0.5 + 0.5) * kN;
+    wy[i] = (kTri[i][1] / w[i] * 0.5 + 0.5) * kN;
+  }
+  double px = x + 0.5, py = y + 0.5;
+  double area = (wx[1] - wx[0]) * (wy[2] - wy[0]) - (wx[2] - wx[0]) * (wy[1] - wy[0]);
+  double l[3];
+  l[0] = ((wx[1] - px) * (wy[2] - py) - (wx[2] - px) * (wy[1] - py)) / area;
+  l[1] = ((wx[2] - px) * (wy[0] - py) - (wx[0] - px) * (wy[2] - py)) / area;
+  l[2] = 1 - l[0] - l[1];
+  inside = l[0] > 0.02 && l[1] > 0.02 && l[2] > 0.02;
+  linear = l[0] * kRed[0] + l[1] * kRed[1] + l[2] * kRed[2];
+  double s = 0, num = 0;
+  for (int i = 0; i < 3; ++i) {
+    s += l[i] / w[i];
+    num += l[i] / w[i] * kRed[i];
+  }
+  perspective = num / s;
+}
+
+int red(const Ctx& c, int x, int y) { return c.px[(size_t(y) * kN + x) * 4]; }
+
+}  // namespace
+
+TEST(ShadingParameters, ColourIsPerspectiveLinearByDefaultAndLinearWhenBound) {
+  Ctx c;
+  GLuint color = pfglGetParamNameEXT("color");
+  draw();
+  int checked = 0, distinct = 0;
+  for (int y = 0; y < kN; ++y)
+    for (int x = 0; x < kN; ++x) {
+      double lin, persp;
+      bool inside;
+      expected(x, y, lin, persp, inside);
+      if (!inside) continue;
+      EXPECT_NEAR(red(c, x, y), persp * 255, 1.01) << "perspective-correct at (" << x << ", " << y << ")";
+      ++checked;
+      distinct += std::abs(lin - persp) * 255 > 10;
+    }
+  EXPECT_GT(checked, 200);
+  EXPECT_GT(distinct, 50) << "the two interpolations must differ here for the test to mean anything";
+  pfglMaterialInterpEXT(color, GL_TRIANGLES, GL_LINEAR_INTERPOLATOR_EXT);
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  draw();
+  for (int y = 0; y < kN; ++y)
+    for (int x = 0; x < kN; ++x) {
+      double lin, persp;
+      bool inside;
+      expected(x, y, lin, persp, inside);
+      if (inside) EXPECT_NEAR(red(c, x, y), lin * 255, 1.01) << "screen-linear at (" << x << ", " << y << ")";
+    }
+  // Binding the colour of another mode leaves GL_TRIANGLES as it is.
+  pfglMaterialInterpEXT(color, GL_TRIANGLES, GL_PERSPECTIVE_LINEAR_INTERPOLATOR_EXT);
+  pfglMaterialInterpEXT(color, GL_QUADS, GL_LINEAR_INTERPOLATOR_EXT);
+  draw();
+  double lin, persp;
+  bool inside;
+  expected(20, 20, lin, persp, inside);
+  ASSERT_TRUE(inside);
+  EXPECT_NEAR(red(c, 20, 20), persp * 255, 1.01);
+}
+
+TEST(ShadingParameters, ExtraParametersTakeChannelsWithoutChangingTheColour) {
+  Ctx c;
+  draw();
+  std::vector<unsigned char> plain = c.px;
+  GLuint gloss = pfglGetParamNameEXT("gloss");
+  const GLfloat g[4] = {0.5f, 0.25f, 0.0f, 1.0f};
+  pfglMaterialfv(GL_FRONT_AND_BACK, gloss, g);  // glMaterial with a name: its current value
+  pfglMaterialInterpEXT(gloss, GL_TRIANGLES, GL_LINEAR_INTERPOLATOR_EXT);
+  draw();
+  EXPECT_EQ(c.px, plain);
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
+TEST(ShadingParameters, Errors) {
+  Ctx c;
+  GLuint color = pfglGetParamNameEXT("color");
+  pfglMaterialInterpEXT(12345, GL_TRIANGLES, GL_LINEAR_INTERPOLATOR_EXT);
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_INVALID_VALUE));
+  pfglMaterialInterpEXT(color, 0x31FFF, GL_LINEAR_INTERPOLATOR_EXT);
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_INVALID_VALUE));
+  pfglMaterialInterpEXT(color, GL_TRIANGLES, GL_LINEAR);
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_INVALID_ENUM));
+  pfglBegin(GL_TRIANGLES);
+  pfglMaterialInterpEXT(color, GL_TRIANGLES, GL_LINEAR_INTERPOLATOR_EXT);
+  pfglEnd();
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_INVALID_OPERATION));
+}
