@@ -13,6 +13,10 @@
 
 namespace pf {
 
+namespace {
+const char* unitWord(const Unit& u) { return u.kind == UnitKind::Interpolator ? "interpolator" : "primitive"; }
+}  // namespace
+
 bool compileSource(const std::string& filename, const std::string& text, CompiledModule& out,
                    DiagnosticLog& log, EmitStage emit, std::string* listing, bool optimize_ir,
                    const PrimitiveTable* callable) {
@@ -56,10 +60,6 @@ bool compileSource(const std::string& filename, const std::string& text, Compile
     if (u.kind == UnitKind::Function) functions[u.name] = &u;
   for (const Unit& u : program.units) {
     if (u.kind == UnitKind::Function) continue;  // inlined where called
-    if (u.kind == UnitKind::Interpolator) {
-      out.interpolators.push_back(u.name);
-      continue;
-    }
     IrFunction ir;
     if (!lowerPrimitive(u, functions, primitives, ir, log)) return false;
     std::vector<std::string> reasons;
@@ -94,11 +94,16 @@ bool compileSource(const std::string& filename, const std::string& text, Compile
     if (listing) {
       if (emit == EmitStage::Ir) *listing += "primitive " + u.name + ":\n" + dumpIr(*kept);
       if (emit == EmitStage::Setup)
-        *listing += "primitive " + u.name + ": setup program (once per instance)\n" + disassemble(prim->setup, false);
+        *listing += std::string(unitWord(u)) + " " + u.name + ": setup program (once per instance)\n" + disassemble(prim->setup, false);
       if (emit == EmitStage::Pixel)
-        *listing += "primitive " + u.name + ": pixel program (per 8x8 block, masked)\n" + disassemble(prim->pixel, true);
+        *listing += std::string(unitWord(u)) + " " + u.name + ": pixel program (per 8x8 block, masked)\n" + disassemble(prim->pixel, true);
     }
     prim->ir = std::move(kept);
+    prim->is_interpolator = u.kind == UnitKind::Interpolator;
+    if (prim->is_interpolator) {
+      out.interpolators.push_back(std::move(prim));
+      continue;
+    }
     primitives[prim->name] = prim;
     out.primitives.push_back(std::move(prim));
   }

@@ -23,6 +23,7 @@ struct CompiledPrimitive {
   int count_slot = -1;      // sequence_points == 0: the slot that receives the count
   int sized_floats = 0;     // sequence_points == 0: floats per sequence point after the fixed part
   bool has_interp_data = false;
+  bool is_interpolator = false;  // a shared interpolator, not a primitive
   // The primitives it calls (Op::Emit's imm), kept alive with it; how deep its calls nest.
   std::vector<std::shared_ptr<const CompiledPrimitive>> callees;
   int call_depth = 0;
@@ -51,7 +52,9 @@ using PrimitiveTable = std::map<std::string, std::shared_ptr<const CompiledPrimi
 
 struct CompiledModule {
   std::vector<std::shared_ptr<const CompiledPrimitive>> primitives;
-  std::vector<std::string> interpolators;  // checked; bound to parameters by a later version
+  // Shared interpolators (paper section 3.4): programs like a primitive's, whose pixel program
+  // reads P and ends in Op::ShadeOut; bound to shading parameters with pfglMaterialInterpEXT.
+  std::vector<std::shared_ptr<const CompiledPrimitive>> interpolators;
 };
 
 // What pfc --emit can print.

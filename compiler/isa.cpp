@@ -11,8 +11,8 @@ const char* opName(Op op) {
       "fsign", "fsin", "fcos", "ftan", "fasin", "facos", "fatan", "fatan2", "fpow", "fexp", "flog",
       "fnoise", "iadd", "isub", "imul", "idiv", "imod", "ineg", "imin", "imax", "iabs", "i2f",
       "f2i", "flt", "fle", "feq", "fne", "ilt", "ile", "ieq", "ine", "band", "bor", "bnot", "sel", "cross_sign",
-      "mov", "xadd", "xsub", "xneg", "xmulf", "xdivf", "xmov", "xloadvertex", "xsel", "loadparamat", "xloadvertexat", "loadstate",
-      "bound", "kill", "retire", "ztest", "interp_return", "interp_shared", "zcommit", "outparam", "outvertex", "emit", "backfacing",
+      "mov", "xadd", "xsub", "xneg", "xmulf", "xdivf", "xmov", "xloadvertex", "xsel", "loadparamat", "xloadvertexat", "loadstate", "haskinds",
+      "bound", "kill", "retire", "ztest", "interp_return", "interp_shared", "shadeout", "zcommit", "outparam", "outvertex", "emit", "backfacing",
       "loopbegin", "looptest", "break", "continue", "loopcontinue", "loopback", "loopend", "jmp",
       "jmpifnot", "maskif", "maskelse", "maskend", "jmpifnone"};
   static_assert(sizeof(names) / sizeof(names[0]) == static_cast<size_t>(Op::OpCount));
@@ -35,6 +35,7 @@ std::string operandText(uint32_t o, const Bytecode& b, bool pixel, bool interp) 
       if (pixel && !interp && i == kRegX) return "X";
       if (pixel && !interp && i == kRegY) return "Y";
       if (pixel && !interp && i == kRegZ) return "Z";
+      if (pixel && !interp && i >= kRegP && i < kRegP + 4) return std::string("P.") + "xyzw"[i - kRegP];
       return std::string(interp ? "x" : (pixel ? "v" : "r")) + std::to_string(i);
     case OperandKind::Uniform: return std::string(interp ? "ux" : "u") + std::to_string(i);
     case OperandKind::Param: return "p" + std::to_string(i);
@@ -81,7 +82,7 @@ std::string disassemble(const Bytecode& b, bool pixel) {
     if (in.c != kNoOperand) parts.push_back(operandText(in.c, b, pixel, in.op == Op::XSel));
     if (in.d != kNoOperand) parts.push_back(operandText(in.d, b, pixel, false));
     if (in.op == Op::Bound) parts.push_back(operandText(in.dst, b, pixel, false));
-    if (in.op == Op::XLoadVertex || in.op == Op::LoadState || in.op == Op::InterpReturn ||
+    if (in.op == Op::XLoadVertex || in.op == Op::LoadState || in.op == Op::InterpReturn || in.op == Op::HasKinds ||
         in.op == Op::InterpShared || in.op == Op::OutParam || in.op == Op::OutVertex || in.op == Op::Emit ||
         in.op == Op::LoadParamAt)
       parts.push_back("imm=" + std::to_string(in.imm));

@@ -36,13 +36,16 @@ enum class Op : uint8_t {
   XLoadVertexAt,  // dst = the channels of sequence point a (an int)
   // state of the instance's GL context: imm = StateValue
   LoadState,
+  HasKinds,  // dst = the instance has shading channels of a kind in set imm (bool)
   // effects
   Bound,         // setup: screen bound (a, b, c, dst) = (xmin, ymin, xmax, ymax)
   Kill,          // setup: the instance draws nothing
   Retire,        // pixel: the active lanes leave the program without writing anything
   ZTest,         // pixel: dst = the context's depth test of a against the depth buffer
   InterpReturn,  // pixel: write channels of kinds `imm` (bit set) from interp operand a
-  InterpShared,  // pixel: run the shared interpolators bound to channels of kinds `imm`
+  InterpShared,  // pixel: run the shared interpolators bound to channels of kinds `imm`, with
+                 // the surface point P = (a, b, c, d)
+  ShadeOut,      // pixel, in a shared interpolator: its value (a, b, c, d)
   ZCommit,       // pixel: a is the Z to write for lanes alive at the end
   // calls of one primitive from another (setup; paper section 5: polygon -> screen_triangle):
   // the arguments fill an outgoing parameter block, then Emit submits the callee's instance
@@ -73,7 +76,9 @@ enum class StateValue : uint16_t {
   ViewportScaleX, ViewportOffsetX, ViewportScaleY, ViewportOffsetY, DepthScale, DepthOffset,
   DepthNear, DepthFar,
   // 1 or 0: culled() and flat_shading() read these
-  CullFront, CullBack, FrontFaceCCW, FlatShading
+  CullFront, CullBack, FrontFaceCCW, FlatShading,
+  // the inverse projection's 16 elements (column-major), for eye(): InvProjection + k
+  InvProjection
 };
 
 // An operand: a kind in the top 2 bits, an index below.
@@ -95,8 +100,9 @@ struct Instr {
 // How deep calls of primitives from primitives may nest (each level is an executor in setup).
 constexpr int kMaxPrimitiveCallDepth = 8;
 
-// The registers of the pixel program that hold the built-ins before the first instruction.
-constexpr uint32_t kRegX = 0, kRegY = 1, kRegZ = 2, kFirstFreePixelReg = 3;
+// The registers of the pixel program that hold the built-ins before the first instruction:
+// X, Y, Z, and P's 4 components (in a shared interpolator, the point its primitive set).
+constexpr uint32_t kRegX = 0, kRegY = 1, kRegZ = 2, kRegP = 3, kFirstFreePixelReg = 7;
 
 struct Bytecode {
   std::vector<Instr> code;

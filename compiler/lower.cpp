@@ -68,11 +68,13 @@ class Lowerer {
 
   bool run(const Unit& u) {
     f_.name = u.name;
+    interpolator_ = u.kind == UnitKind::Interpolator;
     scopes_.emplace_back();
     // Built-ins.
     bindBuiltin("X", kRegX, false);
     bindBuiltin("Y", kRegY, false);
     bindBuiltin("Z", kRegZ, true);
+    bindBuiltin("P", kRegP, u.kind == UnitKind::Primitive, Type::of(BaseType::Point));
     z_initial_ = bindings_[lookup("Z")].comps[0];
     scopes_.emplace_back();  // the parameters' scope: functions see scope 0 (built-ins) only
     // Parameters: array parameters are per sequence point (outermost index), the rest per
@@ -169,21 +171,24 @@ class Lowerer {
   SourceLoc cur_loc_;
   std::map<std::pair<int, uint32_t>, int> constants_;
   int zero_interp_ = -1;
+  bool interpolator_ = false;  // lowering a shared interpolator: interpolator_return is its value
 
   int newValue(const Value& v) {
     f_.values.push_back(v);
     return static_cast<int>(f_.values.size()) - 1;
   }
 
-  void bindBuiltin(const std::string& name, uint32_t reg, bool writable) {
-    Value v;
-    v.cls = ValueClass::F32;
-    v.varying = true;
-    v.origin = Value::Origin::Builtin;
-    v.index = static_cast<int>(reg);
+  void bindBuiltin(const std::string& name, uint32_t reg, bool writable, Type type = Type::of(BaseType::Float)) {
     Binding b;
-    b.type = Type::of(BaseType::Float);
-    b.comps.push_back(newValue(v));
+    b.type = type;
+    for (int k = 0; k < type.slotCount(); ++k) {
+      Value v;
+      v.cls = ValueClass::F32;
+      v.varying = true;
+      v.origin = Value::Origin::Builtin;
+      v.index = static_cast<int>(reg) + k;
+      b.comps.push_back(newValue(v));
+    }
     b.writable = writable;
     b.may_vary = true;
     scopes_.back()[name] = static_cast<int>(bindings_.size());
@@ -361,7 +366,11 @@ class Lowerer {
           f_.kinds_handled |= set;
           InterpKindSet save = interp_kinds_;
           interp_kinds_ = set;
-          bool t = scoped(c.body);
+          // The branch runs only for instances with channels of its kinds: a uniform if, so
+          // neither setup nor the pixel program pays for interpolations nobody asked for.
+          int has = emit(Op::HasKinds, ValueClass::Bool, false, -1, -1, -1, static_cast<int>(set), c.label_locs.front());
+          bool t = false;
+          branch(has, c.label_locs.front(), [&] { return t = scoped(c.body); }, [] { return false; });
           interp_kinds_ = save;
           if (t) {
             log_.error(c.label_locs.front(), "an interpolation branch cannot end in 'return': the other branches must still run");
@@ -371,11 +380,21 @@ class Lowerer {
         return false;
       }
       case StmtKind::InterpReturn:
+        if (interpolator_) {
+          // A shared interpolator's value: 4 floats, missing components (0, 0, 0, 1).
+          Binding b = expr(*s.value);
+          int c[4] = {constF(0.0f), constF(0.0f), constF(0.0f), constF(1.0f)};
+          for (size_t k = 0; k < b.comps.size() && k < 4; ++k) c[k] = toFloat(b.comps[k]);
+          emitEffect(Op::ShadeOut, c[0], c[1], c[2], c[3], 0, s.loc);
+          return false;
+        }
         if (s.value) {
           int v = expr(*s.value).comps[0];
           emitEffect(Op::InterpReturn, v, -1, -1, -1, static_cast<int>(interp_kinds_), s.loc);
         } else {
-          emitEffect(Op::InterpShared, -1, -1, -1, -1, static_cast<int>(interp_kinds_), s.loc);
+          // The shared interpolators read the surface point P as it is here.
+          const std::vector<int>& p = bindings_[lookup("P")].comps;
+          emitEffect(Op::InterpShared, p[0], p[1], p[2], p[3], static_cast<int>(interp_kinds_), s.loc);
         }
         return false;
     }
@@ -584,22 +603,28 @@ class Lowerer {
 
   bool ifStatement(const Stmt& s) {
     int cond = expr(*s.value).comps[0];
+    return branch(cond, s.loc, [&] { return scoped(s.body); }, [&] { return scoped(s.else_body); });
+  }
+
+  // An if node on `cond`: each part lowers its branch and says whether it always returns;
+  // variables the branches leave different get merge copies.
+  bool branch(int cond, SourceLoc loc, const std::function<bool()>& then_part, const std::function<bool()>& else_part) {
     bool vary = isVarying(cond);
     IrNode node;
     node.kind = IrNode::Kind::If;
     node.cond = cond;
-    node.inst.loc = s.loc;
+    node.inst.loc = loc;
     node.then_block = std::make_unique<IrBlock>();
     node.else_block = std::make_unique<IrBlock>();
     std::vector<Binding> before = bindings_;
     if (vary) ++varying_depth_;
     blocks_.push_back(node.then_block.get());
-    bool then_done = scoped(s.body);
+    bool then_done = then_part();
     blocks_.pop_back();
     std::vector<Binding> after_then = bindings_;
     bindings_ = before;
     blocks_.push_back(node.else_block.get());
-    bool else_done = scoped(s.else_body);
+    bool else_done = else_part();
     blocks_.pop_back();
     std::vector<Binding> after_else = std::move(bindings_);
     if (vary) --varying_depth_;
@@ -619,8 +644,8 @@ class Lowerer {
         int mid = newValue(m);
         Op mov = m.cls == ValueClass::Interp ? Op::XMov : Op::Mov;
         IrNode ct, ce;
-        ct.inst = IrInst{mov, mid, t, -1, -1, -1, static_cast<int>(kAllInterpKinds), s.loc};
-        ce.inst = IrInst{mov, mid, e, -1, -1, -1, static_cast<int>(kAllInterpKinds), s.loc};
+        ct.inst = IrInst{mov, mid, t, -1, -1, -1, static_cast<int>(kAllInterpKinds), loc};
+        ce.inst = IrInst{mov, mid, e, -1, -1, -1, static_cast<int>(kAllInterpKinds), loc};
         node.then_block->push_back(std::move(ct));
         node.else_block->push_back(std::move(ce));
         bindings_[i].comps[k] = mid;
@@ -1048,6 +1073,21 @@ class Lowerer {
       return none;
     }
     if (f == "flat_shading") return scalar(e.type, stateOn(StateValue::FlatShading));
+    if (f == "eye") {
+      const std::vector<int>& p = args[0].comps;
+      Binding out;
+      out.type = e.type;
+      for (int row = 0; row < 4; ++row) {
+        int sum = -1;
+        for (int col = 0; col < 4; ++col) {
+          int m = state(static_cast<StateValue>(static_cast<int>(StateValue::InvProjection) + col * 4 + row));
+          int t = emit(Op::FMul, ValueClass::F32, false, m, p[col]);
+          sum = sum < 0 ? t : emit(Op::FAdd, ValueClass::F32, false, sum, t);
+        }
+        out.comps.push_back(sum);
+      }
+      return out;
+    }
     if (f == "depth_range") {
       Binding out;
       out.type = e.type;

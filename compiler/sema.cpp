@@ -80,6 +80,8 @@ class Analyzer {
     declareBuiltin("X", false);
     declareBuiltin("Y", false);
     declareBuiltin("Z", u.kind == UnitKind::Primitive);
+    // P: the surface point (eye space) a primitive sets for its shared interpolators, which read it.
+    declareBuiltin("P", u.kind == UnitKind::Primitive, Type::of(BaseType::Point));
     if (u.kind == UnitKind::Function) {
       functionParams(u);
     } else {
@@ -144,6 +146,10 @@ class Analyzer {
         log_.error(p.loc, "parameter '" + p.name + "' is declared twice");
         continue;
       }
+      if (p.name == "P") {
+        log_.error(p.loc, "'P' is the built-in surface point: it is not declared as a parameter");
+        continue;
+      }
       if (p.name == "X" || p.name == "Y" || p.name == "Z") {
         if (p.type != Type::of(BaseType::Float))
           log_.error(p.loc, "the built-in '" + p.name + "' has type float (declare it as 'varying float " + p.name + "')");
@@ -155,6 +161,8 @@ class Analyzer {
       }
       if (p.qualifier == Qualifier::Varying || p.qualifier == Qualifier::InoutVarying)
         log_.error(p.loc, "parameter '" + p.name + "' cannot be varying: parameters are bound per primitive or per sequence point, so they are uniform");
+      if (u.kind == UnitKind::Interpolator && (p.type.isArray() || p.type.base == BaseType::InterpData))
+        log_.error(p.loc, "a shared interpolator depends only on per-primitive parameters and P (paper section 3.4): '" + p.name + "' cannot be an array or interpolator_data");
       if (u.kind == UnitKind::Primitive && p.type.base == BaseType::InterpData &&
           p.type.dims.size() != 1)
         log_.error(p.loc, "an interpolator_data parameter is indexed by sequence point: declare it with one dimension, e.g. 'interpolator_data " + p.name + "[3]'");
@@ -190,15 +198,16 @@ class Analyzer {
     if (reporting_) log_.error(loc, msg);
   }
 
-  void declareBuiltin(const std::string& name, bool writable) {
+  void declareBuiltin(const std::string& name, bool writable, Type type = Type::of(BaseType::Float)) {
     Var v;
     v.name = name;
-    v.type = Type::of(BaseType::Float);
+    v.type = type;
     v.qualifier = writable ? Qualifier::InoutVarying : Qualifier::Varying;
     v.writable = writable;
     v.varying = true;
-    v.why = name == "Z" ? "it depends on the built-in Z (the depth buffer)"
-                        : "it depends on the built-in " + name + " (the pixel position)";
+    v.why = name == "Z"   ? "it depends on the built-in Z (the depth buffer)"
+            : name == "P" ? "it depends on the built-in P (the surface point)"
+                          : "it depends on the built-in " + name + " (the pixel position)";
     declare(v);
     builtin_count_ = vars_.size();
   }
@@ -347,6 +356,9 @@ class Analyzer {
             err(s.loc, "an interpolator must return a value: interpolator_return(value)");
           } else {
             expr(*s.value);
+            const Type& t = s.value->type;
+            if (t.base != BaseType::Void && (t.isArray() || !(isNumericScalar(t) || isAggregate(t))))
+              err(s.value->loc, "an interpolator returns a float, point, vector, normal or color (its shading parameter's value), not " + typeName(t));
           }
           return_seen_in_interp_ = true;
           break;

@@ -74,7 +74,52 @@ inline bool depthPasses(DepthFunc f, float z, float zbuf) {
 void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* record,
                              const ChannelLayout& layout, const RasterState& state,
                              uint32_t shade_id, int bx, int by, uint64_t mask,
-                             const BlockTarget& target) {
+                             const BlockTarget& target, const uint32_t* shared_records) {
+  const int nch = layout.count;
+  ++counters.blocks_run;
+  counters.lanes_started += static_cast<uint64_t>(__builtin_popcountll(mask));
+  const uint64_t alive = execute(prim, record, layout, state, bx, by, mask, target, shared_records, nullptr);
+
+  // Commit: the lanes still alive are this instance's pixels.
+  counters.lanes_committed += static_cast<uint64_t>(__builtin_popcountll(alive));
+  for (int i = 0; i < kLanes; ++i) {
+    if (!((alive >> i) & 1u)) continue;
+    int tx = bx + i % kBlockSize - target.tile_x0;
+    int ty = by + i / kBlockSize - target.tile_y0;
+    size_t t = static_cast<size_t>(ty) * kTileSize + tx;
+    target.shade_ids[t] = shade_id;
+    for (int ch = 0; ch < nch; ++ch) target.slots[layout.gbuffer_slot[ch]][t] = asF(staging_[static_cast<size_t>(ch) * kLanes + i]);
+  }
+}
+
+void PixelExecutor::runSharedInterpolators(const ChannelLayout& layout, const RasterState& state, int bx, int by,
+                                           uint64_t exec, const uint32_t* const p[4], const bool p_wide[4],
+                                           const uint32_t* shared_records) {
+  if (layout.shared.empty() || exec == 0 || !shared_records) return;
+  alignas(64) uint32_t p_lanes[4 * kLanes];
+  for (int k = 0; k < 4; ++k)
+    for (int i = 0; i < kLanes; ++i) p_lanes[k * kLanes + i] = p_wide[k] ? p[k][i] : p[k][0];
+  if (!shared_) shared_ = std::make_unique<PixelExecutor>();
+  static const ChannelLayout kNoChannels;
+  for (const ChannelLayout::SharedInterpolator& s : layout.shared) {
+    PixelExecutor& sub = *shared_;
+    sub.shade_out_.assign(4 * kLanes, 0u);
+    sub.execute(*s.program, shared_records + s.record_offset, kNoChannels, state, bx, by, exec, BlockTarget{},
+                nullptr, p_lanes);
+    for (int k = 0; k < 4; ++k) {
+      uint32_t* d = staging_.data() + static_cast<size_t>(s.first + k) * kLanes;
+      const uint32_t* v = sub.shade_out_.data() + static_cast<size_t>(k) * kLanes;
+      for (int i = 0; i < kLanes; ++i)
+        if ((exec >> i) & 1u) d[i] = v[i];
+    }
+    counters.instructions += sub.counters.instructions;
+    sub.counters.instructions = 0;
+  }
+}
+
+uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const uint32_t* record, const ChannelLayout& layout,
+                                const RasterState& state, int bx, int by, uint64_t mask, const BlockTarget& target,
+                                const uint32_t* shared_records, const uint32_t* p_in) {
   const PixelProgram& p = prim.pixel;
   const int nch = layout.count;
   const size_t reg_words = static_cast<size_t>(p.num_regs) * kLanes;
@@ -85,11 +130,11 @@ void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* reco
   if (staging_.size() < staging_words) staging_.resize(staging_words);
   std::fill(staging_.begin(), staging_.begin() + staging_words, 0u);
 
-  ++counters.blocks_run;
-  counters.lanes_started += static_cast<uint64_t>(__builtin_popcountll(mask));
-
   uint32_t* R = regs_.data();
-  // Built-ins: X, Y at pixel centres; Z from the depth buffer.
+  // Built-ins: X, Y at pixel centres; Z from the depth buffer; P given, or (0, 0, 0, 1).
+  for (int k = 0; k < 4; ++k)
+    for (int i = 0; i < kLanes; ++i)
+      R[(kRegP + k) * kLanes + i] = p_in ? p_in[k * kLanes + i] : (k == 3 ? fromF(1.0f) : 0u);
   for (int i = 0; i < kLanes; ++i) {
     R[kRegX * kLanes + i] = fromF(static_cast<float>(bx + (i % kBlockSize)) + 0.5f);
     R[kRegY * kLanes + i] = fromF(static_cast<float>(by + (i / kBlockSize)) + 0.5f);
@@ -193,13 +238,13 @@ void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* reco
       case Op::MaskIf: {
         bool w;
         const uint32_t* c = src(ins.b, w);
-        if (depth >= kMaxMaskDepth) return;  // the compiler bounds nesting; never reached
+        if (depth >= kMaxMaskDepth) return 0;  // the compiler bounds nesting; never reached
         stack[depth++] = {cur, laneMaskOf(c, w), false, 0};
         cur &= stack[depth - 1].cond;
         continue;
       }
       case Op::LoopBegin:
-        if (depth >= kMaxMaskDepth) return;  // the compiler bounds nesting; never reached
+        if (depth >= kMaxMaskDepth) return 0;  // the compiler bounds nesting; never reached
         stack[depth++] = {cur, 0, true, 0};
         continue;
       case Op::LoopTest: {
@@ -224,7 +269,7 @@ void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* reco
           counters.cap_primitive = &prim;
           alive &= ~stuck;
           cur = 0;
-          if (alive == 0) return;
+          if (alive == 0) return 0;
         }
         pc = ins.a;
         continue;
@@ -239,7 +284,7 @@ void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* reco
         continue;
       case Op::Retire:
         alive &= ~exec;
-        if (alive == 0) return;
+        if (alive == 0) return 0;
         continue;
       case Op::ZTest: {
         bool w;
@@ -271,11 +316,30 @@ void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* reco
               kZeroLanes, false, exec);
         });
         continue;
-      case Op::InterpShared:
-        // Channels of the shared-interpolator kind are filled by the interpolators bound to
-        // them; an instance whose layout has none (every instance the API builds today) has
-        // an empty range here.
+      case Op::InterpShared: {
+        // The shared interpolators bound to the Shared channels, at surface point P.
+        const uint32_t* pv[4];
+        bool pw[4];
+        const uint32_t ops[4] = {ins.a, ins.b, ins.c, ins.d};
+        for (int k = 0; k < 4; ++k) pv[k] = src(ops[k], pw[k]);
+        runSharedInterpolators(layout, state, bx, by, exec, pv, pw, shared_records);
         continue;
+      }
+      case Op::ShadeOut: {  // a shared interpolator's value
+        const uint32_t ops[4] = {ins.a, ins.b, ins.c, ins.d};
+        if (shade_out_.size() < 4 * kLanes) shade_out_.assign(4 * kLanes, 0u);
+        for (int k = 0; k < 4; ++k) {
+          bool w;
+          const uint32_t* v = src(ops[k], w);
+          run(Op::Mov, shade_out_.data() + static_cast<size_t>(k) * kLanes, v, w, kZeroLanes, false, kZeroLanes, false, exec);
+        }
+        continue;
+      }
+      case Op::HasKinds: {  // uniform; here only inside a loop that runs per pixel
+        uint32_t* d = regs_.data() + static_cast<size_t>(operandIndex(ins.dst)) * kLanes;
+        std::fill(d, d + kLanes, layout.hasKinds(ins.imm) ? 1u : 0u);
+        continue;
+      }
       case Op::LoadState: case Op::XLoadVertex: case Op::Bound: case Op::Kill: case Op::OpCount:
       case Op::LoadParamAt: case Op::XLoadVertexAt: case Op::OutParam: case Op::OutVertex: case Op::Emit:
       case Op::BackFacing:
@@ -317,16 +381,7 @@ void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* reco
     }
   }
 
-  // Commit: the lanes still alive are this instance's pixels.
-  counters.lanes_committed += static_cast<uint64_t>(__builtin_popcountll(alive));
-  for (int i = 0; i < kLanes; ++i) {
-    if (!((alive >> i) & 1u)) continue;
-    int tx = bx + i % kBlockSize - target.tile_x0;
-    int ty = by + i / kBlockSize - target.tile_y0;
-    size_t t = static_cast<size_t>(ty) * kTileSize + tx;
-    target.shade_ids[t] = shade_id;
-    for (int ch = 0; ch < nch; ++ch) target.slots[layout.gbuffer_slot[ch]][t] = asF(staging_[static_cast<size_t>(ch) * kLanes + i]);
-  }
+  return alive;
 }
 
 }  // namespace pf

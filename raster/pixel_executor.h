@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "compiler/compiler.h"
@@ -35,14 +36,28 @@ struct BlockCounters {
 class PixelExecutor {
  public:
   // Runs the block whose lower-left pixel is (bx, by) for the lanes set in `mask` (bit i is
-  // lane i = (bx + i % 8, by + i / 8)).
+  // lane i = (bx + i % 8, by + i / 8)). `shared_records`: the uniform records of the layout's
+  // shared interpolators (ChannelLayout::shared), if it has any.
   void runBlock(const CompiledPrimitive& prim, const uint32_t* record, const ChannelLayout& layout,
                 const RasterState& state, uint32_t shade_id, int bx, int by, uint64_t mask,
-                const BlockTarget& target);
+                const BlockTarget& target, const uint32_t* shared_records = nullptr);
 
   BlockCounters counters;
 
  private:
+  // Runs a program over the block; returns the lanes alive at its end. `p_in`: P's 4 components
+  // (kLanes each) for a shared interpolator, null for a primitive (P starts at (0, 0, 0, 1)).
+  uint64_t execute(const CompiledPrimitive& prim, const uint32_t* record, const ChannelLayout& layout,
+                   const RasterState& state, int bx, int by, uint64_t mask, const BlockTarget& target,
+                   const uint32_t* shared_records, const uint32_t* p_in);
+  // Runs the layout's shared interpolators for the `exec` lanes at surface point P (4 operands)
+  // into their staging channels.
+  void runSharedInterpolators(const ChannelLayout& layout, const RasterState& state, int bx, int by,
+                              uint64_t exec, const uint32_t* const p[4], const bool p_wide[4],
+                              const uint32_t* shared_records);
+
+  std::unique_ptr<PixelExecutor> shared_;  // runs shared interpolators (their own registers)
+  std::vector<uint32_t> shade_out_;        // 4 x kLanes: a shared interpolator's value
   std::vector<uint32_t> regs_;     // num_regs x kLanes
   std::vector<uint32_t> xregs_;    // num_interp_regs x channels x kLanes
   std::vector<uint32_t> staging_;  // channels x kLanes: interpolator_return results

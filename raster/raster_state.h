@@ -10,6 +10,8 @@
 
 namespace pf {
 
+struct CompiledPrimitive;
+
 enum class DepthFunc : uint8_t { Never, Less, Equal, LessEqual, Greater, NotEqual, GreaterEqual, Always };
 
 struct RasterState {
@@ -25,6 +27,8 @@ struct RasterState {
   // Colour channels written (bit k: channel k of RGBA). The renderer keeps one mask per flush,
   // so that the deferred shading pass writes every pixel with the mask its instance had.
   uint8_t color_mask = 0xf;
+  // Clip to eye coordinates (the inverse of the projection matrix, column-major), for eye().
+  float inv_projection[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
   // Iterations one loop may run per pixel (pixel program) or per instance (setup) before the
   // pixel, or the instance, is stopped and the hit reported.
   uint32_t iteration_cap = 65536;
@@ -39,6 +43,22 @@ struct ChannelLayout {
   int kind_begin[kInterpKindCount] = {0, 0, 0};
   int kind_end[kInterpKindCount] = {0, 0, 0};
   std::vector<int> gbuffer_slot;  // per channel
+  // The shared interpolators that fill channels of the Shared kind (4 each, from `first`),
+  // and where each one's uniform record sits among the instance's shared records.
+  struct SharedInterpolator {
+    const CompiledPrimitive* program;
+    int first;
+    uint32_t record_offset;
+    bool operator==(const SharedInterpolator&) const = default;
+  };
+  std::vector<SharedInterpolator> shared;
+
+  // Whether some channel is of a kind in `set` (bit 1 << kind).
+  bool hasKinds(unsigned set) const {
+    for (int k = 0; k < kInterpKindCount; ++k)
+      if ((set & (1u << k)) && kind_end[k] > kind_begin[k]) return true;
+    return false;
+  }
 
   // `count` channels, all of interpolation kind `kind`, in G-buffer slots 0 .. count - 1.
   static ChannelLayout ofKind(int count, InterpKind kind) {

@@ -52,7 +52,7 @@ void pixelRange(float lo, float hi, int clip_lo, int clip_hi, int& out_lo, int& 
 
 bool Renderer::submit(const CompiledPrimitive& prim, const uint32_t* params, const float* vertex_channels,
                       const ChannelLayout& layout, const RasterState& state, const ShadeState& shade,
-                      int sequence_points) {
+                      int sequence_points, const uint32_t* const* shared_params) {
   if (!color_) return false;
   // The shading pass writes with one colour mask: instances with another wait for a flush.
   if (!scene_.instances.empty() && scene_.color_mask != state.color_mask) flush();
@@ -72,7 +72,23 @@ bool Renderer::submit(const CompiledPrimitive& prim, const uint32_t* params, con
   }
   if (scene_.states.size() > 0xffff || scene_.layouts.size() > 0xffff) {
     flush();
-    return submit(prim, params, vertex_channels, layout, state, shade, sequence_points);
+    return submit(prim, params, vertex_channels, layout, state, shade, sequence_points, shared_params);
+  }
+  // The shared interpolators' uniforms: their setup programs, once for the whole submission.
+  shared_offset_ = kNoShared;
+  if (!layout.shared.empty() && shared_params) {
+    shared_offset_ = static_cast<uint32_t>(scene_.records.size());
+    size_t words = 0;
+    for (const ChannelLayout::SharedInterpolator& s : layout.shared)
+      words = std::max(words, s.record_offset + SetupExecutor::recordWords(*s.program, 0));
+    scene_.records.resize(shared_offset_ + words, 0u);
+    static const ChannelLayout kNoChannels;
+    for (size_t k = 0; k < layout.shared.size(); ++k) {
+      const ChannelLayout::SharedInterpolator& s = layout.shared[k];
+      SetupInput in{shared_params[k], nullptr, &kNoChannels, &scene_.states.back(), 1, nullptr, 0};
+      SetupOutput out = setups_[0].run(*s.program, in, scene_.records.data() + shared_offset_ + s.record_offset);
+      stats_.setup_instructions += out.instructions;
+    }
   }
   return submitAt(prim, params, vertex_channels, sequence_points < 0 ? prim.sequence_points : sequence_points, 0);
 }
@@ -123,6 +139,7 @@ bool Renderer::submitAt(const CompiledPrimitive& prim, const uint32_t* params, c
   inst.record_offset = static_cast<uint32_t>(offset);
   inst.state = static_cast<uint16_t>(scene_.states.size() - 1);
   inst.layout = static_cast<uint16_t>(scene_.layouts.size() - 1);
+  inst.shared_offset = shared_offset_;
   inst.shade_id = scene_.current_shade + 1 + (out.back_facing && shade.back_color_slot >= 0 ? 1u : 0u);
   // The pixels it may touch: its bound within the viewport and the framebuffer.
   int vx0 = std::max(state.vp_x0, 0), vy0 = std::max(state.vp_y0, 0);
@@ -208,6 +225,7 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
     const uint32_t* record = scene_.records.data() + inst.record_offset;
     const ChannelLayout& layout = scene_.layouts[inst.layout];
     const RasterState& state = scene_.states[inst.state];
+    const uint32_t* shared = inst.shared_offset == kNoShared ? nullptr : scene_.records.data() + inst.shared_offset;
     // Blocks are aligned to the tile; lanes outside the instance's pixels start retired.
     for (int by = y0 + (iy0 - y0) / kBlockSize * kBlockSize; by < iy1; by += kBlockSize) {
       for (int bx = x0 + (ix0 - x0) / kBlockSize * kBlockSize; bx < ix1; bx += kBlockSize) {
@@ -220,7 +238,7 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
             if (px >= ix0 && px < ix1) mask |= 1ull << (ly * kBlockSize + lx);
           }
         }
-        if (mask) s.executor.runBlock(*inst.prim, record, layout, state, inst.shade_id, bx, by, mask, target);
+        if (mask) s.executor.runBlock(*inst.prim, record, layout, state, inst.shade_id, bx, by, mask, target, shared);
       }
     }
   }

@@ -58,9 +58,11 @@ class Renderer : private SubInstanceSink {
   // with parameter-sized arrays; otherwise the primitive's own count). Instances of other
   // primitives its setup calls are submitted as it runs, each binned on its own, in order.
   // Returns false if setup killed it.
+  // `shared_params`: the parameter block of each of the layout's shared interpolators (their
+  // setup runs once here, for this instance and every instance it calls).
   bool submit(const CompiledPrimitive& prim, const uint32_t* params, const float* vertex_channels,
               const ChannelLayout& layout, const RasterState& state, const ShadeState& shade,
-              int sequence_points = -1);
+              int sequence_points = -1, const uint32_t* const* shared_params = nullptr);
 
   // Executes everything recorded: afterwards the colour and depth buffers hold the image.
   void flush();
@@ -97,6 +99,7 @@ class Renderer : private SubInstanceSink {
   // One executor per depth of primitive calls: a caller's registers stay put while its callee runs.
   SetupExecutor setups_[kMaxPrimitiveCallDepth + 1];
   std::vector<uint32_t> record_scratch_[kMaxPrimitiveCallDepth + 1];
+  uint32_t shared_offset_ = kNoShared;  // the shared records of the submission in progress
   std::vector<std::unique_ptr<WorkerScratch>> scratch_;
   uint8_t* color_ = nullptr;
   float* depth_ = nullptr;

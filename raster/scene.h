@@ -19,8 +19,11 @@ struct Instance {
   uint16_t state;          // into Scene::states
   uint16_t layout;         // into Scene::layouts
   uint32_t shade_id;       // 1 + index into Scene::shades
+  uint32_t shared_offset;  // into Scene::records: its shared interpolators' records (kNoShared: none)
   int x0, y0, x1, y1;      // pixels [x0, x1) x [y0, y1) that the instance may cover
 };
+
+constexpr uint32_t kNoShared = 0xffffffffu;
 
 struct TileBin {
   std::vector<uint32_t> instances;

@@ -32,6 +32,8 @@ SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& 
   auto xreg = [&](uint32_t o) { return interp_.data() + static_cast<size_t>(operandIndex(o)) * nch; };
   auto state = [&](uint16_t which) -> float {
     const RasterState& s = *in.state;
+    const int first = static_cast<int>(StateValue::InvProjection);
+    if (which >= first && which < first + 16) return s.inv_projection[which - first];
     switch (static_cast<StateValue>(which)) {
       case StateValue::ViewportScaleX: return s.vp_scale_x;
       case StateValue::ViewportOffsetX: return s.vp_offset_x;
@@ -45,6 +47,7 @@ SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& 
       case StateValue::CullBack: return s.cull_back ? 1.0f : 0.0f;
       case StateValue::FrontFaceCCW: return s.front_ccw ? 1.0f : 0.0f;
       case StateValue::FlatShading: return s.flat_shading ? 1.0f : 0.0f;
+      case StateValue::InvProjection: break;
     }
     return 0.0f;
   };
@@ -95,6 +98,7 @@ SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& 
         out.bound[3] = rf(ins.dst);
         continue;
       case Op::LoadState: regs_[operandIndex(ins.dst)] = std::bit_cast<uint32_t>(state(ins.imm)); continue;
+      case Op::HasKinds: regs_[operandIndex(ins.dst)] = in.layout->hasKinds(ins.imm) ? 1u : 0u; continue;
       case Op::XLoadVertex: {
         float* d = xreg(ins.dst);
         const float* s = in.vertex_channels + static_cast<size_t>(ins.imm) * nch;

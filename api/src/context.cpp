@@ -53,6 +53,18 @@ PFcontextRec* contextOutsideBegin() {
   return ctx;
 }
 
+void PrimitiveRegistry::addInterpolator(std::shared_ptr<const CompiledPrimitive> p) {
+  auto known = interpolator_ids.find(p->name);
+  if (known == interpolator_ids.end()) {
+    interpolator_ids[p->name] = GL_FIRST_INTERPOLATOR_EXT + static_cast<GLuint>(interpolators.size());
+    interpolators.push_back(std::move(p));
+    return;
+  }
+  auto& slot = interpolators[known->second - GL_FIRST_INTERPOLATOR_EXT];
+  replaced.push_back(slot);
+  slot = std::move(p);
+}
+
 void PrimitiveRegistry::add(std::shared_ptr<const CompiledPrimitive> p, GLenum mode) {
   auto known = mode_of.find(p->name);
   if (mode == kAnyMode) mode = known != mode_of.end() ? known->second : next_mode++;

@@ -29,8 +29,10 @@ struct ParamValue {
 // where the value goes in the snapshot each sequence point takes (its row).
 struct FeedEntry {
   const ParamInfo* info;
-  GLuint name;     // parameter name id (index + 1 into the context's names)
-  int row_offset;  // floats from the start of a row
+  GLuint name;      // parameter name id
+  int row_offset;   // floats from the start of a row
+  int shared = -1;  // a parameter of shared interpolator `shared` (ChannelLayout::shared), or
+                    // -1: of the primitive
 };
 
 // A GL matrix stack (GL 1.5 section 2.11.2): the top is the current matrix; its depth limit
@@ -49,6 +51,7 @@ struct ShadingChannel {
   bool back = false;
   InterpKind kind;
   int first;
+  const CompiledPrimitive* shared = nullptr;  // the shared interpolator computing it, if any
 };
 
 // One client-side vertex array (glVertexPointer and its siblings).
@@ -71,6 +74,16 @@ struct PrimitiveRegistry {
   std::string failed_log;
   // Replaced programs stay alive: instances already recorded point at them.
   std::vector<std::shared_ptr<const CompiledPrimitive>> replaced;
+
+  // Shared interpolators: by id (GL_FIRST_INTERPOLATOR_EXT + index); a recompiled name keeps
+  // its id and gets the new program (the old one stays alive in `replaced`).
+  std::map<std::string, GLuint> interpolator_ids;
+  std::vector<std::shared_ptr<const CompiledPrimitive>> interpolators;
+  void addInterpolator(std::shared_ptr<const CompiledPrimitive> p);
+  const CompiledPrimitive* interpolator(GLenum id) const {
+    return id >= GL_FIRST_INTERPOLATOR_EXT && id - GL_FIRST_INTERPOLATOR_EXT < interpolators.size()
+               ? interpolators[id - GL_FIRST_INTERPOLATOR_EXT].get() : nullptr;
+  }
 
   // Registers a compiled primitive under its name: a new name gets the next mode, a known
   // name keeps its mode (a built-in GL mode, or an earlier one) and gets the new program.
@@ -161,6 +174,8 @@ struct PFcontextRec {
   // Scratch for building instances (kept to avoid allocation per instance).
   std::vector<uint32_t> param_block;
   std::vector<float> vertex_channels;
+  std::vector<std::vector<uint32_t>> shared_blocks;  // the shared interpolators' parameters
+  std::vector<const uint32_t*> shared_block_ptrs;
 
   void setError(GLenum e) {
     if (error == GL_NO_ERROR) error = e;

@@ -71,6 +71,8 @@ pf::RasterState PFcontextRec::rasterState() const {
   s.front_ccw = front_face == GL_CCW;
   s.flat_shading = shade_model == GL_FLAT;
   s.color_mask = color_mask;
+  const glm::mat4 inv = glm::inverse(projection.top);
+  for (int k = 0; k < 16; ++k) s.inv_projection[k] = inv[k / 4][k % 4];
   return s;
 }
 

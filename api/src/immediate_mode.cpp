@@ -66,7 +66,7 @@ bool convertValue(const pf::ParamInfo& p, const pf::ParamValue& v, const glm::ma
 }
 
 // The parameters glBegin's primitive wants, except the count of a parameter-sized one (the
-// API supplies it).
+// API supplies it), then those of the shared interpolators its shading channels use.
 void planFeed(PFcontextRec& ctx, const pf::CompiledPrimitive& prim) {
   ctx.feed.clear();
   ctx.row_floats = 0;
@@ -75,6 +75,12 @@ void planFeed(PFcontextRec& ctx, const pf::CompiledPrimitive& prim) {
     ctx.feed.push_back({&p, ctx.paramId(p.name), ctx.row_floats});
     ctx.row_floats += p.components;
   }
+  const auto& shared = ctx.begin_layout.shared;
+  for (size_t k = 0; k < shared.size(); ++k)
+    for (const pf::ParamInfo& p : shared[k].program->params) {
+      ctx.feed.push_back({&p, ctx.paramId(p.name), ctx.row_floats, static_cast<int>(k)});
+      ctx.row_floats += p.components;
+    }
 }
 
 void rowChannels(PFcontextRec& ctx);
@@ -118,9 +124,21 @@ void submitInstances(PFcontextRec& ctx) {
   if (sized) ctx.param_block[static_cast<size_t>(prim.count_slot)] = static_cast<uint32_t>(count);
   ctx.vertex_channels.assign(per * static_cast<size_t>(layout.count), 0.0f);
   const size_t stride = static_cast<size_t>(ctx.row_floats);
+  const size_t nshared = layout.shared.size();
+  ctx.shared_blocks.resize(nshared);
+  ctx.shared_block_ptrs.resize(nshared);
+  for (size_t k = 0; k < nshared; ++k) {
+    ctx.shared_blocks[k].assign(static_cast<size_t>(layout.shared[k].program->param_floats), 0u);
+    ctx.shared_block_ptrs[k] = ctx.shared_blocks[k].data();
+  }
   for (size_t first = 0; first + per <= total; first += per) {
     for (const pf::FeedEntry& f : ctx.feed) {
       const pf::ParamInfo& p = *f.info;
+      if (f.shared >= 0) {  // a shared interpolator's: per primitive
+        const uint32_t* v = ctx.rows.data() + first * stride + f.row_offset;
+        std::copy(v, v + p.components, ctx.shared_blocks[static_cast<size_t>(f.shared)].begin() + p.offset);
+        continue;
+      }
       if (!p.per_sequence_point) {
         const uint32_t* v = ctx.rows.data() + first * stride + f.row_offset;
         std::copy(v, v + p.components, ctx.param_block.begin() + p.offset);
@@ -134,7 +152,8 @@ void submitInstances(PFcontextRec& ctx) {
     for (size_t i = 0; i < per; ++i)
       for (int c = 0; c < layout.count; ++c)
         ctx.vertex_channels[i * layout.count + c] = ctx.row_shading[(first + i) * nch + c];
-    ctx.renderer.submit(prim, ctx.param_block.data(), ctx.vertex_channels.data(), layout, state, shade, count);
+    ctx.renderer.submit(prim, ctx.param_block.data(), ctx.vertex_channels.data(), layout, state, shade, count,
+                        nshared ? ctx.shared_block_ptrs.data() : nullptr);
   }
 }
 
@@ -221,13 +240,24 @@ void planShading(PFcontextRec& ctx, GLenum mode, const pf::CompiledPrimitive& pr
   for (int kind = 0; kind < pf::kInterpKindCount; ++kind) {
     ctx.begin_layout.kind_begin[kind] = 4 * static_cast<int>(ctx.shading.size());
     for (const auto& [param, interpolator] : bound) {
-      pf::InterpKind k = interpolator == GL_LINEAR_INTERPOLATOR_EXT ? pf::InterpKind::Linear : pf::InterpKind::PerspectiveLinear;
+      const pf::CompiledPrimitive* shared = ctx.primitives.interpolator(interpolator);
+      pf::InterpKind k = shared                                         ? pf::InterpKind::Shared
+                         : interpolator == GL_LINEAR_INTERPOLATOR_EXT ? pf::InterpKind::Linear
+                                                                      : pf::InterpKind::PerspectiveLinear;
       if (static_cast<int>(k) != kind) continue;
       const bool color = param == ctx.color_param;
-      for (int face = 0; face < (color && ctx.begin_lit && ctx.lighting.two_side ? 2 : 1); ++face) {
+      // A shared interpolator computes one value for both faces.
+      const int faces = color && !shared && ctx.begin_lit && ctx.lighting.two_side ? 2 : 1;
+      for (int face = 0; face < faces; ++face) {
         const int first = 4 * static_cast<int>(ctx.shading.size());
-        ctx.shading.push_back({param, face == 1, k, first});
+        ctx.shading.push_back({param, face == 1, k, first, shared});
         if (color) (face == 0 ? ctx.color_channel : ctx.back_color_channel) = first;
+        if (shared) {
+          uint32_t offset = 0;
+          for (const auto& s : ctx.begin_layout.shared)
+            offset = std::max(offset, s.record_offset + s.program->pixel.num_uniform_slots);
+          ctx.begin_layout.shared.push_back({shared, first, offset});
+        }
       }
     }
     ctx.begin_layout.kind_end[kind] = 4 * static_cast<int>(ctx.shading.size());
@@ -282,8 +312,8 @@ void pfglBegin(GLenum mode) {
       if (len > 0.0f) ctx->begin_normal_matrix /= len;
     }
   }
-  planFeed(*ctx, *ctx->begin_primitive);
   planShading(*ctx, mode, *ctx->begin_primitive);
+  planFeed(*ctx, *ctx->begin_primitive);
   ctx->rows_count = 0;
   ctx->rows.clear();
   ctx->row_shading.clear();
@@ -414,7 +444,8 @@ void pfglMaterialInterpEXT(GLuint param, GLenum primitive, GLenum interpolator) 
     ctx->setError(GL_INVALID_VALUE);
     return;
   }
-  if (interpolator != GL_PERSPECTIVE_LINEAR_INTERPOLATOR_EXT && interpolator != GL_LINEAR_INTERPOLATOR_EXT) {
+  if (interpolator != GL_PERSPECTIVE_LINEAR_INTERPOLATOR_EXT && interpolator != GL_LINEAR_INTERPOLATOR_EXT &&
+      !ctx->primitives.interpolator(interpolator)) {
     ctx->setError(GL_INVALID_ENUM);
     return;
   }

@@ -33,6 +33,7 @@ GLuint pfglCompilePrimitivesEXT(const GLchar* source) {
   // Instances already recorded keep the programs they were submitted with (the registry keeps
   // replaced programs alive), so replacing a primitive never changes pending drawing.
   for (auto& p : module.primitives) ctx->primitives.add(p);
+  for (auto& p : module.interpolators) ctx->primitives.addInterpolator(p);
   ctx->primitives.module_logs.push_back(log.format());
   return static_cast<GLuint>(ctx->primitives.module_logs.size());
 }
@@ -54,6 +55,17 @@ void pfglGetCompileLogEXT(GLuint module, GLsizei bufSize, GLsizei* length, GLcha
     out[n] = '\0';
   }
   if (length) *length = n;
+}
+
+GLenum pfglGetInterpolatorEXT(const GLchar* name) {
+  PFcontextRec* ctx = currentContext();
+  if (!ctx) return 0;
+  auto it = name ? ctx->primitives.interpolator_ids.find(name) : ctx->primitives.interpolator_ids.end();
+  if (it == ctx->primitives.interpolator_ids.end()) {
+    ctx->setError(GL_INVALID_VALUE);
+    return 0;
+  }
+  return it->second;
 }
 
 GLenum pfglGetPrimitiveEXT(const GLchar* name) {

@@ -69,6 +69,8 @@ class Interpreter {
         for (int c = layout_.kind_begin[k]; c < layout_.kind_end[k]; ++c) fn(c);
   }
   float state(int which) const {
+    const int first = static_cast<int>(StateValue::InvProjection);
+    if (which >= first && which < first + 16) return st_.inv_projection[which - first];
     switch (static_cast<StateValue>(which)) {
       case StateValue::ViewportScaleX: return st_.vp_scale_x;
       case StateValue::ViewportOffsetX: return st_.vp_offset_x;
@@ -82,6 +84,7 @@ class Interpreter {
       case StateValue::CullBack: return st_.cull_back ? 1.0f : 0.0f;
       case StateValue::FrontFaceCCW: return st_.front_ccw ? 1.0f : 0.0f;
       case StateValue::FlatShading: return st_.flat_shading ? 1.0f : 0.0f;
+      case StateValue::InvProjection: break;
     }
     return 0.0f;
   }
@@ -174,6 +177,7 @@ class Interpreter {
       }
       case Op::ZTest: scalar_[in.dst] = depthPasses(asF(get(in.a))) ? 1u : 0u; return {};
       case Op::LoadState: scalar_[in.dst] = fromF(state(in.imm)); return {};
+      case Op::HasKinds: scalar_[in.dst] = layout_.hasKinds(static_cast<unsigned>(in.imm)) ? 1u : 0u; return {};
       case Op::XLoadVertex: {
         std::vector<float>& d = channels(in.dst);
         for (int c = 0; c < layout_.count; ++c) d[c] = vc_[static_cast<size_t>(in.imm) * layout_.count + c];

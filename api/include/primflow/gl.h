@@ -129,6 +129,7 @@ void pfglTexCoord2f(GLfloat s, GLfloat t);
 #define GL_TOO_MANY_ITERATIONS_EXT 0x31001 /* error: a primitive program hit the iteration cap */
 #define GL_PERSPECTIVE_LINEAR_INTERPOLATOR_EXT 0x31010 /* pfglMaterialInterpEXT interpolators */
 #define GL_LINEAR_INTERPOLATOR_EXT 0x31011
+#define GL_FIRST_INTERPOLATOR_EXT 0x31400  /* pfglGetInterpolatorEXT's ids start here */
 #define GL_FIRST_PRIMITIVE_MODE_EXT 0x31800 /* glBegin modes of compiled primitives start here */
 #define GL_FIRST_PARAM_NAME_EXT 0x38000     /* pfglGetParamNameEXT's ids start here */
 
@@ -144,6 +145,9 @@ void pfglGetCompileLogEXT(GLuint module, GLsizei bufSize, GLsizei *length, GLcha
 /* The glBegin mode of a registered primitive by name (built-in ones included, e.g.
  * "triangles" gives GL_TRIANGLES); 0 and GL_INVALID_VALUE if there is none. */
 GLenum pfglGetPrimitiveEXT(const GLchar *name);
+/* The id of a compiled shared interpolator by name (paper section 3.4), for
+ * pfglMaterialInterpEXT; 0 and GL_INVALID_VALUE if there is none. */
+GLenum pfglGetInterpolatorEXT(const GLchar *name);
 
 /* Named parameters (paper section 3.1). pfglGetParamNameEXT interns a parameter name and
  * returns its id (never 0; NULL or "": GL_INVALID_VALUE, 0). "vertex", "normal" and
@@ -161,10 +165,13 @@ GLenum pfglGetPrimitiveEXT(const GLchar *name);
 GLuint pfglGetParamNameEXT(const GLchar *name);
 /* How instances of glBegin mode `primitive` interpolate the per-vertex shading parameter
  * `param` (a name id; "color" is GL's colour): GL_PERSPECTIVE_LINEAR_INTERPOLATOR_EXT (the
- * default of "color") or GL_LINEAR_INTERPOLATOR_EXT (linear in window space). Each bound
- * parameter takes 4 channels; its per-vertex value is its current value at each sequence point
- * (missing components (0, 0, 0, 1)), set with pfglRastParam*EXT or glMaterial with the name id.
- * Unknown ids or modes: GL_INVALID_VALUE; other interpolators: GL_INVALID_ENUM. */
+ * default of "color"), GL_LINEAR_INTERPOLATOR_EXT (linear in window space), or a shared
+ * interpolator (pfglGetInterpolatorEXT), which computes the value per pixel from the surface
+ * point P and its own parameters (their values at the instance's first sequence point). Each
+ * bound parameter takes 4 channels; its per-vertex value is its current value at each
+ * sequence point (missing components (0, 0, 0, 1)), set with pfglRastParam*EXT or glMaterial
+ * with the name id. Unknown ids or modes: GL_INVALID_VALUE; other interpolators:
+ * GL_INVALID_ENUM. */
 void pfglMaterialInterpEXT(GLuint param, GLenum primitive, GLenum interpolator);
 void pfglRastParamfEXT(GLuint name, GLfloat value);
 void pfglRastParamiEXT(GLuint name, GLint value);
