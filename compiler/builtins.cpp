@@ -135,6 +135,14 @@ void typeBuiltinCall(Expr& e, UnitKind unit, const std::function<void(SourceLoc,
     // statement (uniform; sema checks).
     if (!arity(1, 1) || any_void || !needScalars()) return;
     e.type = Type::of(BaseType::Void);
+  } else if (f == "unscreen") {
+    // The inverse of screen(): homogeneous window coordinates back to clip coordinates.
+    if (!arity(1, 1) || any_void) return;
+    if (e.args[0]->type != Type::of(BaseType::Point)) {
+      err(e.args[0]->loc, "unscreen() maps a point from window to clip coordinates; it takes a point, not " + typeName(e.args[0]->type));
+      return;
+    }
+    e.type = Type::of(BaseType::Point);
   } else if (f == "eye") {
     // Clip to eye coordinates: the inverse projection applied to a point (P for shared
     // interpolators is in eye space).

@@ -1073,6 +1073,20 @@ class Lowerer {
       return none;
     }
     if (f == "flat_shading") return scalar(e.type, stateOn(StateValue::FlatShading));
+    if (f == "unscreen") {
+      // x = (X - w * offset) / scale, per axis; w stays.
+      const std::vector<int>& p = args[0].comps;
+      auto inverse = [&](int comp, StateValue scale, StateValue offset) {
+        int o = emit(Op::FMul, ValueClass::F32, false, p[3], state(offset));
+        return emit(Op::FDiv, ValueClass::F32, false, emit(Op::FSub, ValueClass::F32, false, p[comp], o), state(scale));
+      };
+      Binding out;
+      out.type = e.type;
+      out.comps = {inverse(0, StateValue::ViewportScaleX, StateValue::ViewportOffsetX),
+                   inverse(1, StateValue::ViewportScaleY, StateValue::ViewportOffsetY),
+                   inverse(2, StateValue::DepthScale, StateValue::DepthOffset), p[3]};
+      return out;
+    }
     if (f == "eye") {
       const std::vector<int>& p = args[0].comps;
       Binding out;

@@ -199,7 +199,7 @@ void pfglReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum form
       const long fx = static_cast<long>(x) + col;
       if (fx < 0 || fx >= ctx->width) continue;
       const size_t at = static_cast<size_t>(fy) * ctx->width + static_cast<size_t>(fx);
-      double v[4];
+      double v[4] = {0, 0, 0, 0};
       if (format == GL_DEPTH_COMPONENT) {
         v[0] = ctx->depth[at];
       } else {

@@ -99,7 +99,7 @@ void pfglPushMatrix(void);
 void pfglPopMatrix(void);
 
 /* Immediate mode. Every glBegin mode (GL_POINTS ... GL_POLYGON) is a primitive of
- * primitives/*.pfl. The vector forms ignore a NULL pointer. */
+ * primitives/<name>.pfl. The vector forms ignore a NULL pointer. */
 void pfglBegin(GLenum mode);
 void pfglEnd(void);
 void pfglVertex2f(GLfloat x, GLfloat y);
