@@ -132,20 +132,24 @@ struct PFcontextRec {
   pf::LightingState lighting;
 
   // Named parameters: ids (GL_FIRST_PARAM_NAME_EXT + index) by name, and their current values.
-  // "color" is the current colour (current_color), the one per-vertex shading parameter GL has.
+  // "color" is GL's current colour: glColor and pfglRastParam*EXT on "color" set both
+  // current_color and its value.
   static constexpr GLuint kParamNameBase = GL_FIRST_PARAM_NAME_EXT;
   std::map<std::string, GLuint> param_ids;
   std::vector<std::string> param_names;
   std::vector<pf::ParamValue> current_params;
   GLuint vertex_param = 0, normal_param = 0, texcoord_param = 0, color_param = 0;
   GLuint paramId(const std::string& name);  // interns the name
+  // Sets a parameter's current value (`count` values; "color" also sets current_color).
+  void setParamValue(GLuint id, int count, const double* v);
   bool isParam(GLuint id) const { return id >= kParamNameBase && id - kParamNameBase < current_params.size(); }
   pf::ParamValue& param(GLuint id) { return current_params[id - kParamNameBase]; }
   const pf::ParamValue& param(GLuint id) const { return current_params[id - kParamNameBase]; }
 
   // How each glBegin mode interpolates shading parameters (pfglMaterialInterpEXT): by mode,
-  // the parameter and its interpolator (GL_PERSPECTIVE_LINEAR_INTERPOLATOR_EXT or
-  // GL_LINEAR_INTERPOLATOR_EXT). "color" is perspective-linear unless bound otherwise.
+  // the parameter and its interpolator (GL_PERSPECTIVE_LINEAR_INTERPOLATOR_EXT,
+  // GL_LINEAR_INTERPOLATOR_EXT or a shared interpolator's id). "color" is perspective-linear
+  // unless bound otherwise.
   std::map<GLenum, std::vector<std::pair<GLuint, GLenum>>> shading_bindings;
 
   // Immediate mode: between glBegin and glEnd, each sequence point appends a row with the

@@ -15,6 +15,7 @@
 #include <primflow/gl.h>
 
 #include "api/src/context_state.h"
+#include "raster/limits.h"
 
 using pf::currentContext;
 
@@ -23,7 +24,7 @@ namespace {
 // Converts the current value `v` to parameter `p`'s type (one sequence point's element):
 // false, with `why`, if it does not fit. Points take 2 to 4 values (z = 0, w = 1 by default)
 // and are transformed to clip coordinates, as glVertex's; colours 3 or 4 (alpha 1).
-bool convertValue(const pf::ParamInfo& p, const pf::ParamValue& v, const glm::mat4& mvp, uint32_t* out,
+bool convertValue(const pf::ParamInfo& p, const pf::ParamValue& v, const glm::mat4& transform, uint32_t* out,
                   std::string& why) {
   using pf::BaseType;
   const int want = p.components;
@@ -41,7 +42,7 @@ bool convertValue(const pf::ParamInfo& p, const pf::ParamValue& v, const glm::ma
     if (v.count < 2 || v.count > 4) return bad("2 to 4 values");
     glm::vec4 q(static_cast<float>(v.v[0]), static_cast<float>(v.v[1]), v.count > 2 ? static_cast<float>(v.v[2]) : 0.0f,
                 v.count > 3 ? static_cast<float>(v.v[3]) : 1.0f);
-    q = mvp * q;
+    q = transform * q;
     for (int c = 0; c < 4; ++c) out[c] = std::bit_cast<uint32_t>(q[c]);
     return true;
   }
@@ -92,7 +93,10 @@ void sequencePoint(PFcontextRec& ctx) {
   uint32_t* out = ctx.rows.data() + row * static_cast<size_t>(ctx.row_floats);
   for (const pf::FeedEntry& f : ctx.feed) {
     std::string why;
-    if (!convertValue(*f.info, ctx.param(f.name), ctx.begin_mvp, out + f.row_offset, why) &&
+    // A primitive's points go to clip coordinates; a shared interpolator's to eye coordinates,
+    // the space of the P it reads.
+    const glm::mat4& to = f.shared >= 0 ? ctx.begin_modelview : ctx.begin_mvp;
+    if (!convertValue(*f.info, ctx.param(f.name), to, out + f.row_offset, why) &&
         ctx.reject_reason.empty())
       ctx.reject_reason = "sequence point " + std::to_string(row) + ": " + why;
   }
@@ -168,9 +172,7 @@ void setParam(GLuint name, int count, const double* v) {
     ctx->setError(GL_INVALID_VALUE);
     return;
   }
-  pf::ParamValue& p = ctx->param(name);
-  p.count = count;
-  for (int i = 0; i < count; ++i) p.v[i] = v[i];
+  ctx->setParamValue(name, count, v);
 }
 
 void setVertex(double x, double y, double z, double w, int count) {
@@ -188,6 +190,9 @@ void setColor(float r, float g, float b, float a) {
   if (!ctx) return;
   ctx->current_color = glm::vec4(r, g, b, a);
   ctx->lighting.trackColor(ctx->current_color);
+  pf::ParamValue& p = ctx->param(ctx->color_param);
+  p.count = 4;
+  for (int k = 0; k < 4; ++k) p.v[k] = ctx->current_color[k];
 }
 
 // The shading channels of a sequence point, in the layout planned at glBegin: each bound
@@ -271,6 +276,16 @@ float unorm(GLubyte v) { return static_cast<float>(v) / 255.0f; }
 
 }  // namespace
 
+void PFcontextRec::setParamValue(GLuint id, int count, const double* v) {
+  pf::ParamValue& p = param(id);
+  p.count = count;
+  for (int i = 0; i < count; ++i) p.v[i] = v[i];
+  if (id == color_param) {  // GL's current colour, missing components (0, 0, 0, 1)
+    for (int k = 0; k < 4; ++k) current_color[k] = k < count ? static_cast<float>(v[k]) : (k == 3 ? 1.0f : 0.0f);
+    lighting.trackColor(current_color);
+  }
+}
+
 GLuint PFcontextRec::paramId(const std::string& name) {
   auto it = param_ids.find(name);
   if (it != param_ids.end()) return it->second;
@@ -301,8 +316,8 @@ void pfglBegin(GLenum mode) {
   ctx->begin_mvp = ctx->projection.top * ctx->modelview.top;
   // GL lights vertices: a primitive with a `vertex` parameter is lit per sequence point.
   ctx->begin_lit = ctx->lighting.enabled && ctx->begin_primitive->findParam("vertex") != nullptr;
+  ctx->begin_modelview = ctx->modelview.top;
   if (ctx->begin_lit) {
-    ctx->begin_modelview = ctx->modelview.top;
     // Normals go by the inverse transpose of the modelview's upper 3x3; GL_RESCALE_NORMAL
     // divides by the length of the inverse's third row (GL 1.5 section 2.11.3).
     glm::mat3 inverse = glm::inverse(glm::mat3(ctx->modelview.top));
@@ -318,6 +333,10 @@ void pfglBegin(GLenum mode) {
   ctx->rows.clear();
   ctx->row_shading.clear();
   ctx->reject_reason.clear();
+  if (ctx->row_channels > pf::kMaxChannels)
+    ctx->reject_reason = std::to_string(ctx->row_channels / 4) + " shading parameters bound to this mode need " +
+                         std::to_string(ctx->row_channels) + " channels; at most " + std::to_string(pf::kMaxChannels) +
+                         " fit";
 }
 
 void pfglEnd(void) {

@@ -142,9 +142,9 @@ void material(GLenum face, GLenum pname, const float* v, int given) {
   }
   if (ctx->isParam(pname)) {
     if (!v) return;
-    pf::ParamValue& p = ctx->param(pname);
-    p.count = given;
-    for (int i = 0; i < given; ++i) p.v[i] = v[i];
+    double d[4];
+    for (int i = 0; i < given; ++i) d[i] = v[i];
+    ctx->setParamValue(pname, given, d);
     return;
   }
   const bool scalar = pname == GL_SHININESS;
@@ -214,10 +214,13 @@ void pfglMateriali(GLenum face, GLenum pname, GLint v) {
 }
 void pfglMaterialfv(GLenum face, GLenum pname, const GLfloat* v) { material(face, pname, v, 4); }
 void pfglMaterialiv(GLenum face, GLenum pname, const GLint* v) {
+  // GL's colours map 2^31 - 1 to 1.0; shininess and named parameters (as pfglRastParamivEXT)
+  // take the integers as they are.
+  PFcontextRec* ctx = pf::currentContext();
+  const bool raw = pname == GL_SHININESS || (ctx && ctx->isParam(pname));
   float f[4] = {0, 0, 0, 0};
   const int n = pname == GL_SHININESS ? 1 : 4;
-  for (int i = 0; v && i < n; ++i)
-    f[i] = pname == GL_SHININESS ? static_cast<float>(v[i]) : static_cast<float>(v[i] / 2147483647.0);
+  for (int i = 0; v && i < n; ++i) f[i] = raw ? static_cast<float>(v[i]) : static_cast<float>(v[i] / 2147483647.0);
   material(face, pname, v ? f : nullptr, 4);
 }
 

@@ -81,7 +81,7 @@ int main(int argc, char** argv) {
   pfglFrustum(-1.0, 1.0, -0.75, 0.75, 1.0, 10.0);
   pfglMatrixMode(GL_MODELVIEW);
 
-  // A quad behind, then a ring in front of it, both at depth -2.
+  // A quad at z = -2.5, then a ring in front of it at z = -2.
   pfglBegin(GL_QUADS);
   pfglVertex3f(-1.8f, -1.3f, -2.5f);
   pfglVertex3f(0.0f, -1.3f, -2.5f);

@@ -97,7 +97,9 @@ TEST(ShadingParameters, ColourIsPerspectiveLinearByDefaultAndLinearWhenBound) {
       double lin, persp;
       bool inside;
       expected(x, y, lin, persp, inside);
-      if (inside) EXPECT_NEAR(red(c, x, y), lin * 255, 1.01) << "screen-linear at (" << x << ", " << y << ")";
+      if (inside) {
+        EXPECT_NEAR(red(c, x, y), lin * 255, 1.01) << "screen-linear at (" << x << ", " << y << ")";
+      }
     }
   // Binding the colour of another mode leaves GL_TRIANGLES as it is.
   pfglMaterialInterpEXT(color, GL_TRIANGLES, GL_PERSPECTIVE_LINEAR_INTERPOLATOR_EXT);
@@ -136,4 +138,52 @@ TEST(ShadingParameters, Errors) {
   pfglMaterialInterpEXT(color, GL_TRIANGLES, GL_LINEAR_INTERPOLATOR_EXT);
   pfglEnd();
   EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_INVALID_OPERATION));
+}
+
+TEST(ShadingParameters, ColourIsOneValueUnderEveryName) {
+  Ctx c;
+  GLuint color = pfglGetParamNameEXT("color");
+  pfglRastParam3fEXT(color, 0.25f, 0.5f, 0.75f);  // missing alpha: 1
+  GLfloat v[4];
+  pfglGetFloatv(GL_CURRENT_COLOR, v);
+  EXPECT_EQ(v[0], 0.25f);
+  EXPECT_EQ(v[3], 1.0f);
+  const GLint raw[4] = {3, 4, 5, 6};  // glMaterialiv with a name: integers as they are
+  GLuint count = pfglGetParamNameEXT("count");
+  pfglMaterialiv(GL_FRONT_AND_BACK, count, raw);
+  pfglMaterialiv(GL_FRONT_AND_BACK, color, raw);
+  pfglGetFloatv(GL_CURRENT_COLOR, v);
+  EXPECT_EQ(v[2], 5.0f);
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
+// A shared interpolator's point parameter is in eye coordinates, like P: an interpolator giving
+// the distance from P to its `centre` matches the distance computed here in the eye-space plane.
+TEST(ShadingParameters, InterpolatorPointsAreInEyeCoordinates) {
+  Ctx c;
+  ASSERT_NE(pfglCompilePrimitivesEXT("interpolator ring(point centre) {\n"
+                                     "  float d = length(vector(P.x - centre.x, P.y - centre.y, P.z - centre.z));\n"
+                                     "  interpolator_return(color(min(d, 1.0), 0.0, 0.0, 1.0));\n}\n"),
+            0u);
+  pfglMaterialInterpEXT(pfglGetParamNameEXT("color"), GL_TRIANGLES, pfglGetInterpolatorEXT("ring"));
+  pfglTranslatef(0.0f, 0.0f, -2.0f);  // moves the triangle and the centre alike: both to z = -2
+  pfglRastParam3fEXT(pfglGetParamNameEXT("centre"), 0.0f, 0.0f, 0.0f);
+  pfglClear(GL_COLOR_BUFFER_BIT);
+  pfglBegin(GL_TRIANGLES);
+  pfglVertex3f(-3, -3, 0);
+  pfglVertex3f(3, -3, 0);
+  pfglVertex3f(0, 3, 0);
+  pfglEnd();
+  pfglFinish();
+  ASSERT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  int checked = 0;
+  for (int y = 16; y < 48; y += 3)
+    for (int x = 16; x < 48; x += 3) {
+      // glFrustum(-1, 1, -1, 1, 1, 10): at z = -2 the pixel's centre is at eye (2 ndc_x, 2 ndc_y).
+      const double ex = ((x + 0.5) / (kN / 2) - 1) * 2, ey = ((y + 0.5) / (kN / 2) - 1) * 2;
+      const double d = std::min(std::sqrt(ex * ex + ey * ey), 1.0);
+      EXPECT_NEAR(red(c, x, y), d * 255, 1.01) << "(" << x << ", " << y << ")";
+      ++checked;
+    }
+  EXPECT_GT(checked, 50);
 }

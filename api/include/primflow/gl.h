@@ -25,7 +25,9 @@ void pfglViewport(GLint x, GLint y, GLsizei width, GLsizei height);
 void pfglDepthFunc(GLenum func);
 void pfglDepthMask(GLboolean flag);
 void pfglDepthRange(GLclampd zNear, GLclampd zFar);
-void pfglEnable(GLenum cap);   /* GL_DEPTH_TEST, GL_CULL_FACE; others: GL_INVALID_ENUM */
+/* GL_DEPTH_TEST, GL_CULL_FACE, GL_LIGHTING, GL_LIGHT0..7, GL_COLOR_MATERIAL, GL_NORMALIZE,
+ * GL_RESCALE_NORMAL; others: GL_INVALID_ENUM (glIsEnabled also takes the client arrays) */
+void pfglEnable(GLenum cap);
 void pfglDisable(GLenum cap);
 GLboolean pfglIsEnabled(GLenum cap);
 void pfglColorMask(GLboolean red, GLboolean green, GLboolean blue, GLboolean alpha);
@@ -71,9 +73,9 @@ void pfglGetIntegerv(GLenum pname, GLint *params);
 void pfglGetFloatv(GLenum pname, GLfloat *params);
 void pfglGetDoublev(GLenum pname, GLdouble *params);
 
-/* Reading pixels: GL_RGBA / GL_RGB x GL_UNSIGNED_BYTE / GL_FLOAT, GL_DEPTH_COMPONENT x
- * GL_FLOAT / GL_UNSIGNED_INT / GL_UNSIGNED_SHORT / GL_UNSIGNED_BYTE; rows aligned to
- * GL_PACK_ALIGNMENT (glPixelStorei: 1, 2, 4 or 8). Finishes drawing first. */
+/* Reading pixels: GL_RGBA / GL_RGB / GL_DEPTH_COMPONENT x GL_UNSIGNED_BYTE / GL_UNSIGNED_SHORT /
+ * GL_UNSIGNED_INT / GL_FLOAT; rows aligned to GL_PACK_ALIGNMENT (glPixelStorei: 1, 2, 4 or 8).
+ * Finishes drawing first. */
 void pfglPixelStorei(GLenum pname, GLint param);
 void pfglReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type,
                     GLvoid *pixels);
