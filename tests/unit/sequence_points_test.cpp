@@ -74,6 +74,9 @@ TEST(SequencePoints, ManyDisksInOneBeginEachBoundAtItsSequencePoint) {
   pfglSequencePointEXT();
   pfglRastParamfEXT(radius, 3.0f);  // the centre stays current; only the radius changes
   pfglSequencePointEXT();
+  pfglRastParam4fEXT(center, 12.5f, 16.0f, 0.0f, 2.0f);  // homogeneous: the same point as above
+  pfglRastParamfEXT(radius, 2.0f);
+  pfglSequencePointEXT();
   const GLfloat far_center[2] = {20.5f, 22.0f};
   pfglRastParamfvEXT(center, 2, far_center);  // two values: z = 0, w = 1
   pfglSequencePointEXT();
@@ -82,7 +85,7 @@ TEST(SequencePoints, ManyDisksInOneBeginEachBoundAtItsSequencePoint) {
   int covered = 0;
   for (int y = 0; y < kH; ++y)
     for (int x = 0; x < kW; ++x) {
-      bool want = inDisk(x, y, 8.25, 8.0, 5.5) || inDisk(x, y, 8.25, 8.0, 3.0) || inDisk(x, y, 22.5, 22.0, 3.0);
+      bool want = inDisk(x, y, 8.25, 8.0, 5.5) || inDisk(x, y, 8.25, 8.0, 3.0) || inDisk(x, y, 22.5, 22.0, 2.0);  // the radius set last is 2
       EXPECT_EQ(c.drawn(x, y), want) << "pixel (" << x << ", " << y << ")";
       covered += want;
     }
