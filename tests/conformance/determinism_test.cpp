@@ -1,0 +1,37 @@
+// primflow's output is byte-identical for any number of rasterizer threads: every GL case of the
+// conformance suite rendered with 1, 2, 3 and 8 threads, colour and depth compared bytewise.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "conformance.h"
+
+namespace {
+
+class Determinism : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Determinism, ByteIdenticalForAnyThreadCount) {
+  const int w = 256, h = 256;
+  pfconf::Rendering one = pfconf::renderPrimflow(GetParam(), w, h, 1);
+  ASSERT_TRUE(one.image.ok);
+  for (int threads : {2, 3, 8}) {
+    pfconf::Rendering many = pfconf::renderPrimflow(GetParam(), w, h, threads);
+    ASSERT_TRUE(many.image.ok);
+    size_t differing = 0;
+    for (size_t i = 0; i < one.image.rgba.size(); ++i) differing += one.image.rgba[i] != many.image.rgba[i];
+    EXPECT_EQ(differing, 0u) << threads << " threads: colour bytes differing from 1 thread";
+    EXPECT_TRUE(one.image.depth == many.image.depth) << threads << " threads: the depth buffer differs";
+    EXPECT_TRUE(one.output.errors == many.output.errors && one.output.numbers == many.output.numbers);
+  }
+}
+
+std::vector<std::string> caseNames() {
+  std::vector<std::string> names;
+  for (const pfconf::GlCase& c : pfconf::glCases()) names.push_back(c.name);
+  return names;
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, Determinism, ::testing::ValuesIn(caseNames()),
+                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
+
+}  // namespace
