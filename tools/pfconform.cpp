@@ -5,6 +5,8 @@
 //   pfconform --case NAME ...      only these (ctest runs one per test)
 //   pfconform --list               the cases, one per line
 //   pfconform --report DIR         also DIR/index.html: reference / actual / diff images
+//   A failing case always leaves its reference, actual and diff PNGs in --failures DIR
+//   (default: conformance-failures/ in the working directory).
 #include <CLI/CLI.hpp>
 
 #include <chrono>
@@ -28,11 +30,12 @@ void printRow(const pfconf::ReportRow& row) {
 int main(int argc, char** argv) {
   CLI::App app{"pfconform: primflow's conformance suite (OSMesa as the reference for the GL cases)"};
   std::vector<std::string> only;
-  std::string report;
+  std::string report, failures = "conformance-failures";
   int size = 256, threads = 1;
   bool list = false;
   app.add_option("--case", only, "run only these cases (repeatable)");
   app.add_option("--report", report, "write an HTML report with images into this directory");
+  app.add_option("--failures", failures, "where a failing case's reference / actual / diff PNGs go");
   app.add_option("--size", size, "image size of the GL cases (square)")->check(CLI::Range(16, 2048));
   app.add_option("--threads", threads, "primflow's rasterizer threads")->check(CLI::Range(1, 64));
   app.add_flag("--list", list, "list the cases and exit");
@@ -94,6 +97,16 @@ int main(int argc, char** argv) {
   }
   std::printf("%zu cases: %zu pass, %d fail, %d expected deviations\n", rows.size(), rows.size() - failed - deviations,
               failed, deviations);
+  std::vector<pfconf::ReportRow> failing;
+  for (const auto& r : rows)
+    if (r.result.status == pfconf::Result::Status::Fail) failing.push_back(r);
+  if (!failing.empty()) {
+    std::string error;
+    if (pfconf::writeHtmlReport(failures, failing, &error))
+      std::printf("failing cases' images: %s/\n", failures.c_str());
+    else
+      std::fprintf(stderr, "pfconform: %s\n", error.c_str());
+  }
   if (!report.empty()) {
     std::string error;
     if (!pfconf::writeHtmlReport(report, rows, &error)) {
