@@ -151,6 +151,7 @@ struct PFcontextRec {
   // GL_LINEAR_INTERPOLATOR_EXT or a shared interpolator's id). "color" is perspective-linear
   // unless bound otherwise.
   std::map<GLenum, std::vector<std::pair<GLuint, GLenum>>> shading_bindings;
+  std::vector<std::pair<GLuint, GLenum>> planned_bindings;  // scratch of the glBegin in progress
 
   // Immediate mode: between glBegin and glEnd, each sequence point appends a row with the
   // values of the primitive's parameters (points already in clip coordinates) and the colour.

@@ -233,17 +233,23 @@ void rowChannels(PFcontextRec& ctx) {
 void planShading(PFcontextRec& ctx, GLenum mode, const pf::CompiledPrimitive& prim) {
   ctx.shading.clear();
   ctx.color_channel = ctx.back_color_channel = -1;
-  ctx.begin_layout = pf::ChannelLayout{};
+  // Cleared, not rebuilt: a glBegin per triangle must not allocate (their capacity stays).
+  pf::ChannelLayout& layout = ctx.begin_layout;
+  layout.count = 0;
+  for (int k = 0; k < pf::kInterpKindCount; ++k) layout.kind_begin[k] = layout.kind_end[k] = 0;
+  layout.gbuffer_slot.clear();
+  layout.shared.clear();
   ctx.row_channels = 0;
   if (!prim.has_interp_data) return;
-  std::vector<std::pair<GLuint, GLenum>> bound;
+  std::vector<std::pair<GLuint, GLenum>>& bound = ctx.planned_bindings;
+  bound.clear();
   auto it = ctx.shading_bindings.find(mode);
-  if (it != ctx.shading_bindings.end()) bound = it->second;
+  if (it != ctx.shading_bindings.end()) bound.assign(it->second.begin(), it->second.end());
   bool has_color = false;
   for (const auto& b : bound) has_color = has_color || b.first == ctx.color_param;
   if (!has_color) bound.insert(bound.begin(), {ctx.color_param, GL_PERSPECTIVE_LINEAR_INTERPOLATOR_EXT});
   for (int kind = 0; kind < pf::kInterpKindCount; ++kind) {
-    ctx.begin_layout.kind_begin[kind] = 4 * static_cast<int>(ctx.shading.size());
+    layout.kind_begin[kind] = 4 * static_cast<int>(ctx.shading.size());
     for (const auto& [param, interpolator] : bound) {
       const pf::CompiledPrimitive* shared = ctx.primitives.interpolator(interpolator);
       pf::InterpKind k = shared                                         ? pf::InterpKind::Shared
@@ -259,17 +265,17 @@ void planShading(PFcontextRec& ctx, GLenum mode, const pf::CompiledPrimitive& pr
         if (color) (face == 0 ? ctx.color_channel : ctx.back_color_channel) = first;
         if (shared) {
           uint32_t offset = 0;
-          for (const auto& s : ctx.begin_layout.shared)
+          for (const auto& s : layout.shared)
             offset = std::max(offset, s.record_offset + s.program->pixel.num_uniform_slots);
-          ctx.begin_layout.shared.push_back({shared, first, offset});
+          layout.shared.push_back({shared, first, offset});
         }
       }
     }
-    ctx.begin_layout.kind_end[kind] = 4 * static_cast<int>(ctx.shading.size());
+    layout.kind_end[kind] = 4 * static_cast<int>(ctx.shading.size());
   }
   ctx.row_channels = 4 * static_cast<int>(ctx.shading.size());
-  ctx.begin_layout.count = ctx.row_channels;
-  for (int c = 0; c < ctx.row_channels; ++c) ctx.begin_layout.gbuffer_slot.push_back(c);
+  layout.count = ctx.row_channels;
+  for (int c = 0; c < ctx.row_channels; ++c) layout.gbuffer_slot.push_back(c);
 }
 
 float unorm(GLubyte v) { return static_cast<float>(v) / 255.0f; }
