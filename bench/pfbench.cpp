@@ -1,5 +1,5 @@
 // pfbench: primflow against OSMesa (llvmpipe) on the same GL scenes, in one process run.
-//   pfbench [--threads N] [--frames F] [--warmup W] [--scenes small,large,fill] [--csv FILE]
+//   pfbench [--threads N] [--frames F] [--warmup W] [--scenes small,large,fill,lit] [--csv FILE]
 // llvmpipe's thread count is LP_NUM_THREADS, read once per process: pfbench sets it to N before
 // OSMesa starts, so compare thread counts by running pfbench once per count (bench/run).
 // Times are medians of F frames after W warm-up frames, each frame ending in glFinish.
@@ -30,8 +30,14 @@ SceneData makeScene(const std::string& name) {
       s.colors.insert(s.colors.end(), {u01(rng), u01(rng), u01(rng)});
     }
   };
-  if (name == "small") {
+  if (name == "small" || name == "lit") {
     for (int i = 0; i < 200000; ++i) tri(u01(rng) * s.width, u01(rng) * s.height, 1.5f + u01(rng));
+    if (name == "lit")  // a unit normal per vertex, facing the viewer
+      for (size_t i = 0; i < s.vertices.size() / 3; ++i) {
+        float x = u01(rng) - 0.5f, y = u01(rng) - 0.5f, z = 1.0f;
+        float l = std::sqrt(x * x + y * y + z * z);
+        s.normals.insert(s.normals.end(), {x / l, y / l, z / l});
+      }
   } else if (name == "large") {
     for (int i = 0; i < 2000; ++i) tri(u01(rng) * s.width, u01(rng) * s.height, 150.0f + 150.0f * u01(rng));
   } else {  // fill: 32 layers of two triangles covering the frame
@@ -61,11 +67,11 @@ double median(std::vector<double> v) {
 int main(int argc, char** argv) {
   CLI::App app{"pfbench: primflow against OSMesa (llvmpipe) on the same GL scenes"};
   int threads = 1, frames = 7, warmup = 2;
-  std::string scenes = "small,large,fill", csv;
+  std::string scenes = "small,large,fill,lit", csv;
   app.add_option("--threads", threads, "rasterizer threads, for both (LP_NUM_THREADS for llvmpipe)")->check(CLI::Range(1, 64));
   app.add_option("--frames", frames, "timed frames (median reported)")->check(CLI::Range(1, 1000));
   app.add_option("--warmup", warmup, "frames before timing")->check(CLI::Range(0, 100));
-  app.add_option("--scenes", scenes, "comma-separated: small, large, fill");
+  app.add_option("--scenes", scenes, "comma-separated: small, large, fill, lit");
   app.add_option("--csv", csv, "append results to this CSV file");
   CLI11_PARSE(app, argc, argv);
   setenv("LP_NUM_THREADS", std::to_string(threads).c_str(), 1);  // before OSMesa starts
@@ -76,8 +82,8 @@ int main(int argc, char** argv) {
   std::stringstream list(scenes);
   std::string name;
   while (std::getline(list, name, ',')) {
-    if (name != "small" && name != "large" && name != "fill") {
-      std::fprintf(stderr, "pfbench: unknown scene '%s' (small, large, fill)\n", name.c_str());
+    if (name != "small" && name != "large" && name != "fill" && name != "lit") {
+      std::fprintf(stderr, "pfbench: unknown scene '%s' (small, large, fill, lit)\n", name.c_str());
       return 2;
     }
     pfbench::SceneData s = pfbench::makeScene(name);

@@ -12,11 +12,14 @@ struct SceneData {
   int width = 1024, height = 1024;
   std::vector<float> vertices;  // x, y, z per vertex, window coordinates (glOrtho onto pixels)
   std::vector<float> colors;    // r, g, b per vertex
+  std::vector<float> normals;   // x, y, z per vertex; empty: unlit
 };
 
 // "small": 200k small Gouraud triangles (about 3 pixels across), depth-tested.
 // "large": 2k large overlapping triangles (fill rate), depth-tested.
 // "fill":  64 triangles covering the frame 32 times (the per-pixel cost of the triangle program).
+// "lit":   "small" with one directional light, lit per vertex (GL_COLOR_MATERIAL: the colours
+//          are the material).
 SceneData makeScene(const std::string& name);
 
 // Renders `frames` frames after `warmup` ones; returns each frame's milliseconds.
