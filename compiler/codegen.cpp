@@ -439,6 +439,7 @@ class Generator {
       }
       Instr out{in.op, static_cast<uint16_t>(in.imm), pixelOperand(in.dst), pixelOperand(in.a),
                 pixelOperand(in.b), pixelOperand(in.c), pixelOperand(in.d)};
+      out.masked_write = in.dst >= 0 && defs_[in.dst].size() > 1;  // a merge value
       pixel_.code.push_back(out);
     }
   }

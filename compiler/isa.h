@@ -95,6 +95,11 @@ struct Instr {
   uint16_t imm = 0;
   uint32_t dst = kNoOperand;
   uint32_t a = kNoOperand, b = kNoOperand, c = kNoOperand, d = kNoOperand;
+  // Pixel program: the destination is a merge value (written in several places, under
+  // different masks), so only the active lanes may change. Every other value is written once,
+  // and its lanes outside the mask are never read (a retired or masked-off lane never reads a
+  // value defined while it was off): those instructions write all lanes, without a blend.
+  bool masked_write = false;
 };
 
 // How deep calls of primitives from primitives may nest (each level is an executor in setup).

@@ -351,7 +351,7 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const uint32_t* r
           const uint32_t* a = xsrc(ins.b, ch, wa);
           const uint32_t* b = xsrc(ins.c, ch, wb);
           uint32_t* d = xregs_.data() + (static_cast<size_t>(operandIndex(ins.dst)) * nch + ch) * kLanes;
-          run(Op::Sel, d, cond, wc, a, wa, b, wb, exec);
+          run(Op::Sel, d, cond, wc, a, wa, b, wb, ins.masked_write ? exec : ~0ull);
         });
         continue;
       case Op::XAdd: case Op::XSub: case Op::XMulF: case Op::XDivF: case Op::XNeg: case Op::XMov: {
@@ -365,7 +365,7 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const uint32_t* r
           const uint32_t* b = kZeroLanes;
           if (ins.b != kNoOperand) b = float_b ? src(ins.b, wb) : xsrc(ins.b, ch, wb);
           uint32_t* d = xregs_.data() + (static_cast<size_t>(operandIndex(ins.dst)) * nch + ch) * kLanes;
-          run(scalar_op, d, a, wa, b, wb, kZeroLanes, false, exec);
+          run(scalar_op, d, a, wa, b, wb, kZeroLanes, false, ins.masked_write ? exec : ~0ull);
         });
         continue;
       }
@@ -376,7 +376,8 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const uint32_t* r
         const uint32_t* c = ins.c == kNoOperand ? kZeroLanes : src(ins.c, wc);
         const uint32_t* d = ins.d == kNoOperand ? kZeroLanes : src(ins.d, wd);
         uint32_t* r = R + static_cast<size_t>(operandIndex(ins.dst)) * kLanes;
-        run(ins.op, r, a, wa, b, wb, c, wc, exec, d, wd);
+        // A value written once writes every lane (see Instr::masked_write): no blend.
+        run(ins.op, r, a, wa, b, wb, c, wc, ins.masked_write ? exec : ~0ull, d, wd);
       }
     }
   }
