@@ -14,20 +14,20 @@ namespace pf {
 SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& in, uint32_t* record) {
   const SetupProgram& p = prim.setup;
   const int nch = in.layout->count;
-  regs_.assign(p.num_regs, 0);
+  // One flat file for every operand kind -- registers, then constants, then the fixed part of
+  // the parameters -- so that reading an operand is an add and a load, not a switch.
+  const size_t nregs = p.num_regs, nconst = p.constants.size(), nparams = static_cast<size_t>(prim.param_floats);
+  regs_.resize(nregs + nconst + nparams);
+  std::fill_n(regs_.begin(), nregs, 0u);
+  std::copy(p.constants.begin(), p.constants.end(), regs_.begin() + static_cast<long>(nregs));
+  std::copy_n(in.params, nparams, regs_.begin() + static_cast<long>(nregs + nconst));
+  const uint32_t base[4] = {0, 0, static_cast<uint32_t>(nregs), static_cast<uint32_t>(nregs + nconst)};  // by OperandKind
+  uint32_t* const U = regs_.data();
   interp_.assign(static_cast<size_t>(p.num_interp_regs) * nch, 0.0f);
   SetupOutput out;
 
-  auto read = [&](uint32_t o) -> uint32_t {
-    uint32_t i = operandIndex(o);
-    switch (operandKind(o)) {
-      case OperandKind::Reg: return regs_[i];
-      case OperandKind::Const: return p.constants[i];
-      case OperandKind::Param: return in.params[i];
-      case OperandKind::Uniform: break;
-    }
-    return 0;
-  };
+  // (Setup programs have no Uniform operands.)
+  auto read = [&](uint32_t o) -> uint32_t { return U[base[o >> 30] + operandIndex(o)]; };
   auto rf = [&](uint32_t o) { return std::bit_cast<float>(read(o)); };
   auto xreg = [&](uint32_t o) { return interp_.data() + static_cast<size_t>(operandIndex(o)) * nch; };
   auto state = [&](uint16_t which) -> float {
@@ -97,8 +97,8 @@ SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& 
         out.bound[2] = rf(ins.c);
         out.bound[3] = rf(ins.dst);
         continue;
-      case Op::LoadState: regs_[operandIndex(ins.dst)] = std::bit_cast<uint32_t>(state(ins.imm)); continue;
-      case Op::HasKinds: regs_[operandIndex(ins.dst)] = in.layout->hasKinds(ins.imm) ? 1u : 0u; continue;
+      case Op::LoadState: U[operandIndex(ins.dst)] = std::bit_cast<uint32_t>(state(ins.imm)); continue;
+      case Op::HasKinds: U[operandIndex(ins.dst)] = in.layout->hasKinds(ins.imm) ? 1u : 0u; continue;
       case Op::XLoadVertex: {
         float* d = xreg(ins.dst);
         const float* s = in.vertex_channels + static_cast<size_t>(ins.imm) * nch;
@@ -117,7 +117,7 @@ SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& 
       case Op::LoadParamAt: {
         const int32_t slot = static_cast<int32_t>(read(ins.a));
         const int64_t at = static_cast<int64_t>(slot) + ins.imm;
-        regs_[operandIndex(ins.dst)] = slot >= 0 && at < prim.paramFloats(in.sequence_points) ? in.params[at] : 0u;
+        U[operandIndex(ins.dst)] = slot >= 0 && at < prim.paramFloats(in.sequence_points) ? in.params[at] : 0u;
         continue;
       }
       case Op::XSel: {
@@ -165,7 +165,7 @@ SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& 
       default: {
         uint32_t r = evalScalar(ins.op, read(ins.a), ins.b == kNoOperand ? 0 : read(ins.b),
                                 ins.c == kNoOperand ? 0 : read(ins.c), ins.d == kNoOperand ? 0 : read(ins.d));
-        regs_[operandIndex(ins.dst)] = r;
+        U[operandIndex(ins.dst)] = r;
       }
     }
   }
