@@ -12,7 +12,7 @@
 #include <primflow/context.h>
 #include <primflow/gl.h>
 
-#include "api/src/lighting.h"
+#include "raster/lighting.h"
 #include "compiler/compiler.h"
 #include "raster/renderer.h"
 

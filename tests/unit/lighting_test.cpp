@@ -8,7 +8,7 @@
 #include <cmath>
 #include <vector>
 
-#include "api/src/lighting.h"
+#include "raster/lighting.h"
 
 namespace {
 

@@ -1,6 +1,6 @@
-// GL's lighting equation (GL 1.5 section 2.14.1) and the lighting commands: glLight,
-// glLightModel, glMaterial, glColorMaterial, glGetLight, glGetMaterial.
-#include "api/src/lighting.h"
+// The lighting commands: glLight, glLightModel, glMaterial, glColorMaterial, glGetLight,
+// glGetMaterial (the state is raster/lighting.h's; the equation is evaluated there).
+#include "raster/lighting.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,63 +9,7 @@
 
 #include "api/src/context_state.h"
 
-namespace pf {
 
-void LightingState::trackColor(const glm::vec4& color) {
-  if (!color_material) return;
-  for (int face = 0; face < 2; ++face) {
-    if (face == 0 && color_material_face == GL_BACK) continue;
-    if (face == 1 && color_material_face == GL_FRONT) continue;
-    Material& m = material[face];
-    switch (color_material_mode) {
-      case GL_AMBIENT: m.ambient = color; break;
-      case GL_DIFFUSE: m.diffuse = color; break;
-      case GL_SPECULAR: m.specular = color; break;
-      case GL_EMISSION: m.emission = color; break;
-      default: m.ambient = m.diffuse = color; break;  // GL_AMBIENT_AND_DIFFUSE
-    }
-  }
-}
-
-glm::vec4 litColor(const LightingState& s, const glm::vec3& eye, const glm::vec3& normal_in, int face) {
-  const Material& m = s.material[face];
-  const glm::vec3 n = face == 0 ? normal_in : -normal_in;
-  glm::vec3 c = glm::vec3(m.emission) + glm::vec3(m.ambient) * glm::vec3(s.model_ambient);
-  for (const Light& l : s.lights) {
-    if (!l.enabled) continue;
-    // VP: from the vertex to the light (a direction for a light at infinity), and attenuation.
-    glm::vec3 vp;
-    float attenuation = 1.0f;
-    if (l.position.w != 0.0f) {
-      glm::vec3 d = glm::vec3(l.position) / l.position.w - eye;
-      float dist = glm::length(d);
-      vp = dist > 0 ? d / dist : glm::vec3(0);
-      float k = l.constant_attenuation + l.linear_attenuation * dist + l.quadratic_attenuation * dist * dist;
-      attenuation = k > 0 ? 1.0f / k : 0.0f;
-    } else {
-      vp = glm::length(glm::vec3(l.position)) > 0 ? glm::normalize(glm::vec3(l.position)) : glm::vec3(0);
-    }
-    float spot = 1.0f;
-    if (l.spot_cutoff != 180.0f) {
-      glm::vec3 sd = glm::length(l.spot_direction) > 0 ? glm::normalize(l.spot_direction) : glm::vec3(0);
-      float cos_angle = std::max(glm::dot(-vp, sd), 0.0f);
-      spot = cos_angle >= std::cos(glm::radians(l.spot_cutoff)) ? std::pow(cos_angle, l.spot_exponent) : 0.0f;
-    }
-    const float n_dot_vp = std::max(glm::dot(n, vp), 0.0f);
-    glm::vec3 term = glm::vec3(m.ambient) * glm::vec3(l.ambient) + n_dot_vp * glm::vec3(m.diffuse) * glm::vec3(l.diffuse);
-    if (n_dot_vp > 0.0f) {
-      glm::vec3 h = vp + (s.local_viewer ? (glm::length(eye) > 0 ? -glm::normalize(eye) : glm::vec3(0)) : glm::vec3(0, 0, 1));
-      float hl = glm::length(h);
-      float n_dot_h = hl > 0 ? std::max(glm::dot(n, h / hl), 0.0f) : 0.0f;
-      float spec = m.shininess == 0.0f ? 1.0f : std::pow(n_dot_h, m.shininess);
-      term += spec * glm::vec3(m.specular) * glm::vec3(l.specular);
-    }
-    c += attenuation * spot * term;
-  }
-  return glm::clamp(glm::vec4(c, m.diffuse.a), 0.0f, 1.0f);
-}
-
-}  // namespace pf
 
 namespace {
 

@@ -1,6 +1,6 @@
-// GL's fixed-function lighting state and its per-vertex evaluation (GL 1.5 section 2.14).
-// Vertex primitives (those with a `vertex` parameter) are lit per sequence point, as GL lights
-// per vertex; the lit colours are the per-vertex colour channels their primitives interpolate.
+// GL's fixed-function lighting state and its equation (GL 1.5 section 2.14). Vertex primitives
+// (those with a `vertex` parameter) are lit per sequence point by the API, as GL lights per
+// vertex; primitives that set their surface normal N are lit per pixel by the shading pass.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -20,6 +20,7 @@ struct Light {
   glm::vec3 spot_direction{0, 0, -1};  // eye coordinates
   float spot_exponent = 0, spot_cutoff = 180;
   float constant_attenuation = 1, linear_attenuation = 0, quadratic_attenuation = 0;
+  bool operator==(const Light&) const = default;
 };
 
 struct Material {
@@ -28,6 +29,7 @@ struct Material {
   glm::vec4 specular{0, 0, 0, 1};
   glm::vec4 emission{0, 0, 0, 1};
   float shininess = 0;
+  bool operator==(const Material&) const = default;
 };
 
 struct LightingState {
@@ -47,6 +49,7 @@ struct LightingState {
   }
   // glColor under GL_COLOR_MATERIAL: the tracked material properties take the colour.
   void trackColor(const glm::vec4& color);
+  bool operator==(const LightingState&) const = default;
 };
 
 // The colour of a vertex at eye-space position `eye` with eye-space normal `normal` (already
