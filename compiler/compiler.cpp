@@ -88,6 +88,7 @@ bool compileSource(const std::string& filename, const std::string& text, Compile
     }
     prim->has_interp_data = ir.has_interp_data;
     prim->kinds_handled = ir.kinds_handled;
+    prim->writes_normal = ir.writes_normal;
     prim->setup = std::move(code.setup);
     prim->pixel = std::move(code.pixel);
     auto kept = std::make_shared<IrFunction>(std::move(ir));

@@ -74,6 +74,7 @@ struct IrFunction {
   std::vector<std::string> callees;  // primitives it calls: Op::Emit's imm indexes this
   bool has_interp_data = false;
   InterpKindSet kinds_handled = 0;  // labels of its interpolation construct
+  bool writes_normal = false;       // sets N: lit per pixel (Op::SurfaceCommit)
 };
 
 // Calls fn(inst) for every instruction of `b`, nested ifs and loops included, in program order.

@@ -12,7 +12,7 @@ const char* opName(Op op) {
       "fnoise", "iadd", "isub", "imul", "idiv", "imod", "ineg", "imin", "imax", "iabs", "i2f",
       "f2i", "flt", "fle", "feq", "fne", "ilt", "ile", "ieq", "ine", "band", "bor", "bnot", "sel", "cross_sign",
       "mov", "xadd", "xsub", "xneg", "xmulf", "xdivf", "xmov", "xloadvertex", "xsel", "loadparamat", "xloadvertexat", "loadstate", "haskinds",
-      "bound", "kill", "retire", "ztest", "interp_return", "interp_shared", "shadeout", "zcommit", "outparam", "outvertex", "emit", "backfacing",
+      "bound", "kill", "retire", "ztest", "interp_return", "interp_shared", "shadeout", "zcommit", "surfacecommit", "outparam", "outvertex", "emit", "backfacing",
       "loopbegin", "looptest", "break", "continue", "loopcontinue", "loopback", "loopend", "jmp",
       "jmpifnot", "maskif", "maskelse", "maskend", "jmpifnone"};
   static_assert(sizeof(names) / sizeof(names[0]) == static_cast<size_t>(Op::OpCount));
@@ -36,6 +36,7 @@ std::string operandText(uint32_t o, const Bytecode& b, bool pixel, bool interp) 
       if (pixel && !interp && i == kRegY) return "Y";
       if (pixel && !interp && i == kRegZ) return "Z";
       if (pixel && !interp && i >= kRegP && i < kRegP + 4) return std::string("P.") + "xyzw"[i - kRegP];
+      if (pixel && !interp && i >= kRegN && i < kRegN + 3) return std::string("N.") + "xyz"[i - kRegN];
       return std::string(interp ? "x" : (pixel ? "v" : "r")) + std::to_string(i);
     case OperandKind::Uniform: return std::string(interp ? "ux" : "u") + std::to_string(i);
     case OperandKind::Param: return "p" + std::to_string(i);

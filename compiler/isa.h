@@ -47,6 +47,7 @@ enum class Op : uint8_t {
                  // the surface point P = (a, b, c, d)
   ShadeOut,      // pixel, in a shared interpolator: its value (a, b, c, d)
   ZCommit,       // pixel: a is the Z to write for lanes alive at the end
+  SurfaceCommit, // pixel: the surface for per-pixel lighting: imm 0: P = (a, b, c, d); 1: N = (a, b, c)
   // calls of one primitive from another (setup; paper section 5: polygon -> screen_triangle):
   // the arguments fill an outgoing parameter block, then Emit submits the callee's instance
   OutParam,      // setup: outgoing parameter slot imm = a
@@ -106,8 +107,8 @@ struct Instr {
 constexpr int kMaxPrimitiveCallDepth = 8;
 
 // The registers of the pixel program that hold the built-ins before the first instruction:
-// X, Y, Z, and P's 4 components (in a shared interpolator, the point its primitive set).
-constexpr uint32_t kRegX = 0, kRegY = 1, kRegZ = 2, kRegP = 3, kFirstFreePixelReg = 7;
+// X, Y, Z, P's 4 components (in a shared interpolator, the point its primitive set) and N's 3.
+constexpr uint32_t kRegX = 0, kRegY = 1, kRegZ = 2, kRegP = 3, kRegN = 7, kFirstFreePixelReg = 10;
 
 struct Bytecode {
   std::vector<Instr> code;

@@ -75,7 +75,9 @@ class Lowerer {
     bindBuiltin("Y", kRegY, false);
     bindBuiltin("Z", kRegZ, true);
     bindBuiltin("P", kRegP, u.kind == UnitKind::Primitive, Type::of(BaseType::Point));
+    bindBuiltin("N", kRegN, u.kind == UnitKind::Primitive, Type::of(BaseType::Normal));
     z_initial_ = bindings_[lookup("Z")].comps[0];
+    n_initial_ = bindings_[lookup("N")].comps;
     scopes_.emplace_back();  // the parameters' scope: functions see scope 0 (built-ins) only
     // Parameters: array parameters are per sequence point (outermost index), the rest per
     // primitive. All per-sequence-point parameters must agree on the count; parameter-sized
@@ -152,6 +154,15 @@ class Lowerer {
     if (!terminated) {
       int z = bindings_[lookup("Z")].comps[0];
       if (z != z_initial_) emitEffect(Op::ZCommit, z, -1, -1, -1, 0, u.loc);
+      // A primitive that sets its normal N is lit per pixel: the surface point and normal of
+      // each pixel go to the G-buffer for the shading pass.
+      const std::vector<int>& n = bindings_[lookup("N")].comps;
+      if (u.kind == UnitKind::Primitive && n != n_initial_) {
+        const std::vector<int>& p = bindings_[lookup("P")].comps;
+        emitEffect(Op::SurfaceCommit, p[0], p[1], p[2], p[3], 0, u.loc);
+        emitEffect(Op::SurfaceCommit, n[0], n[1], n[2], -1, 1, u.loc);
+        f_.writes_normal = true;
+      }
     }
     return !log_.hasErrors();
   }
@@ -168,6 +179,7 @@ class Lowerer {
   int varying_depth_ = 0;
   InterpKindSet interp_kinds_ = kAllInterpKinds;
   int z_initial_ = -1;
+  std::vector<int> n_initial_;
   SourceLoc cur_loc_;
   std::map<std::pair<int, uint32_t>, int> constants_;
   int zero_interp_ = -1;

@@ -19,6 +19,7 @@ namespace {
 bool isEffect(Op op) {
   switch (op) {
     case Op::Bound: case Op::Kill: case Op::Retire: case Op::InterpReturn: case Op::InterpShared: case Op::ShadeOut:
+    case Op::SurfaceCommit:
     case Op::ZCommit: case Op::Break: case Op::Continue: case Op::OutParam: case Op::OutVertex:
     case Op::Emit: case Op::BackFacing:
       return true;

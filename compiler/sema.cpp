@@ -82,6 +82,8 @@ class Analyzer {
     declareBuiltin("Z", u.kind == UnitKind::Primitive);
     // P: the surface point (eye space) a primitive sets for its shared interpolators, which read it.
     declareBuiltin("P", u.kind == UnitKind::Primitive, Type::of(BaseType::Point));
+    // N: the surface normal (eye space); a primitive that sets it is lit per pixel.
+    declareBuiltin("N", u.kind == UnitKind::Primitive, Type::of(BaseType::Normal));
     if (u.kind == UnitKind::Function) {
       functionParams(u);
     } else {
@@ -146,8 +148,8 @@ class Analyzer {
         log_.error(p.loc, "parameter '" + p.name + "' is declared twice");
         continue;
       }
-      if (p.name == "P") {
-        log_.error(p.loc, "'P' is the built-in surface point: it is not declared as a parameter");
+      if (p.name == "P" || p.name == "N") {
+        log_.error(p.loc, "'" + p.name + "' is the built-in surface " + (p.name == "P" ? "point" : "normal") + ": it is not declared as a parameter");
         continue;
       }
       if (p.name == "X" || p.name == "Y" || p.name == "Z") {
@@ -207,6 +209,7 @@ class Analyzer {
     v.varying = true;
     v.why = name == "Z"   ? "it depends on the built-in Z (the depth buffer)"
             : name == "P" ? "it depends on the built-in P (the surface point)"
+            : name == "N" ? "it depends on the built-in N (the surface normal)"
                           : "it depends on the built-in " + name + " (the pixel position)";
     declare(v);
     builtin_count_ = vars_.size();

@@ -9,23 +9,29 @@ namespace pf {
 
 void LightingState::trackColor(const glm::vec4& color) {
   if (!color_material) return;
-  for (int face = 0; face < 2; ++face) {
-    if (face == 0 && color_material_face == GL_BACK) continue;
-    if (face == 1 && color_material_face == GL_FRONT) continue;
-    Material& m = material[face];
-    switch (color_material_mode) {
-      case GL_AMBIENT: m.ambient = color; break;
-      case GL_DIFFUSE: m.diffuse = color; break;
-      case GL_SPECULAR: m.specular = color; break;
-      case GL_EMISSION: m.emission = color; break;
-      default: m.ambient = m.diffuse = color; break;  // GL_AMBIENT_AND_DIFFUSE
-    }
-  }
+  for (int face = 0; face < 2; ++face) material[face] = trackedMaterial(*this, face, color);
 }
 
 glm::vec4 litColor(const LightingState& s, const glm::vec3& eye, const glm::vec3& normal_in, int face) {
-  const Material& m = s.material[face];
-  const glm::vec3 n = face == 0 ? normal_in : -normal_in;
+  return litColor(s, s.material[face], eye, face == 0 ? normal_in : -normal_in);
+}
+
+Material trackedMaterial(const LightingState& s, int face, const glm::vec4& color) {
+  Material m = s.material[face];
+  if (!s.color_material || (face == 0 && s.color_material_face == GL_BACK) ||
+      (face == 1 && s.color_material_face == GL_FRONT))
+    return m;
+  switch (s.color_material_mode) {
+    case GL_AMBIENT: m.ambient = color; break;
+    case GL_DIFFUSE: m.diffuse = color; break;
+    case GL_SPECULAR: m.specular = color; break;
+    case GL_EMISSION: m.emission = color; break;
+    default: m.ambient = m.diffuse = color; break;
+  }
+  return m;
+}
+
+glm::vec4 litColor(const LightingState& s, const Material& m, const glm::vec3& eye, const glm::vec3& n) {
   glm::vec3 c = glm::vec3(m.emission) + glm::vec3(m.ambient) * glm::vec3(s.model_ambient);
   for (const Light& l : s.lights) {
     if (!l.enabled) continue;

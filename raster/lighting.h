@@ -56,5 +56,9 @@ struct LightingState {
 // normalised or rescaled as the state asks), lit with material `face` (0 front, 1 back; the
 // back face is lit with the normal reversed), clamped to [0, 1].
 glm::vec4 litColor(const LightingState& s, const glm::vec3& eye, const glm::vec3& normal, int face);
+// The same with material `m` and the normal as it is (already reversed for a back face).
+glm::vec4 litColor(const LightingState& s, const Material& m, const glm::vec3& eye, const glm::vec3& n);
+// Face `face`'s material with GL_COLOR_MATERIAL's tracked properties set to `color`.
+Material trackedMaterial(const LightingState& s, int face, const glm::vec4& color);
 
 }  // namespace pf

@@ -89,6 +89,15 @@ void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* reco
     size_t t = static_cast<size_t>(ty) * kTileSize + tx;
     target.shade_ids[t] = shade_id;
     for (int ch = 0; ch < nch; ++ch) target.slots[layout.gbuffer_slot[ch]][t] = asF(staging_[static_cast<size_t>(ch) * kLanes + i]);
+    if (layout.surface_slot >= 0) {  // per-pixel lighting: P (divided by w) and N
+      // (An instance that does not set N -- a callee of one that does -- has no surface: 0.)
+      const bool has = prim.writes_normal;
+      const float w = has ? asF(surface_[3 * kLanes + i]) : 1.0f;
+      for (int k = 0; k < 3; ++k) {
+        target.slots[layout.surface_slot + k][t] = has ? asF(surface_[static_cast<size_t>(k) * kLanes + i]) / w : 0.0f;
+        target.slots[layout.surface_slot + 3 + k][t] = has ? asF(surface_[static_cast<size_t>(4 + k) * kLanes + i]) : 0.0f;
+      }
+    }
   }
 }
 
@@ -131,10 +140,11 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const uint32_t* r
   std::fill(staging_.begin(), staging_.begin() + staging_words, 0u);
 
   uint32_t* R = regs_.data();
-  // Built-ins: X, Y at pixel centres; Z from the depth buffer; P given, or (0, 0, 0, 1).
+  // Built-ins: X, Y at pixel centres; Z from the depth buffer; P given, or (0, 0, 0, 1); N 0.
   for (int k = 0; k < 4; ++k)
     for (int i = 0; i < kLanes; ++i)
       R[(kRegP + k) * kLanes + i] = p_in ? p_in[k * kLanes + i] : (k == 3 ? fromF(1.0f) : 0u);
+  std::fill_n(R + static_cast<size_t>(kRegN) * kLanes, 3 * kLanes, 0u);
   for (int i = 0; i < kLanes; ++i) {
     R[kRegX * kLanes + i] = fromF(static_cast<float>(bx + (i % kBlockSize)) + 0.5f);
     R[kRegY * kLanes + i] = fromF(static_cast<float>(by + (i / kBlockSize)) + 0.5f);
@@ -323,6 +333,16 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const uint32_t* r
         const uint32_t ops[4] = {ins.a, ins.b, ins.c, ins.d};
         for (int k = 0; k < 4; ++k) pv[k] = src(ops[k], pw[k]);
         runSharedInterpolators(layout, state, bx, by, exec, pv, pw, shared_records);
+        continue;
+      }
+      case Op::SurfaceCommit: {  // P (imm 0) or N (imm 1) of the lanes alive at the end
+        const uint32_t ops[4] = {ins.a, ins.b, ins.c, ins.d};
+        for (int k = 0; k < (ins.imm == 0 ? 4 : 3); ++k) {
+          bool w;
+          const uint32_t* v = src(ops[k], w);
+          run(Op::Mov, surface_.data() + static_cast<size_t>(ins.imm * 4 + k) * kLanes, v, w, kZeroLanes, false,
+              kZeroLanes, false, exec);
+        }
         continue;
       }
       case Op::ShadeOut: {  // a shared interpolator's value

@@ -58,6 +58,7 @@ class PixelExecutor {
 
   std::unique_ptr<PixelExecutor> shared_;  // runs shared interpolators (their own registers)
   std::vector<uint32_t> shade_out_;        // 4 x kLanes: a shared interpolator's value
+  std::vector<uint32_t> surface_ = std::vector<uint32_t>(8 * kLanes);  // P (4), N (3) per lane
   std::vector<uint32_t> regs_;     // num_regs x kLanes
   std::vector<uint32_t> xregs_;    // num_interp_regs x channels x kLanes
   std::vector<uint32_t> staging_;  // channels x kLanes: interpolator_return results

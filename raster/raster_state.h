@@ -52,6 +52,9 @@ struct ChannelLayout {
     bool operator==(const SharedInterpolator&) const = default;
   };
   std::vector<SharedInterpolator> shared;
+  // Per-pixel lighting: the 6 G-buffer slots (P's x, y, z in eye coordinates, then N) from this
+  // one, written for primitives that set N; -1: none.
+  int surface_slot = -1;
 
   // Whether some channel is of a kind in `set` (bit 1 << kind).
   bool hasKinds(unsigned set) const {

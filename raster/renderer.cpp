@@ -52,7 +52,8 @@ void pixelRange(float lo, float hi, int clip_lo, int clip_hi, int& out_lo, int& 
 
 bool Renderer::submit(const CompiledPrimitive& prim, const uint32_t* params, const float* vertex_channels,
                       const ChannelLayout& layout, const RasterState& state, const ShadeState& shade,
-                      int sequence_points, const uint32_t* const* shared_params) {
+                      int sequence_points, const uint32_t* const* shared_params,
+                      const LightingState* per_pixel_lighting) {
   if (!color_) return false;
   // The shading pass writes with one colour mask: instances with another wait for a flush.
   if (!scene_.instances.empty() && scene_.color_mask != state.color_mask) flush();
@@ -60,19 +61,28 @@ bool Renderer::submit(const CompiledPrimitive& prim, const uint32_t* params, con
   // Shared state: appended only when it changes.
   if (scene_.states.empty() || !(scene_.states.back() == state)) scene_.states.push_back(state);
   if (scene_.layouts.empty() || !(scene_.layouts.back() == layout)) scene_.layouts.push_back(layout);
-  if (scene_.shades.empty() || !(scene_.shades[scene_.current_shade] == shade)) {
+  ShadeState lit_shade;
+  if (per_pixel_lighting && layout.surface_slot >= 0) {
+    if (scene_.lightings.empty() || !(scene_.lightings.back() == *per_pixel_lighting))
+      scene_.lightings.push_back(*per_pixel_lighting);
+    lit_shade = shade;
+    lit_shade.surface_slot = layout.surface_slot;
+    lit_shade.lighting = static_cast<int>(scene_.lightings.size()) - 1;
+  }
+  const ShadeState& the_shade = per_pixel_lighting && layout.surface_slot >= 0 ? lit_shade : shade;
+  if (scene_.shades.empty() || !(scene_.shades[scene_.current_shade] == the_shade)) {
     scene_.current_shade = static_cast<uint32_t>(scene_.shades.size());
-    scene_.shades.push_back(shade);
-    if (shade.back_color_slot >= 0) {  // its back variant follows it
-      ShadeState back = shade;
-      back.color_slot = shade.back_color_slot;
+    scene_.shades.push_back(the_shade);
+    if (the_shade.back_color_slot >= 0) {  // its back variant follows it
+      ShadeState back = the_shade;
+      back.color_slot = the_shade.back_color_slot;
       back.back_color_slot = -1;
       scene_.shades.push_back(back);
     }
   }
   if (scene_.states.size() > 0xffff || scene_.layouts.size() > 0xffff) {
     flush();
-    return submit(prim, params, vertex_channels, layout, state, shade, sequence_points, shared_params);
+    return submit(prim, params, vertex_channels, layout, state, shade, sequence_points, shared_params, per_pixel_lighting);
   }
   // The shared interpolators' uniforms: their setup programs, once for the whole submission.
   shared_offset_ = kNoShared;
@@ -162,6 +172,7 @@ bool Renderer::submitAt(const CompiledPrimitive& prim, const uint32_t* params, c
   for (int s : layout.gbuffer_slot) max_slot = std::max(max_slot, s + 1);
   if (shade.color_slot >= 0) max_slot = std::max(max_slot, shade.color_slot + 4);
   if (shade.back_color_slot >= 0) max_slot = std::max(max_slot, shade.back_color_slot + 4);
+  if (layout.surface_slot >= 0) max_slot = std::max(max_slot, layout.surface_slot + 6);
   scene_.gbuffer_slots = std::max(scene_.gbuffer_slots, max_slot);
 
   uint32_t index = static_cast<uint32_t>(scene_.instances.size());
@@ -243,7 +254,7 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
     }
   }
   ShadeTarget st{color_, width_, x0, y0, w, h, scene_.color_mask};
-  s.pixels_shaded += shadeTile(s.shade_ids.data(), s.slot_planes.data(), scene_.shades.data(), st);
+  s.pixels_shaded += shadeTile(s.shade_ids.data(), s.slot_planes.data(), scene_.shades.data(), scene_.lightings.data(), st);
 }
 
 void Renderer::flush() {

@@ -59,10 +59,12 @@ class Renderer : private SubInstanceSink {
   // primitives its setup calls are submitted as it runs, each binned on its own, in order.
   // Returns false if setup killed it.
   // `shared_params`: the parameter block of each of the layout's shared interpolators (their
-  // setup runs once here, for this instance and every instance it calls).
+  // setup runs once here, for this instance and every instance it calls). `per_pixel_lighting`:
+  // GL's lighting for pixels of primitives that set N (layout.surface_slot), snapshotted.
   bool submit(const CompiledPrimitive& prim, const uint32_t* params, const float* vertex_channels,
               const ChannelLayout& layout, const RasterState& state, const ShadeState& shade,
-              int sequence_points = -1, const uint32_t* const* shared_params = nullptr);
+              int sequence_points = -1, const uint32_t* const* shared_params = nullptr,
+              const LightingState* per_pixel_lighting = nullptr);
 
   // Executes everything recorded: afterwards the colour and depth buffers hold the image.
   void flush();

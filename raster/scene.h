@@ -43,6 +43,7 @@ struct Scene {
   std::vector<ChannelLayout> layouts;
   std::vector<ShadeState> shades;
   uint32_t current_shade = 0;  // of the instances being submitted (a back variant may follow it)
+  std::vector<LightingState> lightings;  // per-pixel lighting states (ShadeState::lighting)
   std::vector<TileBin> bins;
   int tiles_x = 0, tiles_y = 0;
   int gbuffer_slots = 0;
@@ -56,6 +57,7 @@ struct Scene {
     states.clear();
     layouts.clear();
     shades.clear();
+    lightings.clear();
     for (TileBin& b : bins) b.instances.clear();
     gbuffer_slots = 0;
     clear = PendingClear{};

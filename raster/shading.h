@@ -1,9 +1,13 @@
 // The deferred shading pass: after every instance of a tile has run, each pixel that some
 // instance covered is shaded once from the shading parameters left in the G-buffer.
-// For now shading is unlit: the colour parameter, clamped and rounded to 8 bits.
+// Shading is the colour parameter (lit per vertex already, or unlit), or -- for primitives that
+// set their normal N -- GL's lighting evaluated per pixel from the G-buffer's P and N, clamped
+// and rounded to 8 bits.
 #pragma once
 
 #include <cstdint>
+
+#include "raster/lighting.h"
 
 namespace pf {
 
@@ -14,6 +18,10 @@ struct ShadeState {
   // (facing()); -1: one colour for both faces.
   int back_color_slot = -1;
   float constant_color[4] = {1, 1, 1, 1};
+  // Per-pixel lighting: the 6 slots of P (eye coordinates) and N, and the lighting state (an
+  // index into the frame's lighting states, set by the renderer); -1: none.
+  int surface_slot = -1;
+  int lighting = -1;
 
   bool operator==(const ShadeState&) const = default;
 };
@@ -28,6 +36,7 @@ struct ShadeTarget {
 // Shades the tile: for every pixel with a non-zero shade id (1 + index into `shades`).
 // Returns the number of pixels shaded.
 uint64_t shadeTile(const uint32_t* shade_ids, const float* const* slots, const ShadeState* shades,
+                   const LightingState* lightings,
                    const ShadeTarget& target);
 
 // Float colour component -> 8 bits: clamp to [0, 1], scale, round to nearest (as GL does).

@@ -165,6 +165,7 @@ struct PFcontextRec {
   // modelview, the normal matrix (rescaled as GL_RESCALE_NORMAL asks), and the channels of a
   // row's colour: 4, or 8 with two-sided lighting (front, then back).
   bool begin_lit = false;
+  bool begin_lit_per_pixel = false;  // sets N, no vertices: GL lighting per pixel (shading pass)
   glm::mat4 begin_modelview{1.0f};
   glm::mat3 begin_normal_matrix{1.0f};
   int row_channels = 4;

@@ -157,7 +157,8 @@ void submitInstances(PFcontextRec& ctx) {
       for (int c = 0; c < layout.count; ++c)
         ctx.vertex_channels[i * layout.count + c] = ctx.row_shading[(first + i) * nch + c];
     ctx.renderer.submit(prim, ctx.param_block.data(), ctx.vertex_channels.data(), layout, state, shade, count,
-                        nshared ? ctx.shared_block_ptrs.data() : nullptr);
+                        nshared ? ctx.shared_block_ptrs.data() : nullptr,
+                        ctx.begin_lit_per_pixel ? &ctx.lighting : nullptr);
   }
 }
 
@@ -239,6 +240,7 @@ void planShading(PFcontextRec& ctx, GLenum mode, const pf::CompiledPrimitive& pr
   for (int k = 0; k < pf::kInterpKindCount; ++k) layout.kind_begin[k] = layout.kind_end[k] = 0;
   layout.gbuffer_slot.clear();
   layout.shared.clear();
+  layout.surface_slot = -1;
   ctx.row_channels = 0;
   if (!prim.has_interp_data) return;
   std::vector<std::pair<GLuint, GLenum>>& bound = ctx.planned_bindings;
@@ -334,6 +336,10 @@ void pfglBegin(GLenum mode) {
     }
   }
   planShading(*ctx, mode, *ctx->begin_primitive);
+  // A primitive that sets its normal and has no vertices to light is lit per pixel: its P and N
+  // follow its channels in the G-buffer.
+  ctx->begin_lit_per_pixel = ctx->lighting.enabled && !ctx->begin_lit && ctx->begin_primitive->writes_normal;
+  if (ctx->begin_lit_per_pixel) ctx->begin_layout.surface_slot = ctx->row_channels;
   planFeed(*ctx, *ctx->begin_primitive);
   ctx->rows_count = 0;
   ctx->rows.clear();

@@ -52,7 +52,10 @@ class Interpreter {
       case Value::Origin::Const: return val.bits;
       case Value::Origin::Param: return params_[val.index];
       case Value::Origin::Builtin:
-        return fromF(val.index == static_cast<int>(kRegX) ? x_ : val.index == static_cast<int>(kRegY) ? y_ : z_);
+        if (val.index == static_cast<int>(kRegX)) return fromF(x_);
+        if (val.index == static_cast<int>(kRegY)) return fromF(y_);
+        if (val.index == static_cast<int>(kRegZ)) return fromF(z_);
+        return fromF(val.index == static_cast<int>(kRegP) + 3 ? 1.0f : 0.0f);  // P (0, 0, 0, 1), N 0
       case Value::Origin::Temp: break;
     }
     return scalar_[v];
@@ -140,7 +143,7 @@ class Interpreter {
       case Op::Retire: return {Flow::Retire, 0};
       case Op::Break: return {Flow::Break, in.imm > 1 ? in.imm : 1};
       case Op::Continue: return {Flow::Continue, 1};
-      case Op::Bound: case Op::Kill: case Op::InterpShared: return {};
+      case Op::Bound: case Op::Kill: case Op::InterpShared: case Op::SurfaceCommit: return {};
       // Calls of other primitives submit instances the reference of this one does not draw.
       case Op::OutParam: case Op::OutVertex: case Op::Emit: case Op::BackFacing: return {};
       case Op::LoadParamAt: {
