@@ -143,6 +143,23 @@ void typeBuiltinCall(Expr& e, UnitKind unit, const std::function<void(SourceLoc,
       return;
     }
     e.type = Type::of(BaseType::Point);
+  } else if (f == "clip" || f == "object" || f == "eye_from_object") {
+    // Eye to clip coordinates (the projection), eye to object coordinates (the inverse modelview),
+    // object to eye coordinates (the modelview).
+    if (!arity(1, 1) || any_void) return;
+    if (e.args[0]->type != Type::of(BaseType::Point)) {
+      err(e.args[0]->loc, f + "() maps a point between spaces; it takes a point, not " + typeName(e.args[0]->type));
+      return;
+    }
+    e.type = Type::of(BaseType::Point);
+  } else if (f == "eye_normal") {
+    // An object-space normal to eye space: the inverse transpose of the modelview.
+    if (!arity(1, 1) || any_void) return;
+    if (!isSpatial(e.args[0]->type) || e.args[0]->type.base == BaseType::Point) {
+      err(e.args[0]->loc, "eye_normal() takes a normal or vector, not " + typeName(e.args[0]->type));
+      return;
+    }
+    e.type = Type::of(BaseType::Normal);
   } else if (f == "eye") {
     // Clip to eye coordinates: the inverse projection applied to a point (P for shared
     // interpolators is in eye space).

@@ -78,8 +78,9 @@ enum class StateValue : uint16_t {
   DepthNear, DepthFar,
   // 1 or 0: culled() and flat_shading() read these
   CullFront, CullBack, FrontFaceCCW, FlatShading,
-  // the inverse projection's 16 elements (column-major), for eye(): InvProjection + k
-  InvProjection
+  // 16 elements each (column-major): InvProjection + k (eye()), Projection + k (clip()),
+  // InvModelview + k (object(), eye_normal()), Modelview + k (eye_from_object())
+  InvProjection, Projection = InvProjection + 16, InvModelview = Projection + 16, Modelview = InvModelview + 16
 };
 
 // An operand: a kind in the top 2 bits, an index below.

@@ -950,6 +950,23 @@ class Lowerer {
   }
 
   int state(StateValue s) { return emit(Op::LoadState, ValueClass::F32, false, -1, -1, -1, static_cast<int>(s)); }
+
+  // The state's column-major matrix `m` (its upper n x n; transposed if asked) times the n
+  // components of v.
+  Binding scalarMatrixTimes(const Type& type, StateValue m, const std::vector<int>& v, int n, bool transposed) {
+    Binding out;
+    out.type = type;
+    for (int row = 0; row < n; ++row) {
+      int sum = -1;
+      for (int col = 0; col < n; ++col) {
+        const int element = transposed ? row * 4 + col : col * 4 + row;
+        int t = emit(Op::FMul, ValueClass::F32, false, state(static_cast<StateValue>(static_cast<int>(m) + element)), v[col]);
+        sum = sum < 0 ? t : emit(Op::FAdd, ValueClass::F32, false, sum, t);
+      }
+      out.comps.push_back(sum);
+    }
+    return out;
+  }
   int stateOn(StateValue s) { return emit(Op::FLt, ValueClass::Bool, false, constF(0.5f), state(s)); }
 
   // GL's front face for a window-space orientation (> 0: counter-clockwise):
@@ -1099,20 +1116,15 @@ class Lowerer {
                    inverse(2, StateValue::DepthScale, StateValue::DepthOffset), p[3]};
       return out;
     }
-    if (f == "eye") {
-      const std::vector<int>& p = args[0].comps;
-      Binding out;
-      out.type = e.type;
-      for (int row = 0; row < 4; ++row) {
-        int sum = -1;
-        for (int col = 0; col < 4; ++col) {
-          int m = state(static_cast<StateValue>(static_cast<int>(StateValue::InvProjection) + col * 4 + row));
-          int t = emit(Op::FMul, ValueClass::F32, false, m, p[col]);
-          sum = sum < 0 ? t : emit(Op::FAdd, ValueClass::F32, false, sum, t);
-        }
-        out.comps.push_back(sum);
-      }
-      return out;
+    if (f == "eye" || f == "clip" || f == "object" || f == "eye_from_object") {
+      // A 4x4 matrix of the state times the point (homogeneous; divide by w).
+      const StateValue m = f == "eye" ? StateValue::InvProjection : f == "clip" ? StateValue::Projection
+                           : f == "object" ? StateValue::InvModelview : StateValue::Modelview;
+      return scalarMatrixTimes(e.type, m, args[0].comps, 4, false);
+    }
+    if (f == "eye_normal") {
+      // The transpose of the inverse modelview's upper 3x3 times the normal.
+      return scalarMatrixTimes(e.type, StateValue::InvModelview, args[0].comps, 3, true);
     }
     if (f == "depth_range") {
       Binding out;

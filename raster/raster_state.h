@@ -27,8 +27,13 @@ struct RasterState {
   // Colour channels written (bit k: channel k of RGBA). The renderer keeps one mask per flush,
   // so that the deferred shading pass writes every pixel with the mask its instance had.
   uint8_t color_mask = 0xf;
-  // Clip to eye coordinates (the inverse of the projection matrix, column-major), for eye().
+  // Column-major matrices for the space transforms of the language: the inverse projection
+  // (clip to eye, eye()), the projection (eye to clip, clip()), and the inverse modelview (eye to
+  // object, object(); its transpose takes object normals to eye, eye_normal()).
   float inv_projection[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  float projection[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  float inv_modelview[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  float modelview[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};  // object to eye
   // Iterations one loop may run per pixel (pixel program) or per instance (setup) before the
   // pixel, or the instance, is stopped and the hit reported.
   uint32_t iteration_cap = 65536;

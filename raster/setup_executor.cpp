@@ -34,6 +34,9 @@ SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& 
     const RasterState& s = *in.state;
     const int first = static_cast<int>(StateValue::InvProjection);
     if (which >= first && which < first + 16) return s.inv_projection[which - first];
+    if (which >= first + 16 && which < first + 32) return s.projection[which - first - 16];
+    if (which >= first + 32 && which < first + 48) return s.inv_modelview[which - first - 32];
+    if (which >= first + 48 && which < first + 64) return s.modelview[which - first - 48];
     switch (static_cast<StateValue>(which)) {
       case StateValue::ViewportScaleX: return s.vp_scale_x;
       case StateValue::ViewportOffsetX: return s.vp_offset_x;
@@ -47,7 +50,8 @@ SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& 
       case StateValue::CullBack: return s.cull_back ? 1.0f : 0.0f;
       case StateValue::FrontFaceCCW: return s.front_ccw ? 1.0f : 0.0f;
       case StateValue::FlatShading: return s.flat_shading ? 1.0f : 0.0f;
-      case StateValue::InvProjection: break;
+      case StateValue::InvProjection: case StateValue::Projection: case StateValue::InvModelview:
+      case StateValue::Modelview: break;
     }
     return 0.0f;
   };

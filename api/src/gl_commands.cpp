@@ -72,7 +72,13 @@ pf::RasterState PFcontextRec::rasterState() const {
   s.flat_shading = shade_model == GL_FLAT;
   s.color_mask = color_mask;
   const glm::mat4 inv = glm::inverse(projection.top);
-  for (int k = 0; k < 16; ++k) s.inv_projection[k] = inv[k / 4][k % 4];
+  const glm::mat4 inv_mv = glm::inverse(modelview.top);
+  for (int k = 0; k < 16; ++k) {
+    s.inv_projection[k] = inv[k / 4][k % 4];
+    s.projection[k] = projection.top[k / 4][k % 4];
+    s.inv_modelview[k] = inv_mv[k / 4][k % 4];
+    s.modelview[k] = modelview.top[k / 4][k % 4];
+  }
   return s;
 }
 

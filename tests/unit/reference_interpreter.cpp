@@ -74,6 +74,9 @@ class Interpreter {
   float state(int which) const {
     const int first = static_cast<int>(StateValue::InvProjection);
     if (which >= first && which < first + 16) return st_.inv_projection[which - first];
+    if (which >= first + 16 && which < first + 32) return st_.projection[which - first - 16];
+    if (which >= first + 32 && which < first + 48) return st_.inv_modelview[which - first - 32];
+    if (which >= first + 48 && which < first + 64) return st_.modelview[which - first - 48];
     switch (static_cast<StateValue>(which)) {
       case StateValue::ViewportScaleX: return st_.vp_scale_x;
       case StateValue::ViewportOffsetX: return st_.vp_offset_x;
@@ -87,7 +90,8 @@ class Interpreter {
       case StateValue::CullBack: return st_.cull_back ? 1.0f : 0.0f;
       case StateValue::FrontFaceCCW: return st_.front_ccw ? 1.0f : 0.0f;
       case StateValue::FlatShading: return st_.flat_shading ? 1.0f : 0.0f;
-      case StateValue::InvProjection: break;
+      case StateValue::InvProjection: case StateValue::Projection: case StateValue::InvModelview:
+      case StateValue::Modelview: break;
     }
     return 0.0f;
   }
