@@ -1,5 +1,5 @@
-// Example 2: the paper's figure 3. A primitive of our own, compiled at run time, takes a centre
-// and a radius bound per sequence point, so one glBegin / glEnd draws many spheres:
+// Example 2: the paper's figure 3. The built-in `sphere` primitive takes a centre and a radius
+// bound per sequence point, so one glBegin / glEnd draws many spheres:
 //
 //   glBegin(my_sphere_primitive);
 //   glRastParamfEXT(radius_name, radius_value);
@@ -7,8 +7,8 @@
 //   glSequencePointEXT();
 //   glEnd();
 //
-// The sphere here is deliberately minimal (its radius is in window pixels, its shading a fixed
-// light): the [shapes] primitives bring the real one. Writes sphere_sequence_points.png.
+// Each sphere is exact (ray-cast per pixel, no tessellation) and lit per pixel by GL's lighting.
+// Writes sphere_sequence_points.png.
 #include <primflow/gl.h>
 
 #include <cmath>
@@ -18,41 +18,6 @@
 
 #include "png_image.h"
 
-namespace {
-
-const char* kSphere = R"(
-// A sphere seen from far away: a disk of `radius` pixels around the centre's window position,
-// shaded as a hemisphere facing the viewer and lit from the upper left, with its depth.
-primitive my_sphere(point center[1]; float radius[1]; interpolator_data interp_data[1];
-                    varying float X, Y; inout varying float Z)
-{
-    point c = screen(center[0]);
-    if (c.w <= 0) return;
-    float cx = c.x / c.w;
-    float cy = c.y / c.w;
-    float r = radius[0];
-    bound(cx - r, cy - r, cx + r, cy + r);
-    float dx = (X - cx) / r;
-    float dy = (Y - cy) / r;
-    float d2 = dx * dx + dy * dy;
-    if (d2 >= 1) return;
-    float nz = sqrt(1 - d2);
-    float z = c.z / c.w - nz * 0.02;
-    if (!ztest(z)) return;
-    Z = z;
-    float light = 0.25 + 0.75 * max(dot(vector(dx, dy, nz), normalize(vector(-0.4, 0.5, 0.77))), 0.0);
-    interpolation {
-    perspective_linear:
-    linear:
-        interpolator_return(interp_data[0] * light);
-    default:
-        interpolator_return;
-    }
-}
-)";
-
-}  // namespace
-
 int main(int argc, char** argv) {
   const std::string out = argc > 1 ? argv[1] : "sphere_sequence_points.png";
   const int w = 320, h = 240;
@@ -60,19 +25,22 @@ int main(int argc, char** argv) {
   PFcontext ctx = pfCreateContext(GL_RGBA, 24);
   if (!ctx || !pfMakeCurrent(ctx, pixels.data(), GL_UNSIGNED_BYTE, w, h)) return 1;
 
-  if (pfglCompilePrimitivesEXT(kSphere) == 0) {
-    char log[2048];
-    pfglGetCompileLogEXT(0, sizeof log, nullptr, log);
-    std::fprintf(stderr, "%s", log);
-    return 1;
-  }
-  const GLenum my_sphere_primitive = pfglGetPrimitiveEXT("my_sphere");
+  const GLenum my_sphere_primitive = pfglGetPrimitiveEXT("sphere");
   const GLuint center_name = pfglGetParamNameEXT("center");
   const GLuint radius_name = pfglGetParamNameEXT("radius");
 
   pfglClearColor(0.05f, 0.05f, 0.08f, 1.0f);
   pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   pfglEnable(GL_DEPTH_TEST);
+  // GL lighting: a key light up left; the colour is the material (GL_COLOR_MATERIAL).
+  const GLfloat key[4] = {-1.0f, 1.5f, 2.0f, 0.0f};
+  const GLfloat specular[4] = {0.5f, 0.5f, 0.5f, 1.0f};
+  pfglLightfv(GL_LIGHT0, GL_POSITION, key);
+  pfglEnable(GL_LIGHT0);
+  pfglMaterialfv(GL_FRONT, GL_SPECULAR, specular);
+  pfglMaterialf(GL_FRONT, GL_SHININESS, 40.0f);
+  pfglEnable(GL_COLOR_MATERIAL);
+  pfglEnable(GL_LIGHTING);
   pfglMatrixMode(GL_PROJECTION);
   pfglFrustum(-0.4, 0.4, -0.3, 0.3, 1.0, 50.0);
   pfglMatrixMode(GL_MODELVIEW);
@@ -83,7 +51,7 @@ int main(int argc, char** argv) {
     const float t = 0.45f * static_cast<float>(i);
     const float depth = -3.0f - 0.5f * static_cast<float>(i);
     pfglColor3f(0.5f + 0.5f * std::cos(t), 0.5f + 0.5f * std::sin(t), 0.9f);
-    pfglRastParamfEXT(radius_name, 40.0f * 3.0f / -depth);
+    pfglRastParamfEXT(radius_name, 0.18f);
     pfglRastParam3fEXT(center_name, 1.2f * std::cos(t), 0.9f * std::sin(t), depth);
     pfglSequencePointEXT();
   }
