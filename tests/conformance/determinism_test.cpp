@@ -35,3 +35,17 @@ INSTANTIATE_TEST_SUITE_P(Cases, Determinism, ::testing::ValuesIn(caseNames()),
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
 }  // namespace
+
+// Vertex arrays draw what immediate mode draws: the ID mesh through glDrawElements (case
+// vertex_arrays, below its strip) is byte-identical to the same mesh in glBegin / glVertex
+// (case mesh_ids).
+TEST(VertexArrays, DrawExactlyLikeImmediateMode) {
+  pfconf::Rendering arrays = pfconf::renderPrimflow("vertex_arrays", 256, 256, 1);
+  pfconf::Rendering immediate = pfconf::renderPrimflow("mesh_ids", 256, 256, 1);
+  ASSERT_TRUE(arrays.image.ok && immediate.image.ok);
+  size_t differing = 0, drawn = 0;
+  for (size_t i = 0; i < size_t(256) * 236 * 4; ++i) differing += arrays.image.rgba[i] != immediate.image.rgba[i];
+  for (size_t i = 0; i < size_t(256) * 236; ++i) drawn += immediate.image.rgba[i * 4] != pfconf::kClear[0];
+  EXPECT_EQ(differing, 0u);
+  EXPECT_GT(drawn, 40000u);
+}
