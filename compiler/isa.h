@@ -128,6 +128,7 @@ struct SetupProgram : Bytecode {
 struct PixelProgram : Bytecode {
   uint32_t num_uniform_slots = 0;
   uint32_t num_interp_uniform_slots = 0;
+  bool reads_surface = false;  // reads the built-in P or N registers (else they are not set up)
 };
 
 // Readable listing, used by `pfc --emit=setup|pixel` and tests.

@@ -140,11 +140,14 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const uint32_t* r
   std::fill(staging_.begin(), staging_.begin() + staging_words, 0u);
 
   uint32_t* R = regs_.data();
-  // Built-ins: X, Y at pixel centres; Z from the depth buffer; P given, or (0, 0, 0, 1); N 0.
-  for (int k = 0; k < 4; ++k)
-    for (int i = 0; i < kLanes; ++i)
-      R[(kRegP + k) * kLanes + i] = p_in ? p_in[k * kLanes + i] : (k == 3 ? fromF(1.0f) : 0u);
-  std::fill_n(R + static_cast<size_t>(kRegN) * kLanes, 3 * kLanes, 0u);
+  // Built-ins: X, Y at pixel centres; Z from the depth buffer; P given, or (0, 0, 0, 1), and N 0
+  // (only for programs that read them: a block's set-up is part of every block's cost).
+  if (p.reads_surface || p_in) {
+    for (int k = 0; k < 4; ++k)
+      for (int i = 0; i < kLanes; ++i)
+        R[(kRegP + k) * kLanes + i] = p_in ? p_in[k * kLanes + i] : (k == 3 ? fromF(1.0f) : 0u);
+    std::fill_n(R + static_cast<size_t>(kRegN) * kLanes, 3 * kLanes, 0u);
+  }
   for (int i = 0; i < kLanes; ++i) {
     R[kRegX * kLanes + i] = fromF(static_cast<float>(bx + (i % kBlockSize)) + 0.5f);
     R[kRegY * kLanes + i] = fromF(static_cast<float>(by + (i / kBlockSize)) + 0.5f);
