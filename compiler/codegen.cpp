@@ -8,12 +8,6 @@
 namespace pf {
 namespace {
 
-// Instructions whose operands are interpolator_data registers (a separate register file).
-bool isInterpOperand(Op op) {
-  return op == Op::XAdd || op == Op::XSub || op == Op::XNeg || op == Op::XMulF || op == Op::XDivF ||
-         op == Op::XMov || op == Op::XSel || op == Op::InterpReturn;
-}
-
 // The effects of calling another primitive: setup's, in program order.
 // (and facing(), setup's too: the instance's facing is uniform).
 bool isCallEffect(Op op) {
@@ -46,11 +40,6 @@ class Generator {
     for (auto& [value, slot] : scalar_slots_) result_.setup.scalar_exports[slot] = setupOperand(value);
     result_.setup.interp_exports.resize(interp_slots_.size());
     for (auto& [value, slot] : interp_slots_) result_.setup.interp_exports[slot] = operandIndex(setupOperand(value));
-    for (const Instr& in : pixel_.code)
-      for (uint32_t o : {in.a, in.b, in.c, in.d})
-        if (o != kNoOperand && operandKind(o) == OperandKind::Reg && operandIndex(o) >= kRegP &&
-            operandIndex(o) < kFirstFreePixelReg && !isInterpOperand(in.op))
-          pixel_.reads_surface = true;
     pixel_.num_uniform_slots = static_cast<uint32_t>(scalar_slots_.size());
     pixel_.num_interp_uniform_slots = static_cast<uint32_t>(interp_slots_.size());
     result_.pixel = std::move(pixel_);
@@ -177,7 +166,10 @@ class Generator {
     const Value& x = val(v);
     if (x.origin == Value::Origin::Const)
       return makeOperand(OperandKind::Const, constIndex(pixel_consts_, pixel_, v, x.bits));
-    if (x.origin == Value::Origin::Builtin) return makeOperand(OperandKind::Reg, static_cast<uint32_t>(x.index));
+    if (x.origin == Value::Origin::Builtin) {
+      if (x.index >= static_cast<int>(kRegP)) pixel_.reads_surface = true;  // P or N
+      return makeOperand(OperandKind::Reg, static_cast<uint32_t>(x.index));
+    }
     if (!x.varying && !pixel_uniform_.count(v)) {
       auto& slots = x.cls == ValueClass::Interp ? interp_slots_ : scalar_slots_;
       auto it = slots.find(v);

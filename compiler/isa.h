@@ -101,6 +101,8 @@ struct Instr {
   // different masks), so only the active lanes may change. Every other value is written once,
   // and its lanes outside the mask are never read (a retired or masked-off lane never reads a
   // value defined while it was off): those instructions write all lanes, without a blend.
+  // This rests on the IR's discipline -- a value read under a wider mask than its definition's
+  // goes through a merge copy -- which any future hoisting or cross-scope CSE must keep.
   bool masked_write = false;
 };
 

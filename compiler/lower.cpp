@@ -104,6 +104,7 @@ class Lowerer {
     }
     f_.sequence_points = sized ? 0 : seq > 0 ? seq : 1;
     blocks_.push_back(&f_.body);
+    zero_interp_ = emit(Op::XLoadVertexAt, ValueClass::Interp, false, constI(-1));
     // The fixed part of the parameter block first, then (per instance) the parameter-sized arrays.
     std::vector<std::pair<const Param*, int>> later;  // parameter-sized, and their binding
     for (const Param& p : u.params) {
@@ -254,16 +255,10 @@ class Lowerer {
 
   // Zero of the class of value v (interpolator_data: zero in every channel).
   int zeroLike(int v) { return cls(v) == ValueClass::Interp ? zeroInterp() : constant(cls(v), 0); }
-  int zeroInterp() {
-    // Loaded once at entry (sequence point -1 reads zeros), so setup computes it for every use.
-    if (zero_interp_ < 0) {
-      IrNode n;
-      zero_interp_ = newValue(Value{ValueClass::Interp});
-      n.inst = IrInst{Op::XLoadVertexAt, zero_interp_, constI(-1), -1, -1, -1, 0, cur_loc_};
-      f_.body.insert(f_.body.begin(), std::move(n));
-    }
-    return zero_interp_;
-  }
+  // Loaded once at entry (sequence point -1 reads zeros), so setup computes it for every use;
+  // dead-code removal drops it where nothing uses it. (Emitted before any statement: a node
+  // inserted later at the front would upset a loop's rollback, which truncates its block.)
+  int zeroInterp() const { return zero_interp_; }
 
   // Element `index` of a parameter-sized array: loads from the instance's parameters, which sit
   // after the fixed part at F + count * offset + index * components (CompiledPrimitive::paramOffset).

@@ -1,12 +1,20 @@
 // Every size and limit of the rasterizer in one place (as llvmpipe's lp_limits.h).
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
+
 namespace pf {
 
 constexpr int kTileSize = 64;          // screen tiles: the unit of binning and of threading
 constexpr int kBlockSize = 8;          // pixel blocks: the unit of SIMD execution
 constexpr int kLanes = kBlockSize * kBlockSize;  // lanes of a wide register
 constexpr int kMaxFramebufferSize = 8192;
+// Instances one submission may make by calling primitives (a strip of 2M triangles fits);
+// past it the calls are dropped and reported as a runaway (GL_TOO_MANY_ITERATIONS_EXT).
+constexpr uint64_t kMaxCallsPerSubmission = 1u << 21;
+// Uniform-record words a scene holds before a submission flushes it (offsets are 32-bit).
+constexpr size_t kMaxRecordWords = size_t(1) << 30;
 constexpr int kMaxChannels = 64;       // per-vertex shading-parameter floats per instance
 constexpr int kMaxMaskDepth = 64;      // nesting of ifs and loops in a program
 constexpr unsigned kDefaultIterationCap = 65536;  // per pixel and loop; per context settable

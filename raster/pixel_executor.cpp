@@ -4,7 +4,8 @@
 // evalScalar (scalar_ops.h) instantiated for the instruction and for which operands are wide
 // (one value per lane) or scalar (uniform / constant). With the operation and the operand
 // shapes fixed at compile time, GCC vectorizes these loops (checked in the disassembly,
-// see docs/architecture.md). Writes under a partial mask go through a blend.
+// see docs/architecture.md). A merge value written under a partial mask goes through a blend;
+// every other value writes all lanes (Instr::masked_write).
 #include "raster/pixel_executor.h"
 
 #include <array>
@@ -123,6 +124,11 @@ void PixelExecutor::runSharedInterpolators(const ChannelLayout& layout, const Ra
     }
     counters.instructions += sub.counters.instructions;
     sub.counters.instructions = 0;
+    if (sub.counters.iteration_cap_lanes) {  // a runaway interpolator: reported like a primitive
+      counters.iteration_cap_lanes += sub.counters.iteration_cap_lanes;
+      counters.cap_primitive = sub.counters.cap_primitive;
+      sub.counters.iteration_cap_lanes = 0;
+    }
   }
 }
 
@@ -363,7 +369,12 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const uint32_t* r
         std::fill(d, d + kLanes, layout.hasKinds(ins.imm) ? 1u : 0u);
         continue;
       }
-      case Op::LoadState: case Op::XLoadVertex: case Op::Bound: case Op::Kill: case Op::OpCount:
+      case Op::LoadState: {  // uniform; here inside a loop that runs per pixel
+        uint32_t* d = R + static_cast<size_t>(operandIndex(ins.dst)) * kLanes;
+        std::fill(d, d + kLanes, fromF(stateValue(state, ins.imm)));
+        continue;
+      }
+      case Op::XLoadVertex: case Op::Bound: case Op::Kill: case Op::OpCount:
       case Op::LoadParamAt: case Op::XLoadVertexAt: case Op::OutParam: case Op::OutVertex: case Op::Emit:
       case Op::BackFacing:
         continue;  // setup-only instructions never reach a pixel program

@@ -41,6 +41,9 @@ struct RasterState {
   bool operator==(const RasterState&) const = default;
 };
 
+// The state value `which` (compiler/isa.h: StateValue) of `s`, as LoadState reads it.
+float stateValue(const RasterState& s, uint16_t which);
+
 // How an instance's per-vertex shading parameters are laid out: `count` channels (floats),
 // ordered by interpolation kind (each kind one range), each mapped to a G-buffer slot.
 struct ChannelLayout {

@@ -57,6 +57,7 @@ bool Renderer::submit(const CompiledPrimitive& prim, const uint32_t* params, con
   if (!color_) return false;
   // The shading pass writes with one colour mask: instances with another wait for a flush.
   if (!scene_.instances.empty() && scene_.color_mask != state.color_mask) flush();
+  if (scene_.records.size() > kMaxRecordWords) flush();  // offsets into the records are 32-bit
   scene_.color_mask = state.color_mask;
   // Shared state: appended only when it changes.
   if (scene_.states.empty() || !(scene_.states.back() == state)) scene_.states.push_back(state);
@@ -69,13 +70,13 @@ bool Renderer::submit(const CompiledPrimitive& prim, const uint32_t* params, con
     lit_shade.surface_slot = layout.surface_slot;
     lit_shade.lighting = static_cast<int>(scene_.lightings.size()) - 1;
   }
-  const ShadeState& the_shade = per_pixel_lighting && layout.surface_slot >= 0 ? lit_shade : shade;
-  if (scene_.shades.empty() || !(scene_.shades[scene_.current_shade] == the_shade)) {
+  const ShadeState& instance_shade = per_pixel_lighting && layout.surface_slot >= 0 ? lit_shade : shade;
+  if (scene_.shades.empty() || !(scene_.shades[scene_.current_shade] == instance_shade)) {
     scene_.current_shade = static_cast<uint32_t>(scene_.shades.size());
-    scene_.shades.push_back(the_shade);
-    if (the_shade.back_color_slot >= 0) {  // its back variant follows it
-      ShadeState back = the_shade;
-      back.color_slot = the_shade.back_color_slot;
+    scene_.shades.push_back(instance_shade);
+    if (instance_shade.back_color_slot >= 0) {  // its back variant follows it
+      ShadeState back = instance_shade;
+      back.color_slot = instance_shade.back_color_slot;
       back.back_color_slot = -1;
       scene_.shades.push_back(back);
     }
@@ -84,6 +85,7 @@ bool Renderer::submit(const CompiledPrimitive& prim, const uint32_t* params, con
     flush();
     return submit(prim, params, vertex_channels, layout, state, shade, sequence_points, shared_params, per_pixel_lighting);
   }
+  calls_this_submission_ = 0;
   // The shared interpolators' uniforms: their setup programs, once for the whole submission.
   shared_offset_ = kNoShared;
   if (!layout.shared.empty() && shared_params) {
@@ -105,6 +107,14 @@ bool Renderer::submit(const CompiledPrimitive& prim, const uint32_t* params, con
 
 void Renderer::submitCall(const CompiledPrimitive& callee, const uint32_t* params, const float* vertex_channels,
                           int depth) {
+  // Calls inside setup loops multiply: past the budget, the rest of the submission's calls are
+  // dropped and reported like a runaway loop (never a hang, never memory without end).
+  if (++calls_this_submission_ > kMaxCallsPerSubmission || scene_.records.size() > kMaxRecordWords) {
+    ++stats_.iteration_cap_instances;
+    ++cap_report_.instances;
+    cap_report_.primitive = callee.name;
+    return;
+  }
   if (depth <= kMaxPrimitiveCallDepth) submitAt(callee, params, vertex_channels, callee.sequence_points, depth);
 }
 

@@ -102,6 +102,7 @@ class Renderer : private SubInstanceSink {
   SetupExecutor setups_[kMaxPrimitiveCallDepth + 1];
   std::vector<uint32_t> record_scratch_[kMaxPrimitiveCallDepth + 1];
   uint32_t shared_offset_ = kNoShared;  // the shared records of the submission in progress
+  uint64_t calls_this_submission_ = 0;  // instances its primitive calls made (submitCall)
   std::vector<std::unique_ptr<WorkerScratch>> scratch_;
   uint8_t* color_ = nullptr;
   float* depth_ = nullptr;

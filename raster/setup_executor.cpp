@@ -30,31 +30,7 @@ SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& 
   auto read = [&](uint32_t o) -> uint32_t { return U[base[o >> 30] + operandIndex(o)]; };
   auto rf = [&](uint32_t o) { return std::bit_cast<float>(read(o)); };
   auto xreg = [&](uint32_t o) { return interp_.data() + static_cast<size_t>(operandIndex(o)) * nch; };
-  auto state = [&](uint16_t which) -> float {
-    const RasterState& s = *in.state;
-    const int first = static_cast<int>(StateValue::InvProjection);
-    if (which >= first && which < first + 16) return s.inv_projection[which - first];
-    if (which >= first + 16 && which < first + 32) return s.projection[which - first - 16];
-    if (which >= first + 32 && which < first + 48) return s.inv_modelview[which - first - 32];
-    if (which >= first + 48 && which < first + 64) return s.modelview[which - first - 48];
-    switch (static_cast<StateValue>(which)) {
-      case StateValue::ViewportScaleX: return s.vp_scale_x;
-      case StateValue::ViewportOffsetX: return s.vp_offset_x;
-      case StateValue::ViewportScaleY: return s.vp_scale_y;
-      case StateValue::ViewportOffsetY: return s.vp_offset_y;
-      case StateValue::DepthScale: return s.depth_scale;
-      case StateValue::DepthOffset: return s.depth_offset;
-      case StateValue::DepthNear: return s.depth_near;
-      case StateValue::DepthFar: return s.depth_far;
-      case StateValue::CullFront: return s.cull_front ? 1.0f : 0.0f;
-      case StateValue::CullBack: return s.cull_back ? 1.0f : 0.0f;
-      case StateValue::FrontFaceCCW: return s.front_ccw ? 1.0f : 0.0f;
-      case StateValue::FlatShading: return s.flat_shading ? 1.0f : 0.0f;
-      case StateValue::InvProjection: case StateValue::Projection: case StateValue::InvModelview:
-      case StateValue::Modelview: break;
-    }
-    return 0.0f;
-  };
+  auto state = [&](uint16_t which) { return stateValue(*in.state, which); };
   // Channel ranges of the kinds in `set`, as [begin, end) pairs.
   auto forChannels = [&](uint16_t set, auto&& fn) {
     for (int k = 0; k < kInterpKindCount; ++k)
@@ -62,6 +38,9 @@ SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& 
         for (int c = in.layout->kind_begin[k]; c < in.layout->kind_end[k]; ++c) fn(c);
   };
 
+  // A loop may run as often as the cap -- or, over a parameter-sized array, once per sequence
+  // point (a strip of 100k vertices is no runaway).
+  const uint64_t cap = std::max<uint64_t>(in.state->iteration_cap, static_cast<uint64_t>(in.sequence_points) + 1);
   uint32_t loop_counters[kMaxMaskDepth];
   int loop_depth = 0;
 
@@ -84,7 +63,7 @@ SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& 
         loop_counters[loop_depth++] = 0;
         continue;
       case Op::LoopBack:
-        if (loop_depth > 0 && ++loop_counters[loop_depth - 1] >= in.state->iteration_cap) {
+        if (loop_depth > 0 && ++loop_counters[loop_depth - 1] >= cap) {
           out.killed = true;
           out.iteration_cap_hit = true;
           return out;

@@ -1,7 +1,9 @@
 // The GL-1.x state commands: errors, strings, synchronisation, clears, viewport, depth state,
 // enables. (Matrices: matrix_commands.cpp; glBegin / glEnd and what comes between them:
 // immediate_mode.cpp.)
+#include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstdio>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -58,10 +60,14 @@ pf::RasterState PFcontextRec::rasterState() const {
   s.depth_offset = (depth_range[1] + depth_range[0]) * 0.5f;
   s.depth_near = depth_range[0];
   s.depth_far = depth_range[1];
+  // (In 64 bits, clamped: a viewport at INT_MAX must not overflow.)
+  auto end = [](int origin, int size) {
+    return static_cast<int>(std::clamp<int64_t>(int64_t{origin} + size, INT32_MIN, INT32_MAX));
+  };
   s.vp_x0 = viewport[0];
   s.vp_y0 = viewport[1];
-  s.vp_x1 = viewport[0] + viewport[2];
-  s.vp_y1 = viewport[1] + viewport[3];
+  s.vp_x1 = end(viewport[0], viewport[2]);
+  s.vp_y1 = end(viewport[1], viewport[3]);
   s.depth_test = depth_test && depth_bits > 0;
   s.depth_write = depth_write;
   s.depth_func = toDepthFunc(depth_func);
@@ -73,10 +79,13 @@ pf::RasterState PFcontextRec::rasterState() const {
   s.color_mask = color_mask;
   const glm::mat4 inv = glm::inverse(projection.top);
   const glm::mat4 inv_mv = glm::inverse(modelview.top);
+  // A singular matrix (glScalef(1, 1, 0), planar shadows) has no inverse: its inf and NaN become
+  // 0, so that states still compare equal and the primitives that need the inverse see zeros.
+  auto finite = [](float v) { return std::isfinite(v) ? v : 0.0f; };
   for (int k = 0; k < 16; ++k) {
-    s.inv_projection[k] = inv[k / 4][k % 4];
+    s.inv_projection[k] = finite(inv[k / 4][k % 4]);
     s.projection[k] = projection.top[k / 4][k % 4];
-    s.inv_modelview[k] = inv_mv[k / 4][k % 4];
+    s.inv_modelview[k] = finite(inv_mv[k / 4][k % 4]);
     s.modelview[k] = modelview.top[k / 4][k % 4];
   }
   return s;

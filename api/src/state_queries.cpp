@@ -113,6 +113,7 @@ const Query* lookup(GLenum pname, Query& q) {
 }
 
 GLint toInt(double v, bool normalized) {
+  if (v != v) return 0;  // NaN
   double r = normalized ? std::nearbyint(v * 2147483647.0) : std::nearbyint(v);
   return static_cast<GLint>(std::clamp(r, -2147483648.0, 2147483647.0));
 }

@@ -148,7 +148,8 @@ void pfglDrawArrays(GLenum mode, GLint first, GLsizei count) {
     return;
   }
   pfglBegin(mode);
-  for (GLsizei i = 0; i < count; ++i) arrayElement(*ctx, first + i);
+  // (first + i in 64 bits: the last index a GLint can name is the last one drawn.)
+  for (int64_t i = first; i < int64_t{first} + count && i <= INT32_MAX; ++i) arrayElement(*ctx, static_cast<GLint>(i));
   pfglEnd();
 }
 

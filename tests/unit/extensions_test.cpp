@@ -165,3 +165,33 @@ TEST(Extensions, UserPrimitiveCallingTrianglesDrawsLikeGlTriangles) {
   EXPECT_EQ(c.px, want) << "the built-in GL_TRIANGLE_FAN";
   EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
 }
+
+// Calls inside setup loops multiply; past the budget of instances one submission may make, the
+// rest are dropped and reported like a runaway loop -- promptly, not after 2^32 instances.
+TEST(Extensions, ExplodingPrimitiveCallsAreCutAndReported) {
+  Ctx c;
+  ASSERT_NE(pfglCompilePrimitivesEXT(
+                "primitive dot(point vertex[1]; inout varying float Z) { bound(-9.0, -9.0, -8.0, -8.0); Z = 0.5; }\n"
+                "primitive many(point vertex[1]) { for (int i = 0; i < 60000; i += 1) dot(vertex); }\n"
+                "primitive more(point vertex[1]) { for (int i = 0; i < 60000; i += 1) many(vertex); }\n"),
+            0u);
+  pfglBegin(pfglGetPrimitiveEXT("more"));
+  pfglVertex2f(0.5f, 0.5f);
+  pfglEnd();
+  pfglFinish();
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_TOO_MANY_ITERATIONS_EXT));
+}
+
+// A loop over a parameter-sized array runs once per sequence point, whatever the cap: a strip
+// longer than the iteration cap is drawn whole, without an error.
+TEST(Extensions, LongStripsAreNoRunaway) {
+  Ctx c(50);  // iteration cap 50
+  pfglClearColor(0, 0, 0, 0);
+  pfglClear(GL_COLOR_BUFFER_BIT);
+  pfglBegin(GL_TRIANGLE_STRIP);
+  for (int i = 0; i < 200; ++i) pfglVertex2f(static_cast<float>(i) * 0.08f, i % 2 ? 16.0f : 0.0f);
+  pfglEnd();
+  pfglFinish();
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  EXPECT_NE(c.px[(8 * 16 + 15) * 4 + 3], 0) << "the strip's far end (past 50 triangles) is drawn";
+}

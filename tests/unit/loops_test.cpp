@@ -222,3 +222,24 @@ TEST(Loops, UniformBreakInALoopWithPerPixelWork) {
     }
   }
 }
+
+// State read inside a loop that runs per pixel (here screen(), a LoadState of the viewport) is
+// computed by the pixel program itself, with the instance's state.
+TEST(Loops, StateReadInsideAPerPixelLoop) {
+  auto c = compile(
+      "primitive p(point vertex[1]; inout varying float Z) {\n"
+      "  float acc = 0.0;\n"
+      "  for (float t = 0.0; t < X; t += 1.0) {\n"
+      "    point s = screen(vertex[0]);\n"
+      "    acc += s.x;\n"
+      "  }\n"
+      "  Z = acc * 0.01;\n"
+      "}\n");
+  ASSERT_TRUE(c.ok) << c.diagnostics;
+  // vertex (0.5, 0, 0, 1): window x = 0.5 * 4 + 4 = 6 with runBlock's viewport.
+  BlockRun r = runBlock(*c.find("p"), {0.5f, 0.0f, 0.0f, 1.0f}, {}, 0);
+  for (int i = 0; i < 64; ++i) {
+    const int iterations = i % 8 + 1;  // t = 0, 1, ... while t < X = i % 8 + 0.5
+    EXPECT_FLOAT_EQ(r.depth[i], static_cast<float>(iterations) * 6.0f * 0.01f) << "lane " << i;
+  }
+}

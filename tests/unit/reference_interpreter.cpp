@@ -71,30 +71,7 @@ class Interpreter {
       if (set & (1 << k))
         for (int c = layout_.kind_begin[k]; c < layout_.kind_end[k]; ++c) fn(c);
   }
-  float state(int which) const {
-    const int first = static_cast<int>(StateValue::InvProjection);
-    if (which >= first && which < first + 16) return st_.inv_projection[which - first];
-    if (which >= first + 16 && which < first + 32) return st_.projection[which - first - 16];
-    if (which >= first + 32 && which < first + 48) return st_.inv_modelview[which - first - 32];
-    if (which >= first + 48 && which < first + 64) return st_.modelview[which - first - 48];
-    switch (static_cast<StateValue>(which)) {
-      case StateValue::ViewportScaleX: return st_.vp_scale_x;
-      case StateValue::ViewportOffsetX: return st_.vp_offset_x;
-      case StateValue::ViewportScaleY: return st_.vp_scale_y;
-      case StateValue::ViewportOffsetY: return st_.vp_offset_y;
-      case StateValue::DepthScale: return st_.depth_scale;
-      case StateValue::DepthOffset: return st_.depth_offset;
-      case StateValue::DepthNear: return st_.depth_near;
-      case StateValue::DepthFar: return st_.depth_far;
-      case StateValue::CullFront: return st_.cull_front ? 1.0f : 0.0f;
-      case StateValue::CullBack: return st_.cull_back ? 1.0f : 0.0f;
-      case StateValue::FrontFaceCCW: return st_.front_ccw ? 1.0f : 0.0f;
-      case StateValue::FlatShading: return st_.flat_shading ? 1.0f : 0.0f;
-      case StateValue::InvProjection: case StateValue::Projection: case StateValue::InvModelview:
-      case StateValue::Modelview: break;
-    }
-    return 0.0f;
-  }
+  float state(int which) const { return stateValue(st_, static_cast<uint16_t>(which)); }
   bool depthPasses(float z) const {
     if (!st_.depth_test) return true;
     switch (st_.depth_func) {

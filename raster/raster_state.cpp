@@ -1,0 +1,31 @@
+// The values of the GL state that programs read (compiler/isa.h: LoadState's StateValue).
+#include "raster/raster_state.h"
+
+#include "compiler/isa.h"
+
+namespace pf {
+
+float stateValue(const RasterState& s, uint16_t which) {
+  const int first = static_cast<int>(StateValue::InvProjection);
+  if (which >= first && which < first + 16) return s.inv_projection[which - first];
+  if (which >= first + 16 && which < first + 32) return s.projection[which - first - 16];
+  if (which >= first + 32 && which < first + 48) return s.inv_modelview[which - first - 32];
+  if (which >= first + 48 && which < first + 64) return s.modelview[which - first - 48];
+  switch (static_cast<StateValue>(which)) {
+    case StateValue::ViewportScaleX: return s.vp_scale_x;
+    case StateValue::ViewportOffsetX: return s.vp_offset_x;
+    case StateValue::ViewportScaleY: return s.vp_scale_y;
+    case StateValue::ViewportOffsetY: return s.vp_offset_y;
+    case StateValue::DepthScale: return s.depth_scale;
+    case StateValue::DepthOffset: return s.depth_offset;
+    case StateValue::DepthNear: return s.depth_near;
+    case StateValue::DepthFar: return s.depth_far;
+    case StateValue::CullFront: return s.cull_front ? 1.0f : 0.0f;
+    case StateValue::CullBack: return s.cull_back ? 1.0f : 0.0f;
+    case StateValue::FrontFaceCCW: return s.front_ccw ? 1.0f : 0.0f;
+    case StateValue::FlatShading: return s.flat_shading ? 1.0f : 0.0f;
+    default: return 0.0f;
+  }
+}
+
+}  // namespace pf
