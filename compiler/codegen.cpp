@@ -47,6 +47,10 @@ class Generator {
     result_.setup.constants = std::move(setup_.constants);
     result_.setup.num_regs = setup_.num_regs;
     result_.setup.num_interp_regs = setup_.num_interp_regs;
+    if (max_nesting_ > kMaxProgramNesting)
+      result_.errors.push_back({deepest_, "loops and varying ifs nest " + std::to_string(max_nesting_) +
+                                              " deep here (inlined functions count as a loop each); at most " +
+                                              std::to_string(kMaxProgramNesting) + " fit"});
     return std::move(result_);
   }
 
@@ -76,6 +80,15 @@ class Generator {
   std::vector<JumpPatches*> setup_loops_;
   std::map<int, uint32_t> setup_regs_, pixel_regs_, setup_consts_, pixel_consts_;
   std::map<int, uint32_t> scalar_slots_, interp_slots_;
+  // Nesting of the frames the executors keep (setup loops; pixel loops and varying ifs).
+  int nesting_ = 0, max_nesting_ = 0;
+  SourceLoc deepest_;
+  void enter(const IrNode& n) {
+    if (++nesting_ > max_nesting_) {
+      max_nesting_ = nesting_;
+      deepest_ = n.inst.loc;
+    }
+  }
 
   const Value& val(int v) const { return f_.values[v]; }
   bool varying(int v) const { return v >= 0 && val(v).varying; }
@@ -223,6 +236,7 @@ class Generator {
         !setupWork(*n.step_block, varying_depth))
       return;
     auto here = [&] { return static_cast<uint32_t>(setup_.code.size()); };
+    enter(n);
     setup_.code.push_back(Instr{Op::LoopBegin});
     uint32_t top = here();
     emitSetup(*n.cond_block, varying_depth);
@@ -238,6 +252,7 @@ class Generator {
     setup_.code[exit_jump].a = here();
     for (size_t b : patches.breaks) setup_.code[b].a = here();
     setup_.code.push_back(Instr{Op::LoopEnd});
+    --nesting_;
   }
 
   void emitSetup(const IrBlock& b, int varying_depth) {
@@ -370,6 +385,7 @@ class Generator {
     if (!loopHasPixelWork(n, varying_depth)) return;
     int d = varying_depth + (n.varying_loop ? 1 : 0);
     auto here = [&] { return static_cast<uint32_t>(pixel_.code.size()); };
+    enter(n);
     pixel_.code.push_back(Instr{Op::LoopBegin});
     uint32_t top = here();
     emitPixel(*n.cond_block, d, true);
@@ -382,6 +398,7 @@ class Generator {
     pixel_.code.push_back(Instr{Op::LoopBack, 0, kNoOperand, top});
     pixel_.code[exit_jump].a = here();
     pixel_.code.push_back(Instr{Op::LoopEnd});
+    --nesting_;
   }
 
   void emitPixel(const IrBlock& b, int varying_depth, bool in_loop) {
@@ -415,6 +432,7 @@ class Generator {
           continue;
         }
         uint32_t cond = pixelOperand(n.cond);
+        enter(n);
         pixel_.code.push_back(Instr{Op::MaskIf, 0, kNoOperand, kNoOperand, cond});
         size_t j1 = pixel_.code.size();
         pixel_.code.push_back(Instr{Op::JmpIfNone, 0, kNoOperand, 0});
@@ -430,6 +448,7 @@ class Generator {
           pixel_.code[j1].a = here();
         }
         pixel_.code.push_back(Instr{Op::MaskEnd});
+        --nesting_;
         continue;
       }
       const IrInst& in = n.inst;

@@ -108,6 +108,9 @@ struct Instr {
 
 // How deep calls of primitives from primitives may nest (each level is an executor in setup).
 constexpr int kMaxPrimitiveCallDepth = 8;
+// How deep a program's loops and varying ifs may nest (the executors' frame stacks); deeper
+// source is a compile error.
+constexpr int kMaxProgramNesting = 64;
 
 // The registers of the pixel program that hold the built-ins before the first instruction:
 // X, Y, Z, P's 4 components (in a shared interpolator, the point its primitive set) and N's 3.

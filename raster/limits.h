@@ -4,6 +4,8 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "compiler/isa.h"
+
 namespace pf {
 
 constexpr int kTileSize = 64;          // screen tiles: the unit of binning and of threading
@@ -16,7 +18,7 @@ constexpr uint64_t kMaxCallsPerSubmission = 1u << 21;
 // Uniform-record words a scene holds before a submission flushes it (offsets are 32-bit).
 constexpr size_t kMaxRecordWords = size_t(1) << 30;
 constexpr int kMaxChannels = 64;       // per-vertex shading-parameter floats per instance
-constexpr int kMaxMaskDepth = 64;      // nesting of ifs and loops in a program
+constexpr int kMaxMaskDepth = kMaxProgramNesting;  // nesting of ifs and loops (compiler/isa.h)
 constexpr unsigned kDefaultIterationCap = 65536;  // per pixel and loop; per context settable
 
 }  // namespace pf

@@ -257,13 +257,13 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const uint32_t* r
       case Op::MaskIf: {
         bool w;
         const uint32_t* c = src(ins.b, w);
-        if (depth >= kMaxMaskDepth) return 0;  // the compiler bounds nesting; never reached
+        if (depth >= kMaxMaskDepth) return 0;  // codegen rejects deeper nesting; never reached
         stack[depth++] = {cur, laneMaskOf(c, w), false, 0};
         cur &= stack[depth - 1].cond;
         continue;
       }
       case Op::LoopBegin:
-        if (depth >= kMaxMaskDepth) return 0;  // the compiler bounds nesting; never reached
+        if (depth >= kMaxMaskDepth) return 0;  // codegen rejects deeper nesting; never reached
         stack[depth++] = {cur, 0, true, 0};
         continue;
       case Op::LoopTest: {

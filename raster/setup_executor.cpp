@@ -56,7 +56,7 @@ SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& 
         continue;
       case Op::Kill: out.killed = true; return out;
       case Op::LoopBegin:
-        if (loop_depth >= kMaxMaskDepth) {  // the compiler bounds nesting; never reached
+        if (loop_depth >= kMaxMaskDepth) {  // codegen rejects deeper nesting; never reached
           out.killed = true;
           return out;
         }

@@ -243,3 +243,20 @@ TEST(Loops, StateReadInsideAPerPixelLoop) {
     EXPECT_FLOAT_EQ(r.depth[i], static_cast<float>(iterations) * 6.0f * 0.01f) << "lane " << i;
   }
 }
+
+// Deeper nesting than the executors' frame stacks is a compile error, not a primitive that
+// silently draws nothing.
+TEST(Loops, NestingPastTheExecutorsStacksIsAnError) {
+  auto nested = [](int depth) {
+    std::string s = "primitive p(inout varying float Z) {\n  float z = 0.0;\n";
+    for (int i = 0; i < depth; ++i) s += "  if (X > " + std::to_string(i) + ".0) {\n";
+    s += "  z = 0.5;\n";
+    for (int i = 0; i < depth; ++i) s += "  }\n";
+    return s + "  Z = z;\n}\n";
+  };
+  auto ok = compile(nested(60));
+  EXPECT_TRUE(ok.ok) << ok.diagnostics;
+  auto deep = compile(nested(70));
+  EXPECT_FALSE(deep.ok);
+  EXPECT_NE(deep.diagnostics.find("nest 70 deep"), std::string::npos) << deep.diagnostics;
+}
