@@ -45,6 +45,11 @@ struct LoopSpec {
   std::function<void()> body, step;
 };
 
+// The value class that holds one component of a base type.
+ValueClass classOf(BaseType b) {
+  return b == BaseType::Int ? ValueClass::I32 : b == BaseType::Bool ? ValueClass::Bool : ValueClass::F32;
+}
+
 // Names assigned anywhere in a statement (targets' root variables).
 void assignedNames(const Stmt& s, std::vector<std::string>& out) {
   if (s.kind == StmtKind::Assign) {
@@ -126,8 +131,7 @@ class Lowerer {
         info.per_sequence_point = p.type.isArray();
         info.offset = f_.param_floats;
         info.components = info.per_sequence_point ? p.type.slotCount() / p.type.dims[0] : p.type.slotCount();
-        ValueClass cls = p.type.base == BaseType::Int ? ValueClass::I32
-                         : p.type.base == BaseType::Bool ? ValueClass::Bool : ValueClass::F32;
+        ValueClass cls = classOf(p.type.base);
         for (int k = 0; k < p.type.slotCount(); ++k) b.comps.push_back(paramValue(f_.param_floats + k, cls));
         f_.param_floats += p.type.slotCount();
         f_.params.push_back(info);
@@ -270,8 +274,7 @@ class Lowerer {
       return out;
     }
     const ParamInfo& p = f_.params[static_cast<size_t>(array.sized_param)];
-    ValueClass c = p.type.base == BaseType::Int ? ValueClass::I32
-                   : p.type.base == BaseType::Bool ? ValueClass::Bool : ValueClass::F32;
+    ValueClass c = classOf(p.type.base);
     int count = paramValue(f_.count_slot, ValueClass::I32);
     int base = emit(Op::IAdd, ValueClass::I32, false, constI(f_.param_floats),
                     emit(Op::IMul, ValueClass::I32, false, count, constI(p.offset)));
@@ -337,8 +340,7 @@ class Lowerer {
           b.comps.assign(static_cast<size_t>(s.decl_type.elementCount()), zeroInterp());
         } else {
           // Locals start at zero, so no path can read an undefined value.
-          ValueClass c = s.decl_type.base == BaseType::Int ? ValueClass::I32
-                         : s.decl_type.base == BaseType::Bool ? ValueClass::Bool : ValueClass::F32;
+          ValueClass c = classOf(s.decl_type.base);
           int zero = constant(c, 0);
           b.comps.assign(s.decl_type.slotCount(), zero);
         }
@@ -583,8 +585,7 @@ class Lowerer {
       scopes_.back()[fn.params[i].name] = static_cast<int>(bindings_.size());
       bindings_.push_back(std::move(b));
     }
-    ValueClass rc = fn.return_type.base == BaseType::Int ? ValueClass::I32
-                    : fn.return_type.base == BaseType::Bool ? ValueClass::Bool : ValueClass::F32;
+    ValueClass rc = classOf(fn.return_type.base);
     result.comps.assign(fn.return_type.slotCount(), constant(rc, 0));
     scopes_.back()["$result"] = static_cast<int>(bindings_.size());
     bindings_.push_back(std::move(result));

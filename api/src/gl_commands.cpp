@@ -17,8 +17,6 @@ using pf::currentContext;
 
 namespace {
 
-PFcontextRec* outsideBegin() { return pf::contextOutsideBegin(); }
-
 pf::DepthFunc toDepthFunc(GLenum f) {
   switch (f) {
     case GL_NEVER: return pf::DepthFunc::Never;
@@ -38,6 +36,7 @@ float clamp01(double v) { return v < 0 ? 0.0f : v > 1 ? 1.0f : static_cast<float
 
 void PFcontextRec::finish() {
   renderer.flush();
+  primitives.replaced.clear();  // nothing pending refers to replaced programs any more
   pf::IterationCapReport r = renderer.takeIterationCapReport();
   if (r.pixels == 0 && r.instances == 0) return;
   setError(GL_TOO_MANY_ITERATIONS_EXT);
@@ -106,7 +105,7 @@ GLenum pfglGetError(void) {
 }
 
 const GLubyte* pfglGetString(GLenum name) {
-  PFcontextRec* ctx = outsideBegin();
+  PFcontextRec* ctx = pf::contextOutsideBegin();
   if (!ctx) return nullptr;
   const char* s = nullptr;
   switch (name) {
@@ -120,15 +119,15 @@ const GLubyte* pfglGetString(GLenum name) {
 }
 
 void pfglFinish(void) {
-  if (PFcontextRec* ctx = outsideBegin()) ctx->finish();
+  if (PFcontextRec* ctx = pf::contextOutsideBegin()) ctx->finish();
 }
 
 void pfglFlush(void) {
-  if (PFcontextRec* ctx = outsideBegin()) ctx->finish();
+  if (PFcontextRec* ctx = pf::contextOutsideBegin()) ctx->finish();
 }
 
 void pfglClear(GLbitfield mask) {
-  PFcontextRec* ctx = outsideBegin();
+  PFcontextRec* ctx = pf::contextOutsideBegin();
   if (!ctx) return;
   constexpr GLbitfield kKnown = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
   if (mask & ~kKnown) {
@@ -141,7 +140,7 @@ void pfglClear(GLbitfield mask) {
 }
 
 void pfglClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) {
-  PFcontextRec* ctx = outsideBegin();
+  PFcontextRec* ctx = pf::contextOutsideBegin();
   if (!ctx) return;
   ctx->clear_color[0] = clamp01(r);
   ctx->clear_color[1] = clamp01(g);
@@ -150,11 +149,11 @@ void pfglClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) {
 }
 
 void pfglClearDepth(GLclampd depth) {
-  if (PFcontextRec* ctx = outsideBegin()) ctx->clear_depth = clamp01(depth);
+  if (PFcontextRec* ctx = pf::contextOutsideBegin()) ctx->clear_depth = clamp01(depth);
 }
 
 void pfglViewport(GLint x, GLint y, GLsizei width, GLsizei height) {
-  PFcontextRec* ctx = outsideBegin();
+  PFcontextRec* ctx = pf::contextOutsideBegin();
   if (!ctx) return;
   if (width < 0 || height < 0) {
     ctx->setError(GL_INVALID_VALUE);
@@ -167,7 +166,7 @@ void pfglViewport(GLint x, GLint y, GLsizei width, GLsizei height) {
 }
 
 void pfglDepthFunc(GLenum func) {
-  PFcontextRec* ctx = outsideBegin();
+  PFcontextRec* ctx = pf::contextOutsideBegin();
   if (!ctx) return;
   if (func < GL_NEVER || func > GL_ALWAYS) {
     ctx->setError(GL_INVALID_ENUM);
@@ -177,11 +176,11 @@ void pfglDepthFunc(GLenum func) {
 }
 
 void pfglDepthMask(GLboolean flag) {
-  if (PFcontextRec* ctx = outsideBegin()) ctx->depth_write = flag != GL_FALSE;
+  if (PFcontextRec* ctx = pf::contextOutsideBegin()) ctx->depth_write = flag != GL_FALSE;
 }
 
 void pfglDepthRange(GLclampd zNear, GLclampd zFar) {
-  PFcontextRec* ctx = outsideBegin();
+  PFcontextRec* ctx = pf::contextOutsideBegin();
   if (!ctx) return;
   ctx->depth_range[0] = clamp01(zNear);
   ctx->depth_range[1] = clamp01(zFar);
@@ -203,20 +202,20 @@ static bool* capability(PFcontextRec& ctx, GLenum cap) {
 }
 
 void pfglEnable(GLenum cap) {
-  PFcontextRec* ctx = outsideBegin();
+  PFcontextRec* ctx = pf::contextOutsideBegin();
   if (!ctx) return;
   if (bool* c = capability(*ctx, cap)) *c = true;
   if (cap == GL_COLOR_MATERIAL) ctx->lighting.trackColor(ctx->current_color);  // tracks from now on
 }
 
 void pfglDisable(GLenum cap) {
-  PFcontextRec* ctx = outsideBegin();
+  PFcontextRec* ctx = pf::contextOutsideBegin();
   if (!ctx) return;
   if (bool* c = capability(*ctx, cap)) *c = false;
 }
 
 GLboolean pfglIsEnabled(GLenum cap) {
-  PFcontextRec* ctx = outsideBegin();
+  PFcontextRec* ctx = pf::contextOutsideBegin();
   if (!ctx) return GL_FALSE;
   if (cap == GL_VERTEX_ARRAY) return ctx->vertex_array.enabled ? GL_TRUE : GL_FALSE;
   if (cap == GL_COLOR_ARRAY) return ctx->color_array.enabled ? GL_TRUE : GL_FALSE;
@@ -226,13 +225,13 @@ GLboolean pfglIsEnabled(GLenum cap) {
 }
 
 void pfglColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a) {
-  PFcontextRec* ctx = outsideBegin();
+  PFcontextRec* ctx = pf::contextOutsideBegin();
   if (!ctx) return;
   ctx->color_mask = static_cast<uint8_t>((r ? 1 : 0) | (g ? 2 : 0) | (b ? 4 : 0) | (a ? 8 : 0));
 }
 
 void pfglCullFace(GLenum mode) {
-  PFcontextRec* ctx = outsideBegin();
+  PFcontextRec* ctx = pf::contextOutsideBegin();
   if (!ctx) return;
   if (mode != GL_FRONT && mode != GL_BACK && mode != GL_FRONT_AND_BACK) {
     ctx->setError(GL_INVALID_ENUM);
@@ -242,7 +241,7 @@ void pfglCullFace(GLenum mode) {
 }
 
 void pfglFrontFace(GLenum mode) {
-  PFcontextRec* ctx = outsideBegin();
+  PFcontextRec* ctx = pf::contextOutsideBegin();
   if (!ctx) return;
   if (mode != GL_CW && mode != GL_CCW) {
     ctx->setError(GL_INVALID_ENUM);
@@ -252,7 +251,7 @@ void pfglFrontFace(GLenum mode) {
 }
 
 void pfglShadeModel(GLenum mode) {
-  PFcontextRec* ctx = outsideBegin();
+  PFcontextRec* ctx = pf::contextOutsideBegin();
   if (!ctx) return;
   if (mode != GL_FLAT && mode != GL_SMOOTH) {
     ctx->setError(GL_INVALID_ENUM);

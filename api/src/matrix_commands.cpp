@@ -12,16 +12,16 @@
 
 namespace {
 
-PFcontextRec* ready() { return pf::contextOutsideBegin(); }
+using pf::contextOutsideBegin;
 
 void multiply(const glm::dmat4& m) {
-  if (PFcontextRec* ctx = ready()) ctx->matrixStack().top = ctx->matrixStack().top * glm::mat4(m);
+  if (PFcontextRec* ctx = contextOutsideBegin()) ctx->matrixStack().top = ctx->matrixStack().top * glm::mat4(m);
 }
 
 // GL's rotation by `angle` degrees about (x, y, z), normalised; a zero axis leaves the matrix
 // as it is (GL leaves it undefined; Mesa does nothing).
 void rotate(double angle, double x, double y, double z) {
-  PFcontextRec* ctx = ready();
+  PFcontextRec* ctx = contextOutsideBegin();
   if (!ctx) return;
   double len = std::sqrt(x * x + y * y + z * z);
   if (!(len > 0) || !std::isfinite(len)) return;
@@ -34,7 +34,7 @@ void rotate(double angle, double x, double y, double z) {
 extern "C" {
 
 void pfglMatrixMode(GLenum mode) {
-  PFcontextRec* ctx = ready();
+  PFcontextRec* ctx = contextOutsideBegin();
   if (!ctx) return;
   if (mode != GL_MODELVIEW && mode != GL_PROJECTION && mode != GL_TEXTURE) {
     ctx->setError(GL_INVALID_ENUM);
@@ -44,27 +44,27 @@ void pfglMatrixMode(GLenum mode) {
 }
 
 void pfglLoadIdentity(void) {
-  if (PFcontextRec* ctx = ready()) ctx->matrixStack().top = glm::mat4(1.0f);
+  if (PFcontextRec* ctx = contextOutsideBegin()) ctx->matrixStack().top = glm::mat4(1.0f);
 }
 
 // GL's m is column-major, as GLM's.
 void pfglLoadMatrixf(const GLfloat* m) {
-  PFcontextRec* ctx = ready();
+  PFcontextRec* ctx = contextOutsideBegin();
   if (ctx && m) ctx->matrixStack().top = glm::make_mat4(m);
 }
 
 void pfglLoadMatrixd(const GLdouble* m) {
-  PFcontextRec* ctx = ready();
+  PFcontextRec* ctx = contextOutsideBegin();
   if (ctx && m) ctx->matrixStack().top = glm::mat4(glm::make_mat4(m));
 }
 
 void pfglMultMatrixf(const GLfloat* m) {
-  PFcontextRec* ctx = ready();
+  PFcontextRec* ctx = contextOutsideBegin();
   if (ctx && m) ctx->matrixStack().top = ctx->matrixStack().top * glm::make_mat4(m);
 }
 
 void pfglMultMatrixd(const GLdouble* m) {
-  PFcontextRec* ctx = ready();
+  PFcontextRec* ctx = contextOutsideBegin();
   if (ctx && m) ctx->matrixStack().top = ctx->matrixStack().top * glm::mat4(glm::make_mat4(m));
 }
 
@@ -76,7 +76,7 @@ void pfglRotatef(GLfloat angle, GLfloat x, GLfloat y, GLfloat z) { rotate(angle,
 void pfglRotated(GLdouble angle, GLdouble x, GLdouble y, GLdouble z) { rotate(angle, x, y, z); }
 
 void pfglOrtho(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) {
-  PFcontextRec* ctx = ready();
+  PFcontextRec* ctx = contextOutsideBegin();
   if (!ctx) return;
   if (l == r || b == t || n == f) {
     ctx->setError(GL_INVALID_VALUE);
@@ -86,7 +86,7 @@ void pfglOrtho(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdou
 }
 
 void pfglFrustum(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) {
-  PFcontextRec* ctx = ready();
+  PFcontextRec* ctx = contextOutsideBegin();
   if (!ctx) return;
   if (n <= 0 || f <= 0 || l == r || b == t || n == f) {
     ctx->setError(GL_INVALID_VALUE);
@@ -96,7 +96,7 @@ void pfglFrustum(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLd
 }
 
 void pfglPushMatrix(void) {
-  PFcontextRec* ctx = ready();
+  PFcontextRec* ctx = contextOutsideBegin();
   if (!ctx) return;
   pf::MatrixStack& s = ctx->matrixStack();
   if (s.depth() >= s.max_depth) {
@@ -107,7 +107,7 @@ void pfglPushMatrix(void) {
 }
 
 void pfglPopMatrix(void) {
-  PFcontextRec* ctx = ready();
+  PFcontextRec* ctx = contextOutsideBegin();
   if (!ctx) return;
   pf::MatrixStack& s = ctx->matrixStack();
   if (s.below.empty()) {
