@@ -176,6 +176,20 @@ void setParam(GLuint name, int count, const double* v) {
   ctx->setParamValue(name, count, v);
 }
 
+// The vector forms of pfglRastParam*EXT: 1 to 16 values, not NULL.
+template <class T>
+void setParamVector(GLuint name, GLsizei count, const T* v) {
+  PFcontextRec* ctx = currentContext();
+  if (!ctx) return;
+  if (count < 1 || count > 16 || !v) {
+    ctx->setError(GL_INVALID_VALUE);
+    return;
+  }
+  double d[16];
+  for (int i = 0; i < count; ++i) d[i] = v[i];
+  setParam(name, count, d);
+}
+
 void setVertex(double x, double y, double z, double w, int count) {
   PFcontextRec* ctx = currentContext();
   if (!ctx || !ctx->in_begin) return;  // outside Begin/End a vertex has no effect (GL: undefined)
@@ -445,28 +459,8 @@ void pfglRastParam4fEXT(GLuint name, GLfloat x, GLfloat y, GLfloat z, GLfloat w)
   const double d[4] = {x, y, z, w};
   setParam(name, 4, d);
 }
-void pfglRastParamfvEXT(GLuint name, GLsizei count, const GLfloat* v) {
-  PFcontextRec* ctx = currentContext();
-  if (!ctx) return;
-  if (count < 1 || count > 16 || !v) {
-    ctx->setError(GL_INVALID_VALUE);
-    return;
-  }
-  double d[16];
-  for (int i = 0; i < count; ++i) d[i] = v[i];
-  setParam(name, count, d);
-}
-void pfglRastParamivEXT(GLuint name, GLsizei count, const GLint* v) {
-  PFcontextRec* ctx = currentContext();
-  if (!ctx) return;
-  if (count < 1 || count > 16 || !v) {
-    ctx->setError(GL_INVALID_VALUE);
-    return;
-  }
-  double d[16];
-  for (int i = 0; i < count; ++i) d[i] = v[i];
-  setParam(name, count, d);
-}
+void pfglRastParamfvEXT(GLuint name, GLsizei count, const GLfloat* v) { setParamVector(name, count, v); }
+void pfglRastParamivEXT(GLuint name, GLsizei count, const GLint* v) { setParamVector(name, count, v); }
 
 void pfglMaterialInterpEXT(GLuint param, GLenum primitive, GLenum interpolator) {
   PFcontextRec* ctx = pf::contextOutsideBegin();

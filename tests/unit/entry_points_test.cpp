@@ -4,6 +4,8 @@
 
 #include <primflow/gl.h>
 
+#include "gl_context.h"
+
 #include <cstring>
 #include <vector>
 
@@ -11,18 +13,11 @@ namespace {
 
 constexpr int kN = 16;
 
-struct Ctx {
-  PFcontext ctx;
-  std::vector<unsigned char> px;
-  Ctx() : ctx(pfCreateContext(GL_RGBA, 24)), px(size_t(kN) * kN * 4) {
-    pfMakeCurrent(ctx, px.data(), GL_UNSIGNED_BYTE, kN, kN);
+struct Ctx : pf::test::GlContext {
+  Ctx() : GlContext(kN, kN) {
     pfglMatrixMode(GL_PROJECTION);
     pfglOrtho(0, kN, 0, kN, -1, 1);
     pfglMatrixMode(GL_MODELVIEW);
-  }
-  ~Ctx() {
-    pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
-    pfDestroyContext(ctx);
   }
   // The pixel a GL_POINTS vertex landed on, or -1.
   int drawnPixel() {

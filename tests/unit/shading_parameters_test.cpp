@@ -6,6 +6,8 @@
 
 #include <primflow/gl.h>
 
+#include "gl_context.h"
+
 #include <cmath>
 #include <vector>
 
@@ -13,18 +15,11 @@ namespace {
 
 constexpr int kN = 64;
 
-struct Ctx {
-  PFcontext ctx;
-  std::vector<unsigned char> px;
-  Ctx() : ctx(pfCreateContext(GL_RGBA, 24)), px(size_t(kN) * kN * 4) {
-    pfMakeCurrent(ctx, px.data(), GL_UNSIGNED_BYTE, kN, kN);
+struct Ctx : pf::test::GlContext {
+  Ctx() : GlContext(kN, kN) {
     pfglMatrixMode(GL_PROJECTION);
     pfglFrustum(-1, 1, -1, 1, 1, 10);
     pfglMatrixMode(GL_MODELVIEW);
-  }
-  ~Ctx() {
-    pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
-    pfDestroyContext(ctx);
   }
 };
 

@@ -6,6 +6,8 @@
 
 #include <primflow/gl.h>
 
+#include "gl_context.h"
+
 #include <cmath>
 #include <vector>
 
@@ -13,20 +15,12 @@ namespace {
 
 constexpr int kN = 64;
 
-struct Ctx {
-  PFcontext ctx;
-  std::vector<unsigned char> px;
-  Ctx() : ctx(pfCreateContext(GL_RGBA, 24)), px(size_t(kN) * kN * 4) {
-    pfMakeCurrent(ctx, px.data(), GL_UNSIGNED_BYTE, kN, kN);
+struct Ctx : pf::test::GlContext {
+  Ctx() : GlContext(kN, kN) {
     pfglMatrixMode(GL_PROJECTION);
     pfglFrustum(-1, 1, -1, 1, 1, 10);
     pfglMatrixMode(GL_MODELVIEW);
   }
-  ~Ctx() {
-    pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
-    pfDestroyContext(ctx);
-  }
-  const unsigned char* at(int x, int y) const { return &px[(size_t(y) * kN + x) * 4]; }
 };
 
 // The colour is a smooth function of the eye-space point, scaled by a per-primitive parameter.
