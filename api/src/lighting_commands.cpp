@@ -118,6 +118,17 @@ void material(GLenum face, GLenum pname, const float* v, int given) {
   }
 }
 
+// The integer vector forms: `n` values, colours mapping 2^31 - 1 to 1.0 (GL 1.5 table 2.9),
+// everything else taken as it is. Null stays null (the float form then ignores it).
+struct IntValues {
+  float f[4] = {0, 0, 0, 0};
+  const float* get(const GLint* v, int n, bool color) {
+    if (!v) return nullptr;
+    for (int i = 0; i < n && i < 4; ++i) f[i] = color ? static_cast<float>(v[i] / 2147483647.0) : static_cast<float>(v[i]);
+    return f;
+  }
+};
+
 }  // namespace
 
 extern "C" {
@@ -129,12 +140,8 @@ void pfglLighti(GLenum l, GLenum pname, GLint v) {
 }
 void pfglLightfv(GLenum l, GLenum pname, const GLfloat* v) { light(l, pname, v, 4); }
 void pfglLightiv(GLenum l, GLenum pname, const GLint* v) {
-  // Integer colours map 2^31 - 1 to 1.0 (GL 1.5 table 2.9); positions and the rest as they are.
-  float f[4] = {0, 0, 0, 0};
-  const bool color = pname == GL_AMBIENT || pname == GL_DIFFUSE || pname == GL_SPECULAR;
-  for (int i = 0; v && i < lightValues(pname); ++i)
-    f[i] = color ? static_cast<float>(v[i] / 2147483647.0) : static_cast<float>(v[i]);
-  light(l, pname, v ? f : nullptr, 4);
+  IntValues iv;
+  light(l, pname, iv.get(v, lightValues(pname), pname == GL_AMBIENT || pname == GL_DIFFUSE || pname == GL_SPECULAR), 4);
 }
 
 void pfglLightModelf(GLenum pname, GLfloat v) { lightModel(pname, &v, 1); }
@@ -144,11 +151,9 @@ void pfglLightModeli(GLenum pname, GLint v) {
 }
 void pfglLightModelfv(GLenum pname, const GLfloat* v) { lightModel(pname, v, 4); }
 void pfglLightModeliv(GLenum pname, const GLint* v) {
-  float f[4] = {0, 0, 0, 0};
-  const int n = pname == GL_LIGHT_MODEL_AMBIENT ? 4 : 1;
-  for (int i = 0; v && i < n; ++i)
-    f[i] = pname == GL_LIGHT_MODEL_AMBIENT ? static_cast<float>(v[i] / 2147483647.0) : static_cast<float>(v[i]);
-  lightModel(pname, v ? f : nullptr, 4);
+  const bool ambient = pname == GL_LIGHT_MODEL_AMBIENT;
+  IntValues iv;
+  lightModel(pname, iv.get(v, ambient ? 4 : 1, ambient), 4);
 }
 
 void pfglMaterialf(GLenum face, GLenum pname, GLfloat v) { material(face, pname, &v, 1); }
@@ -158,14 +163,11 @@ void pfglMateriali(GLenum face, GLenum pname, GLint v) {
 }
 void pfglMaterialfv(GLenum face, GLenum pname, const GLfloat* v) { material(face, pname, v, 4); }
 void pfglMaterialiv(GLenum face, GLenum pname, const GLint* v) {
-  // GL's colours map 2^31 - 1 to 1.0; shininess and named parameters (as pfglRastParamivEXT)
-  // take the integers as they are.
+  // Shininess and named parameters (as pfglRastParamivEXT) take the integers as they are.
   PFcontextRec* ctx = pf::currentContext();
   const bool raw = pname == GL_SHININESS || (ctx && ctx->isParam(pname));
-  float f[4] = {0, 0, 0, 0};
-  const int n = pname == GL_SHININESS ? 1 : 4;
-  for (int i = 0; v && i < n; ++i) f[i] = raw ? static_cast<float>(v[i]) : static_cast<float>(v[i] / 2147483647.0);
-  material(face, pname, v ? f : nullptr, 4);
+  IntValues iv;
+  material(face, pname, iv.get(v, pname == GL_SHININESS ? 1 : 4, !raw), 4);
 }
 
 void pfglColorMaterial(GLenum face, GLenum mode) {
