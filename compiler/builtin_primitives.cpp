@@ -31,6 +31,7 @@ BuiltinPrimitives compileAll() {
         out.by_name[p->name] = p;
         out.in_order.push_back(p);
       }
+      for (auto& p : module.interpolators) out.interpolators.push_back(p);
     }
     if (failed.size() == pending.size()) {
       out.errors = errors;

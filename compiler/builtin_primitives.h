@@ -1,4 +1,5 @@
-// The built-in primitives (primitives/*.pfl), compiled once per process and shared, read-only,
+// The built-in primitives (primitives/*.pfl) and shared interpolators
+// (primitives/interpolators/*.pfl), compiled once per process and shared, read-only,
 // by every context -- registered exactly as a user's primitives are (paper section 4: "all
 // primitives, including the built-in ones, must register themselves").
 #pragma once
@@ -12,6 +13,9 @@ namespace pf {
 
 struct BuiltinPrimitives {
   std::vector<std::shared_ptr<const CompiledPrimitive>> in_order;  // as their files define them
+  // The shared interpolators of primitives/interpolators/*.pfl, registered by every context as
+  // pfglCompilePrimitivesEXT registers a user's.
+  std::vector<std::shared_ptr<const CompiledPrimitive>> interpolators;
   PrimitiveTable by_name;
   std::string errors;  // a built-in failed to compile: a bug of the build, reported by the API
 };

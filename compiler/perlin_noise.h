@@ -24,29 +24,38 @@ inline constexpr uint8_t kPermutation[256] = {
     236, 205, 93,  222, 114, 67,  29,  24,  72,  243, 141, 128, 195, 78,  66,  215, 61,  156, 180};
 
 inline int perm(int i) { return kPermutation[i & 255]; }
-inline float fade(float t) { return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f); }
-inline float lerp(float t, float a, float b) { return a + t * (b - a); }
-inline float grad(int hash, float x, float y, float z) {
+template <typename T>
+T fade(T t) {
+  return t * t * t * (t * (t * T(6) - T(15)) + T(10));
+}
+template <typename T>
+T lerp(T t, T a, T b) {
+  return a + t * (b - a);
+}
+template <typename T>
+T grad(int hash, T x, T y, T z) {
   int h = hash & 15;
-  float u = h < 8 ? x : y;
-  float v = h < 4 ? y : (h == 12 || h == 14 ? x : z);
+  T u = h < 8 ? x : y;
+  T v = h < 4 ? y : (h == 12 || h == 14 ? x : z);
   return ((h & 1) ? -u : u) + ((h & 2) ? -v : v);
 }
 }  // namespace noise_detail
 
-// Signed noise at (x, y, z); 0 at lattice points. Non-finite input gives 0.
-inline float perlinNoise(float x, float y, float z) {
+// Signed noise at (x, y, z); 0 at lattice points. Non-finite input gives 0. The executors use
+// the float form; tests compute references with the double one (the same function).
+template <typename T>
+T perlinNoiseOf(T x, T y, T z) {
   using namespace noise_detail;
-  if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) return 0.0f;
-  float fx = std::floor(x), fy = std::floor(y), fz = std::floor(z);
-  // The lattice repeats every 256: reduce in float first so huge inputs stay in int range.
-  int X = static_cast<int>(fx - 256.0f * std::floor(fx / 256.0f)) & 255;
-  int Y = static_cast<int>(fy - 256.0f * std::floor(fy / 256.0f)) & 255;
-  int Z = static_cast<int>(fz - 256.0f * std::floor(fz / 256.0f)) & 255;
+  if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) return T(0);
+  T fx = std::floor(x), fy = std::floor(y), fz = std::floor(z);
+  // The lattice repeats every 256: reduce in T first so huge inputs stay in int range.
+  int X = static_cast<int>(fx - T(256) * std::floor(fx / T(256))) & 255;
+  int Y = static_cast<int>(fy - T(256) * std::floor(fy / T(256))) & 255;
+  int Z = static_cast<int>(fz - T(256) * std::floor(fz / T(256))) & 255;
   x -= fx;
   y -= fy;
   z -= fz;
-  float u = fade(x), v = fade(y), w = fade(z);
+  T u = fade(x), v = fade(y), w = fade(z);
   int A = perm(X) + Y, AA = perm(A) + Z, AB = perm(A + 1) + Z;
   int B = perm(X + 1) + Y, BA = perm(B) + Z, BB = perm(B + 1) + Z;
   return lerp(w,
@@ -55,5 +64,7 @@ inline float perlinNoise(float x, float y, float z) {
               lerp(v, lerp(u, grad(perm(AA + 1), x, y, z - 1), grad(perm(BA + 1), x - 1, y, z - 1)),
                    lerp(u, grad(perm(AB + 1), x, y - 1, z - 1), grad(perm(BB + 1), x - 1, y - 1, z - 1))));
 }
+
+inline float perlinNoise(float x, float y, float z) { return perlinNoiseOf<float>(x, y, z); }
 
 }  // namespace pf

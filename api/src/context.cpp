@@ -37,6 +37,7 @@ bool registerBuiltins(PFcontextRec& ctx) {
       if (p->name == m.primitive) mode = m.mode;
     ctx.primitives.add(p, mode);
   }
+  for (const auto& p : builtins.interpolators) ctx.primitives.addInterpolator(p);
   return true;
 }
 
