@@ -88,7 +88,9 @@ bool compileSource(const std::string& filename, const std::string& text, Compile
     }
     prim->has_interp_data = ir.has_interp_data;
     prim->kinds_handled = ir.kinds_handled;
+    // A primitive whose calls set N is lit per pixel too (the cylinder: its quadric and disks).
     prim->writes_normal = ir.writes_normal;
+    for (const auto& callee : prim->callees) prim->writes_normal |= callee->writes_normal;
     prim->setup = std::move(code.setup);
     prim->pixel = std::move(code.pixel);
     auto kept = std::make_shared<IrFunction>(std::move(ir));

@@ -28,7 +28,7 @@ struct CompiledPrimitive {
   std::vector<std::shared_ptr<const CompiledPrimitive>> callees;
   int call_depth = 0;
   InterpKindSet kinds_handled = 0;
-  bool writes_normal = false;  // sets N: its pixels carry P and N to the shading pass
+  bool writes_normal = false;  // sets N, or calls a primitive that does: pixels carry P and N to shading
   SetupProgram setup;
   PixelProgram pixel;
   // The optimized IR both programs came from: what the tests' scalar reference interpreter

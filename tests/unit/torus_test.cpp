@@ -2,7 +2,7 @@
 // nothing with it: sphere tracing on the tube's exact distance function (a step of the distance
 // never crosses the surface), from the near plane, to 1e-12. Cases that break careless quartic
 // solvers: a plain torus at an angle, a very thin one, one seen edge-on (grazing rays all along
-// its rim), and one cut by the near plane.
+// its rim), one cut by the near plane, and one whose plane holds a row of rays.
 #include <gtest/gtest.h>
 
 #include <primflow/gl.h>
@@ -26,14 +26,16 @@ struct TorusCase {
   double tilt;          // degrees about the (1, 0.2, 0) axis
   glm::dvec3 scale;     // non-uniform scale of the modelview
   int min_hits;
+  glm::dvec3 axis{1, 0.2, 0};         // of the tilt
+  glm::dvec3 offset{0.05, -0.02, 0};  // of the centre, across the view
 };
 
 void PrintTo(const TorusCase& c, std::ostream* os) { *os << c.name; }
 
 glm::dmat4 projection() { return glm::frustum(-0.5, 0.5, -0.5, 0.5, 1.0, 20.0); }
 glm::dmat4 modelview(const TorusCase& c) {
-  glm::dmat4 m = glm::translate(glm::dmat4(1), glm::dvec3(0.05, -0.02, -c.distance));
-  m = glm::rotate(m, glm::radians(c.tilt), glm::normalize(glm::dvec3(1, 0.2, 0)));
+  glm::dmat4 m = glm::translate(glm::dmat4(1), c.offset + glm::dvec3(0, 0, -c.distance));
+  m = glm::rotate(m, glm::radians(c.tilt), glm::normalize(c.axis));
   return glm::scale(m, c.scale);
 }
 
@@ -71,8 +73,8 @@ TEST_P(Torus, CoverageAndDepthMatchSphereTracingInDouble) {
   pfglMatrixMode(GL_PROJECTION);
   pfglFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 20.0);
   pfglMatrixMode(GL_MODELVIEW);
-  pfglTranslated(0.05, -0.02, -tc.distance);
-  pfglRotated(tc.tilt, 1, 0.2, 0);
+  pfglTranslated(tc.offset.x, tc.offset.y, tc.offset.z - tc.distance);
+  pfglRotated(tc.tilt, tc.axis.x, tc.axis.y, tc.axis.z);
   pfglScaled(tc.scale.x, tc.scale.y, tc.scale.z);
   pfglClearColor(0, 0, 0, 0);
   pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -119,7 +121,11 @@ INSTANTIATE_TEST_SUITE_P(
     testing::Values(TorusCase{"tilted", 1.0, 0.3, 5.0, 55.0, glm::dvec3(1.1, 0.9, 1.0), 1000},
                     TorusCase{"thin", 1.2, 0.02, 4.0, 40.0, glm::dvec3(1, 1, 1), 150},
                     TorusCase{"edge_on", 1.0, 0.25, 5.0, 89.5, glm::dvec3(1, 1, 1), 400},
-                    TorusCase{"cut_by_near_plane", 1.0, 0.45, 1.6, 20.0, glm::dvec3(1, 1, 1), 2000}),
+                    TorusCase{"cut_by_near_plane", 1.0, 0.45, 1.6, 20.0, glm::dvec3(1, 1, 1), 2000},
+                    // Pixel row 48's rays lie in the torus' plane through its centre: each meets
+                    // the tube's outermost point just where it enters the bounding sphere.
+                    TorusCase{"rays_in_its_plane", 1.0, 0.3, 5.0, 90.0 + glm::degrees(std::atan(0.5 / 96)),
+                              glm::dvec3(1, 1, 1), 150, glm::dvec3(1, 0, 0), glm::dvec3(0, 5 * 0.5 / 96, 0)}),
     [](const testing::TestParamInfo<TorusCase>& info) { return std::string(info.param.name); });
 
 }  // namespace
