@@ -1,0 +1,104 @@
+// A scene read from a JSON file (docs/scenes.md): camera, lights, materials and the objects to
+// draw -- instances of any primitive with their parameters, vertex lists for the GL modes, and
+// triangle meshes from OBJ files. Loading checks everything it can without a context; drawing
+// (scene_draw.cpp) issues the GL and extension calls, the same ones an application would.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace pf::scene {
+
+// A bad scene: the message names the file, the line and the key ("FILE:LINE: error: KEY: ...").
+struct SceneError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Where a value came from, for errors found while drawing.
+struct Origin {
+  int line = 1;
+  std::string key;  // JSON pointer
+};
+
+struct Camera {
+  bool ortho = false;
+  glm::dvec3 eye{0, 0, 5}, target{0, 0, 0}, up{0, 1, 0};
+  double fov_degrees = 45;  // vertical, perspective
+  double height = 4;        // of the view at the target, orthographic
+  double near = 0.1, far = 100;
+};
+
+struct Light {
+  enum class Kind { Directional, Point, Spot } kind = Kind::Directional;
+  glm::dvec3 position{0, 0, 1};  // directional: the direction *towards* the light
+  glm::dvec3 spot_direction{0, 0, -1};
+  double spot_cutoff = 180, spot_exponent = 0;
+  glm::dvec4 ambient{0, 0, 0, 1}, diffuse{1, 1, 1, 1}, specular{1, 1, 1, 1};
+  glm::dvec3 attenuation{1, 0, 0};  // constant, linear, quadratic
+};
+
+// A named parameter's current value (pfglRastParamfvEXT), 1 to 16 numbers.
+struct ParamValue {
+  std::string name;
+  std::vector<double> values;
+  Origin origin;
+};
+
+struct Material {
+  glm::dvec4 color{0.8, 0.8, 0.8, 1};  // ambient and diffuse (through GL_COLOR_MATERIAL)
+  glm::dvec4 specular{0, 0, 0, 1}, emission{0, 0, 0, 1};
+  double shininess = 0;
+  // Shading parameter -> "perspective_linear", "linear" or a shared interpolator's name.
+  std::map<std::string, std::string> interpolators;
+  std::vector<ParamValue> params;  // the interpolators' parameters
+  Origin origin;
+};
+
+struct Transform {
+  glm::dmat4 matrix{1.0};
+};
+
+// One glBegin ... glEnd: a primitive (any registered mode, built-in or compiled from the
+// scene's sources) with one sequence point per instance, or a triangle mesh.
+struct Object {
+  std::string primitive;                       // glBegin mode's name ("sphere", "triangles", ...)
+  std::string material;                        // empty: the default material
+  glm::dmat4 transform{1.0};                   // object -> world
+  std::vector<ParamValue> params;              // set once, before the sequence points
+  std::vector<std::vector<ParamValue>> points; // per sequence point
+  // Vertex lists (GL modes, meshes): one sequence point per vertex.
+  std::vector<glm::dvec3> vertices, normals;
+  std::vector<glm::dvec4> colors;
+  Origin origin;
+};
+
+struct Scene {
+  std::string path;         // the file, for messages
+  int width = 960, height = 640;
+  glm::dvec4 background{0.06, 0.07, 0.10, 1};
+  Camera camera;
+  bool lighting = false;
+  glm::dvec4 global_ambient{0.2, 0.2, 0.2, 1};
+  bool two_side = false, local_viewer = false;
+  std::vector<Light> lights;
+  std::vector<std::pair<std::string, std::string>> sources;  // (path, text) of .pfl files
+  std::map<std::string, Material> materials;
+  std::vector<Object> objects;
+};
+
+// Reads a scene file; throws SceneError.
+Scene loadScene(const std::string& path);
+// Parses scene text (`path` names it in messages and resolves relative file names).
+Scene parseScene(const std::string& text, const std::string& path);
+
+// Draws the scene into the current context at width x height: compiles its sources, sets the
+// camera, lights and materials, and draws every object, then glFinish. Throws SceneError
+// naming the object's line when the context rejects something (unknown primitive, a parameter
+// missing or of the wrong size).
+void drawScene(const Scene& scene, int width, int height);
+
+}  // namespace pf::scene
