@@ -4,6 +4,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -115,7 +116,8 @@ class Reader {
     ParamValue v{name, {}, origin(p)};
     if (j.is_number()) v.values.push_back(number(j, p));
     else if (j.is_boolean()) v.values.push_back(j.get<bool>() ? 1 : 0);
-    else v.values = numbers(j, p, 1, 16);
+    else if (j.is_array()) v.values = numbers(j, p, 1, 16);
+    else fail(p, std::string("expected a number or an array of 1 to 16 numbers, found ") + j.type_name());
     return v;
   }
   std::vector<ParamValue> params(const json& j, const std::string& p) const {
@@ -322,8 +324,9 @@ Scene parseScene(const std::string& text, const std::string& path) {
     doc = json::parse(text);
   } catch (const json::parse_error& e) {
     // nlohmann reports a byte offset: turn it into a line.
-    const size_t at = std::min(static_cast<size_t>(e.byte), text.size());
-    const long line = 1 + std::count(text.begin(), text.begin() + static_cast<long>(at ? at - 1 : 0), '\n');
+    // e.byte is 1-based: the characters before the offending one are [0, byte - 1).
+    const size_t before = std::min(e.byte > 0 ? static_cast<size_t>(e.byte - 1) : size_t{0}, text.size());
+    const long line = 1 + std::count(text.begin(), text.begin() + static_cast<long>(before), '\n');
     std::string what = e.what();
     const size_t colon = what.find(": ", what.find("parse error"));
     throw SceneError(path + ":" + std::to_string(line) + ": error: not valid JSON: " +
