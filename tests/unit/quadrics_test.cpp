@@ -152,6 +152,18 @@ std::vector<Shape> shapes() {
                    {{[=](const glm::dvec3& p) { return radial(p) - r * r - (rt * rt - r * r) * sq((p.z - c.z) / (h / 2)); },
                      between(-h / 2, h / 2)}}});
   }
+  {  // A flared vase: x'^2 + y'^2 = 0.4 z'^2 + 0.16 for z' in [0, 1.2] (its widest radius, at
+     // the top, is for the primitive to find).
+    out.push_back({"revolution",
+                   [] {
+                     drawOne("revolution", [&] {
+                       pfglRastParam3fEXT(param("center"), 0.1f, -0.1f, -0.5f);
+                       const float profile[5] = {-0.4f, 0, -0.16f, 0, 1.2f};
+                       pfglRastParamfvEXT(param("profile"), 5, profile);
+                     });
+                   },
+                   {{[=](const glm::dvec3& p) { return radial(p) - 0.4 * sq(p.z - c.z) - 0.16; }, between(0, 1.2)}}});
+  }
   {
     const double r = 0.9;
     out.push_back({"disk", [=] { drawOne("disk", [&] { setCRH(r, 0); }); }, {capAt(c.z, r)}});
