@@ -1,15 +1,17 @@
-// The built-in showcase, drawn through primflow: tools/showcase_scene.inc compiled against
-// <primflow/gl_mangle.h>.
+// The built-in showcase: scenes/showcase.json, embedded at build time, read and drawn as any
+// scene file is (tools/scene).
 #include "showcase.h"
 
-#include <primflow/gl_mangle.h>
-
-#include <cmath>
-
-#include "showcase_scene.inc"
+#include "compiler/embedded_primitives.h"
+#include "scene/scene.h"
 
 namespace pf {
 
-void drawShowcase(int width, int height) { drawShowcaseScene(width, height); }
+extern const EmbeddedSource kShowcaseScene[];  // generated from scenes/showcase.json
+
+void drawShowcase(int width, int height) {
+  const scene::Scene scene = scene::parseScene(kShowcaseScene[0].text, "scenes/showcase.json");
+  scene::drawScene(scene, width, height);
+}
 
 }  // namespace pf
