@@ -50,6 +50,27 @@ ValueClass classOf(BaseType b) {
   return b == BaseType::Int ? ValueClass::I32 : b == BaseType::Bool ? ValueClass::Bool : ValueClass::F32;
 }
 
+// Whether a statement holds a `return` anywhere.
+bool holdsReturn(const Stmt& s) {
+  if (s.kind == StmtKind::Return) return true;
+  for (const StmtPtr& c : s.body)
+    if (holdsReturn(*c)) return true;
+  for (const StmtPtr& c : s.else_body)
+    if (holdsReturn(*c)) return true;
+  for (const InterpolationCase& k : s.cases)
+    for (const StmtPtr& c : k.body)
+      if (holdsReturn(*c)) return true;
+  return (s.init && holdsReturn(*s.init)) || (s.step && holdsReturn(*s.step));
+}
+
+// Whether a function body returns a value at its last statement and nowhere else.
+bool returnsOnlyAtEnd(const std::vector<StmtPtr>& body) {
+  if (body.empty() || body.back()->kind != StmtKind::Return || !body.back()->value) return false;
+  for (size_t i = 0; i + 1 < body.size(); ++i)
+    if (holdsReturn(*body[i])) return false;
+  return true;
+}
+
 // Names assigned anywhere in a statement (targets' root variables).
 void assignedNames(const Stmt& s, std::vector<std::string>& out) {
   if (s.kind == StmtKind::Assign) {
@@ -590,6 +611,19 @@ class Lowerer {
     scopes_.back()["$result"] = static_cast<int>(bindings_.size());
     bindings_.push_back(std::move(result));
 
+    // A body whose only `return` is its last statement needs no loop: lowered straight, its
+    // uniform work stays uniform (hoisted into setup), as if written at the call.
+    if (returnsOnlyAtEnd(fn.body)) {
+      scopes_.emplace_back();
+      for (size_t i = 0; i + 1 < fn.body.size(); ++i) statement(*fn.body[i]);
+      Binding value = expr(*fn.body.back()->value);
+      scopes_.pop_back();
+      Binding out = bindings_[lookup("$result")];
+      out.comps = convert(value, out.type);
+      out.writable = true;
+      scopes_ = std::move(saved_scopes);
+      return out;
+    }
     std::vector<std::string> names = {"$result"};
     for (const StmtPtr& st : fn.body) assignedNames(*st, names);
     LoopSpec spec;
@@ -949,6 +983,24 @@ class Lowerer {
 
   // The state's column-major matrix `m` (its upper n x n; transposed if asked) times the n
   // components of v.
+  // Whether value v is the constant x.
+  bool isConstF(int v, float x) const {
+    return v >= 0 && f_.values[v].origin == Value::Origin::Const && f_.values[v].bits == std::bit_cast<uint32_t>(x);
+  }
+  // a * b for the transforms below, where b may be a literal: a literal 0 contributes nothing
+  // (-1: no term), a literal 1 contributes a itself. So a direction (w = 0) or a unit vector
+  // costs only the columns it uses: object(eye(unscreen(point(1, 0, 0, 0)))) is one column's
+  // worth of work, all of it in setup.
+  int transformTerm(int a, int b) {
+    if (isConstF(b, 0.0f)) return -1;
+    if (isConstF(b, 1.0f)) return a;
+    return emit(Op::FMul, ValueClass::F32, false, a, b);
+  }
+  int sumTerms(int sum, int term) {
+    if (term < 0) return sum;
+    return sum < 0 ? term : emit(Op::FAdd, ValueClass::F32, false, sum, term);
+  }
+
   Binding scalarMatrixTimes(const Type& type, StateValue m, const std::vector<int>& v, int n, bool transposed) {
     Binding out;
     out.type = type;
@@ -956,10 +1008,9 @@ class Lowerer {
       int sum = -1;
       for (int col = 0; col < n; ++col) {
         const int element = transposed ? row * 4 + col : col * 4 + row;
-        int t = emit(Op::FMul, ValueClass::F32, false, state(static_cast<StateValue>(static_cast<int>(m) + element)), v[col]);
-        sum = sum < 0 ? t : emit(Op::FAdd, ValueClass::F32, false, sum, t);
+        sum = sumTerms(sum, transformTerm(state(static_cast<StateValue>(static_cast<int>(m) + element)), v[col]));
       }
-      out.comps.push_back(sum);
+      out.comps.push_back(sum < 0 ? constF(0.0f) : sum);
     }
     return out;
   }
@@ -1101,9 +1152,12 @@ class Lowerer {
     if (f == "unscreen") {
       // x = (X - w * offset) / scale, per axis; w stays.
       const std::vector<int>& p = args[0].comps;
+      // (A literal 0 for w skips its term, and then a literal 0 component stays 0.)
       auto inverse = [&](int comp, StateValue scale, StateValue offset) {
-        int o = emit(Op::FMul, ValueClass::F32, false, p[3], state(offset));
-        return emit(Op::FDiv, ValueClass::F32, false, emit(Op::FSub, ValueClass::F32, false, p[comp], o), state(scale));
+        const int o = transformTerm(state(offset), p[3]);
+        if (o < 0 && isConstF(p[comp], 0.0f)) return p[comp];
+        const int shifted = o < 0 ? p[comp] : emit(Op::FSub, ValueClass::F32, false, p[comp], o);
+        return emit(Op::FDiv, ValueClass::F32, false, shifted, state(scale));
       };
       Binding out;
       out.type = e.type;
@@ -1133,9 +1187,8 @@ class Lowerer {
       // division by w, so that 2D-homogeneous rasterization works for vertices behind the eye.
       const std::vector<int>& p = args[0].comps;
       auto affine = [&](int comp, StateValue scale, StateValue offset) {
-        int s = emit(Op::FMul, ValueClass::F32, false, p[comp], state(scale));
-        int o = emit(Op::FMul, ValueClass::F32, false, p[3], state(offset));
-        return emit(Op::FAdd, ValueClass::F32, false, s, o);
+        const int sum = sumTerms(transformTerm(state(scale), p[comp]), transformTerm(state(offset), p[3]));
+        return sum < 0 ? constF(0.0f) : sum;
       };
       Binding out;
       out.type = e.type;

@@ -102,3 +102,39 @@ TEST(Functions, Errors) {
   EXPECT_NE(d.find("8:7: error: 'nosuch' is not a built-in function"), std::string::npos) << d;
   EXPECT_NE(d.find("9:10: error: a primitive's 'return' takes no value"), std::string::npos) << d;
 }
+
+// A function whose only return ends its body is lowered without the loop that early returns
+// need: its uniform part stays in setup even where the call as a whole is varying.
+TEST(Functions, StraightLineFunctionsKeepTheirUniformWorkInSetup) {
+  auto c = compile(
+      "float scaledX(float a) {\n"
+      "  float k = sqrt(a) * 3.0;\n"  // uniform for a uniform a
+      "  return X * k;\n"
+      "}\n"
+      "primitive p(float a[1]; inout varying float Z) {\n"
+      "  Z = scaledX(a[0]) + Y;\n"
+      "}\n");
+  ASSERT_TRUE(c.ok) << c.diagnostics;
+  const CompiledPrimitive& p = *c.find("p");
+  for (const Instr& in : p.pixel.code) {
+    EXPECT_NE(in.op, Op::FSqrt) << disassemble(p.pixel, true);
+    EXPECT_NE(in.op, Op::LoopBegin) << disassemble(p.pixel, true);
+  }
+  BlockRun r = runBlock(p, {4.0f}, {}, 0, true, 1e9f);
+  for (int i = 0; i < 64; ++i) EXPECT_FLOAT_EQ(r.depth[i], laneX(i) * 6.0f + laneY(i)) << "lane " << i;
+}
+
+// The space transforms skip the terms of literal zeros: transforming a direction (w = 0) along
+// an axis costs a column, not a matrix product (and none of it runs per pixel).
+TEST(Functions, TransformsOfLiteralAxesAreColumns) {
+  auto c = compile(
+      "primitive p(float a[1]; inout varying float Z) {\n"
+      "  point e = eye(point(1.0, 0.0, 0.0, 0.0));\n"
+      "  Z = X * e.x + a[0];\n"
+      "}\n");
+  ASSERT_TRUE(c.ok) << c.diagnostics;
+  const CompiledPrimitive& p = *c.find("p");
+  int multiplies = 0;
+  for (const Instr& in : p.setup.code) multiplies += in.op == Op::FMul;
+  EXPECT_EQ(multiplies, 0) << disassemble(p.setup, false);  // e.x is InvProjection[0] itself
+}
