@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include <map>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -18,10 +19,10 @@ struct SceneError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Where a value came from, for errors found while drawing.
+// Where a value came from, for errors found while drawing: its JSON pointer (the line is
+// found from the scene's text only when an error needs it).
 struct Origin {
-  int line = 1;
-  std::string key;  // JSON pointer
+  std::string key;
 };
 
 struct Camera {
@@ -45,7 +46,6 @@ struct Light {
 struct ParamValue {
   std::string name;
   std::vector<double> values;
-  Origin origin;
 };
 
 struct Material {
@@ -78,6 +78,7 @@ struct Object {
 
 struct Scene {
   std::string path;         // the file, for messages
+  std::shared_ptr<const std::string> text;  // its text, for the line numbers of errors
   int width = 960, height = 640;
   glm::dvec4 background{0.06, 0.07, 0.10, 1};
   Camera camera;
@@ -89,6 +90,9 @@ struct Scene {
   std::map<std::string, Material> materials;
   std::vector<Object> objects;
 };
+
+// The 1-based line of the scene's text where `origin`'s value starts.
+int lineOf(const Scene& scene, const Origin& origin);
 
 // Reads a scene file; throws SceneError.
 Scene loadScene(const std::string& path);

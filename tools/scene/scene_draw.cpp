@@ -18,7 +18,7 @@ namespace pf::scene {
 namespace {
 
 [[noreturn]] void fail(const Scene& s, const Origin& o, const std::string& message) {
-  throw SceneError(s.path + ":" + std::to_string(o.line) + ": error: " + message);
+  throw SceneError(s.path + ":" + std::to_string(lineOf(s, o)) + ": error: " + message);
 }
 
 void setVec4(void (*f)(GLenum, GLenum, const GLfloat*), GLenum a, GLenum b, const glm::dvec4& v) {
