@@ -82,6 +82,8 @@ enum class StateValue : uint16_t {
   // InvModelview + k (object(), eye_normal()), Modelview + k (eye_from_object())
   InvProjection, Projection = InvProjection + 16, InvModelview = Projection + 16, Modelview = InvModelview + 16
 };
+// How many state values there are (the last matrix's 16 included).
+constexpr int kStateValueCount = static_cast<int>(StateValue::Modelview) + 16;
 
 // An operand: a kind in the top 2 bits, an index below.
 enum class OperandKind : uint32_t { Reg = 0, Uniform = 1, Const = 2, Param = 3 };

@@ -11,8 +11,16 @@
 
 namespace pf {
 
+void SetupExecutor::cacheState(const RasterState& state) {
+  if (state_cached_ && cached_state_ == state) return;
+  for (int k = 0; k < kStateValueCount; ++k) state_values_[k] = stateValue(state, static_cast<uint16_t>(k));
+  cached_state_ = state;
+  state_cached_ = true;
+}
+
 SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& in, uint32_t* record) {
   const SetupProgram& p = prim.setup;
+  cacheState(*in.state);
   const int nch = in.layout->count;
   // One flat file for every operand kind -- registers, then constants, then the fixed part of
   // the parameters -- so that reading an operand is an add and a load, not a switch.
@@ -30,7 +38,7 @@ SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& 
   auto read = [&](uint32_t o) -> uint32_t { return U[base[o >> 30] + operandIndex(o)]; };
   auto rf = [&](uint32_t o) { return std::bit_cast<float>(read(o)); };
   auto xreg = [&](uint32_t o) { return interp_.data() + static_cast<size_t>(operandIndex(o)) * nch; };
-  auto state = [&](uint16_t which) { return stateValue(*in.state, which); };
+  auto state = [&](uint16_t which) { return which < kStateValueCount ? state_values_[which] : 0.0f; };
   // Channel ranges of the kinds in `set`, as [begin, end) pairs.
   auto forChannels = [&](uint16_t set, auto&& fn) {
     for (int k = 0; k < kInterpKindCount; ++k)
@@ -50,6 +58,10 @@ SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& 
     ++pc;
     ++out.instructions;
     switch (ins.op) {
+      // The commonest arithmetic, without evalScalar's second dispatch.
+      case Op::FAdd: U[operandIndex(ins.dst)] = std::bit_cast<uint32_t>(rf(ins.a) + rf(ins.b)); continue;
+      case Op::FSub: U[operandIndex(ins.dst)] = std::bit_cast<uint32_t>(rf(ins.a) - rf(ins.b)); continue;
+      case Op::FMul: U[operandIndex(ins.dst)] = std::bit_cast<uint32_t>(rf(ins.a) * rf(ins.b)); continue;
       case Op::Jmp: pc = ins.a; continue;
       case Op::JmpIfNot:
         if (!read(ins.b)) pc = ins.a;

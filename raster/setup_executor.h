@@ -50,6 +50,13 @@ class SetupExecutor {
   }
 
  private:
+  // Every state value of the last state seen, so LoadState is a load (instances of one glBegin
+  // share their state).
+  void cacheState(const RasterState& state);
+  RasterState cached_state_;
+  bool state_cached_ = false;
+  float state_values_[kStateValueCount] = {};
+
   std::vector<uint32_t> regs_;
   std::vector<float> interp_;
   // The outgoing instance of a call: its parameter block and sequence points' channels.
