@@ -1,0 +1,117 @@
+// The sphere_impostors primitive (primitives/sphere_impostors.pfl): 60 overlapping spheres, each
+// with its own colour, under a rotating, uniformly scaling modelview, in one glBegin. Per pixel:
+// which sphere is nearest (its colour), coverage and window depth, against ray casts computed
+// here in double precision through the same matrices.
+#include <gtest/gtest.h>
+
+#include <primflow/gl.h>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "gl_context.h"
+
+namespace {
+
+constexpr int kN = 128;
+
+struct Ball {
+  glm::dvec3 centre;
+  double radius;
+  int id;  // its red channel: 40 + 3 id
+};
+
+glm::dmat4 projection() { return glm::frustum(-0.5, 0.5, -0.5, 0.5, 1.0, 20.0); }
+glm::dmat4 modelview() {
+  glm::dmat4 m = glm::translate(glm::dmat4(1), glm::dvec3(0.1, -0.2, -6));
+  m = glm::rotate(m, glm::radians(40.0), glm::normalize(glm::dvec3(0.3, 1, 0.2)));
+  return glm::scale(m, glm::dvec3(1.3));
+}
+
+// The nearest sphere the ray through window point (x, y) meets: (window depth, index), or -1.
+std::pair<double, int> castRay(const std::vector<Ball>& balls, double x, double y) {
+  const glm::dmat4 inv = glm::inverse(projection() * modelview());
+  const double nx = x / kN * 2 - 1, ny = y / kN * 2 - 1;
+  const glm::dvec4 a = inv * glm::dvec4(nx, ny, -1, 1), b = inv * glm::dvec4(nx, ny, 1, 1);
+  const glm::dvec3 o = glm::dvec3(a) / a.w, d = glm::dvec3(b) / b.w - o;
+  double best = 2;
+  int which = -1;
+  for (size_t i = 0; i < balls.size(); ++i) {
+    const glm::dvec3 oc = o - balls[i].centre;
+    const double qa = glm::dot(d, d), qb = glm::dot(oc, d), qc = glm::dot(oc, oc) - balls[i].radius * balls[i].radius;
+    const double disc = qb * qb - qa * qc;
+    if (disc < 0) continue;
+    double t = (-qb - std::sqrt(disc)) / qa;
+    if (t < 0) t = (-qb + std::sqrt(disc)) / qa;
+    if (t >= 0 && t <= 1 && t < best) best = t, which = static_cast<int>(i);
+  }
+  if (which < 0) return {-1, -1};
+  const glm::dvec4 c = projection() * modelview() * glm::dvec4(o + d * best, 1);
+  return {c.z / c.w * 0.5 + 0.5, which};
+}
+
+}  // namespace
+
+TEST(SphereImpostors, NearestSphereCoverageAndDepthMatchRayCastsInDouble) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<Ball> balls;
+  for (int i = 0; i < 60; ++i) balls.push_back({glm::dvec3(u(rng) * 1.4, u(rng) * 1.4, u(rng)), 0.12 + 0.1 * (u(rng) + 1), i});
+
+  pf::test::GlContext c(kN, kN);
+  const GLenum mode = pfglGetPrimitiveEXT("sphere_impostors");
+  ASSERT_NE(mode, 0u);
+  pfglMatrixMode(GL_PROJECTION);
+  pfglFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 20.0);
+  pfglMatrixMode(GL_MODELVIEW);
+  pfglTranslated(0.1, -0.2, -6);
+  pfglRotated(40.0, 0.3, 1, 0.2);
+  pfglScaled(1.3, 1.3, 1.3);
+  pfglClearColor(0, 0, 0, 0);
+  pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  pfglEnable(GL_DEPTH_TEST);
+  const GLuint centre = pfglGetParamNameEXT("center"), radius = pfglGetParamNameEXT("radius");
+  pfglBegin(mode);
+  for (const Ball& b : balls) {
+    pfglColor4ub(static_cast<GLubyte>(40 + 3 * b.id), 0, 0, 255);
+    pfglRastParamfEXT(radius, static_cast<float>(b.radius));
+    pfglRastParam3fEXT(centre, static_cast<float>(b.centre.x), static_cast<float>(b.centre.y),
+                       static_cast<float>(b.centre.z));
+    pfglSequencePointEXT();
+  }
+  pfglEnd();
+  pfglFinish();
+  ASSERT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  GLint w, h, bits;
+  void* data = nullptr;
+  ASSERT_TRUE(pfGetDepthBuffer(c.ctx, &w, &h, &bits, &data));
+  const float* depth = static_cast<const float*>(data);
+
+  int judged = 0, undecided = 0, covered = 0;
+  double max_error = 0;
+  for (int y = 0; y < kN; ++y)
+    for (int x = 0; x < kN; ++x) {
+      const auto [z, which] = castRay(balls, x + 0.5, y + 0.5);
+      bool edge = false;  // a rim or a crossing of two spheres within 0.02 pixel: either answer
+      for (int k = 0; k < 4 && !edge; ++k)
+        edge = castRay(balls, x + 0.5 + (k % 2 ? 0.02 : -0.02), y + 0.5 + (k / 2 ? 0.02 : -0.02)).second != which;
+      if (edge) {
+        ++undecided;
+        continue;
+      }
+      ++judged;
+      const unsigned char* p = c.at(x, y);
+      EXPECT_EQ(p[0], which < 0 ? 0 : 40 + 3 * which) << "(" << x << ", " << y << ")";
+      if (which < 0) continue;
+      ++covered;
+      const double err = std::abs(depth[size_t(y) * kN + x] - z);
+      max_error = std::max(max_error, err);
+      EXPECT_LT(err, 4e-6) << "(" << x << ", " << y << ")";
+    }
+  EXPECT_GT(covered, 3000);
+  EXPECT_LT(undecided, judged / 20);
+}
