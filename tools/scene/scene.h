@@ -99,10 +99,14 @@ Scene loadScene(const std::string& path);
 // Parses scene text (`path` names it in messages and resolves relative file names).
 Scene parseScene(const std::string& text, const std::string& path);
 
-// Draws the scene into the current context at width x height: compiles its sources, sets the
-// camera, lights and materials, and draws every object, then glFinish. Throws SceneError
-// naming the object's line when the context rejects something (unknown primitive, a parameter
-// missing or of the wrong size).
-void drawScene(const Scene& scene, int width, int height);
+// Compiles the scene's primitive sources into the current context (pfglCompilePrimitivesEXT);
+// throws SceneError with the compiler's diagnostics.
+void compileSceneSources(const Scene& scene);
+
+// Draws the scene into the current context at width x height: compiles its sources (unless
+// they already are, compile_sources = false), sets the camera, lights and materials, and draws
+// every object, then glFinish. Throws SceneError naming the object's line when the context
+// rejects something (unknown primitive, a parameter missing or of the wrong size).
+void drawScene(const Scene& scene, int width, int height, bool compile_sources = true);
 
 }  // namespace pf::scene

@@ -27,19 +27,6 @@ void setVec4(void (*f)(GLenum, GLenum, const GLfloat*), GLenum a, GLenum b, cons
   f(a, b, f4);
 }
 
-void compileSources(const Scene& s) {
-  for (const auto& [file, text] : s.sources) {
-    if (pfglCompilePrimitivesEXT(text.c_str()) != 0) continue;
-    std::vector<char> log(1 << 16);
-    pfglGetCompileLogEXT(0, static_cast<GLsizei>(log.size()), nullptr, log.data());
-    // The compiler names its input "moduleN.pfl": put the file's own name in.
-    std::string text_log(log.data());
-    const size_t colon = text_log.find(".pfl:");
-    if (colon != std::string::npos) text_log = file + text_log.substr(colon + 4);
-    throw SceneError(text_log.empty() ? file + ": error: does not compile" : text_log);
-  }
-}
-
 void setCamera(const Camera& c, int width, int height) {
   pfglViewport(0, 0, width, height);
   pfglMatrixMode(GL_PROJECTION);
@@ -162,9 +149,22 @@ void drawObject(const Scene& s, const Object& o) {
 
 }  // namespace
 
-void drawScene(const Scene& s, int width, int height) {
+void compileSceneSources(const Scene& s) {
+  for (const auto& [file, text] : s.sources) {
+    if (pfglCompilePrimitivesEXT(text.c_str()) != 0) continue;
+    std::vector<char> log(1 << 16);
+    pfglGetCompileLogEXT(0, static_cast<GLsizei>(log.size()), nullptr, log.data());
+    // The compiler names its input "moduleN.pfl": put the file's own name in.
+    std::string text_log(log.data());
+    const size_t colon = text_log.find(".pfl:");
+    if (colon != std::string::npos) text_log = file + text_log.substr(colon + 4);
+    throw SceneError(text_log.empty() ? file + ": error: does not compile" : text_log);
+  }
+}
+
+void drawScene(const Scene& s, int width, int height, bool compile_sources) {
   pfglGetError();
-  compileSources(s);
+  if (compile_sources) compileSceneSources(s);
   pfglClearColor(static_cast<GLfloat>(s.background.r), static_cast<GLfloat>(s.background.g),
                  static_cast<GLfloat>(s.background.b), static_cast<GLfloat>(s.background.a));
   pfglClearDepth(1.0);

@@ -1,0 +1,21 @@
+# pfview's headless test: under Xvfb, pfview renders SCENE for a few frames in scripted mode and
+# writes primflow's last frame; pfrender writes the same view; the two PNGs must be identical.
+# Arguments: XVFB_RUN, PFVIEW, PFRENDER, SCENE (empty: the showcase), SIZE, WORK_DIR.
+file(MAKE_DIRECTORY ${WORK_DIR})
+set(view_png ${WORK_DIR}/pfview.png)
+set(render_png ${WORK_DIR}/pfrender.png)
+file(REMOVE ${view_png} ${render_png})
+execute_process(COMMAND ${XVFB_RUN} -a ${PFVIEW} ${SCENE} --size ${SIZE} --frames 3 --screenshot ${view_png}
+                RESULT_VARIABLE view_rc OUTPUT_VARIABLE view_out ERROR_VARIABLE view_err)
+if(NOT view_rc EQUAL 0)
+  message(FATAL_ERROR "pfview failed (${view_rc}):\n${view_out}${view_err}")
+endif()
+execute_process(COMMAND ${PFRENDER} ${SCENE} --size ${SIZE} -o ${render_png}
+                RESULT_VARIABLE render_rc ERROR_VARIABLE render_err)
+if(NOT render_rc EQUAL 0)
+  message(FATAL_ERROR "pfrender failed (${render_rc}):\n${render_err}")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${view_png} ${render_png} RESULT_VARIABLE same)
+if(NOT same EQUAL 0)
+  message(FATAL_ERROR "pfview's frame differs from pfrender's image: ${view_png} vs ${render_png}")
+endif()
