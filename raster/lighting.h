@@ -42,6 +42,8 @@ struct LightingState {
   GLenum color_material_face = GL_FRONT_AND_BACK;
   GLenum color_material_mode = GL_AMBIENT_AND_DIFFUSE;
   bool normalize = false, rescale_normal = false;
+  // GL_PER_PIXEL_LIGHTING_EXT: vertex primitives lit per pixel (the API plans the channels).
+  bool per_pixel_vertices = false;
 
   LightingState() {
     lights[0].diffuse = glm::vec4(1);

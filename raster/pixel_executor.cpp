@@ -90,7 +90,7 @@ void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* reco
     size_t t = static_cast<size_t>(ty) * kTileSize + tx;
     target.shade_ids[t] = shade_id;
     for (int ch = 0; ch < nch; ++ch) target.slots[layout.gbuffer_slot[ch]][t] = asF(staging_[static_cast<size_t>(ch) * kLanes + i]);
-    if (layout.surface_slot >= 0) {  // per-pixel lighting: P (divided by w) and N
+    if (layout.surface_slot >= 0 && !layout.surface_interpolated) {  // per-pixel lighting: P (divided by w) and N
       // (An instance that does not set N -- a callee of one that does -- has no surface: 0.)
       const bool has = prim.writes_normal;
       const float w = has ? asF(surface_[3 * kLanes + i]) : 1.0f;

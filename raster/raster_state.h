@@ -63,6 +63,9 @@ struct ChannelLayout {
   // Per-pixel lighting: the 6 G-buffer slots (P's x, y, z in eye coordinates, then N) from this
   // one, written for primitives that set N; -1: none.
   int surface_slot = -1;
+  // Those slots are filled by interpolated channels (vertex primitives lit per pixel), not by
+  // the primitive's P and N.
+  bool surface_interpolated = false;
 
   // Whether some channel is of a kind in `set` (bit 1 << kind).
   bool hasKinds(unsigned set) const {

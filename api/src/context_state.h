@@ -46,8 +46,13 @@ struct MatrixStack {
 };
 
 // One per-vertex shading parameter of the instances of a glBegin: 4 channels from `first`.
+constexpr GLuint kEyePositionChannel = 0xfffffff0u;  // (x, y, z, 1) in eye coordinates
+constexpr GLuint kEyeNormalChannel = 0xfffffff1u;    // the eye-space normal (x, y, z, 0)
+
 struct ShadingChannel {
-  GLuint param;  // name id; the colour's: its front (`back` false) or back (`back` true) lit colour
+  // Name id; the colour's: its front (`back` false) or back (`back` true) lit colour. Or one of
+  // the two internal groups of per-pixel lit vertices (kEyePositionChannel, kEyeNormalChannel).
+  GLuint param;
   bool back = false;
   InterpKind kind;
   int first;
@@ -165,7 +170,11 @@ struct PFcontextRec {
   // modelview, the normal matrix (rescaled as GL_RESCALE_NORMAL asks), and the channels of a
   // row's colour: 4, or 8 with two-sided lighting (front, then back).
   bool begin_lit = false;
-  bool begin_lit_per_pixel = false;  // sets N, no vertices: GL lighting per pixel (shading pass)
+  bool begin_lit_per_pixel = false;  // GL lighting per pixel in the shading pass: a primitive
+                                     // that sets N, or vertices under GL_PER_PIXEL_LIGHTING_EXT
+  // GL_PER_PIXEL_LIGHTING_EXT on a vertex primitive: each row carries its eye-space position
+  // and normal (two channel groups, interpolated perspective-correct) for the shading pass.
+  bool begin_vertices_per_pixel = false;
   glm::mat4 begin_modelview{1.0f};
   glm::mat3 begin_normal_matrix{1.0f};
   int row_channels = 4;

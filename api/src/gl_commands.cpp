@@ -187,7 +187,7 @@ void pfglDepthRange(GLclampd zNear, GLclampd zFar) {
 }
 
 // The capabilities primflow has: depth test, face culling, lighting and its lights, colour
-// material, normalising and rescaling normals.
+// material, normalising and rescaling normals, per-pixel lighting of vertex primitives.
 static bool* capability(PFcontextRec& ctx, GLenum cap) {
   if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + pf::kMaxLights) return &ctx.lighting.lights[cap - GL_LIGHT0].enabled;
   switch (cap) {
@@ -197,6 +197,7 @@ static bool* capability(PFcontextRec& ctx, GLenum cap) {
     case GL_COLOR_MATERIAL: return &ctx.lighting.color_material;
     case GL_NORMALIZE: return &ctx.lighting.normalize;
     case GL_RESCALE_NORMAL: return &ctx.lighting.rescale_normal;
+    case GL_PER_PIXEL_LIGHTING_EXT: return &ctx.lighting.per_pixel_vertices;
     default: ctx.setError(GL_INVALID_ENUM); return nullptr;
   }
 }

@@ -217,21 +217,30 @@ void rowChannels(PFcontextRec& ctx) {
   ctx.row_shading.resize(at + static_cast<size_t>(ctx.row_channels));
   float* out = ctx.row_shading.data() + at;
   glm::vec4 lit[2];
-  if (ctx.begin_lit) {
+  glm::vec3 eye(0.0f), n(0.0f);
+  if (ctx.begin_lit || ctx.begin_vertices_per_pixel) {
     const pf::ParamValue& v = ctx.param(ctx.vertex_param);
     const pf::ParamValue& nv = ctx.param(ctx.normal_param);
     glm::vec4 p(static_cast<float>(v.v[0]), static_cast<float>(v.v[1]), v.count > 2 ? static_cast<float>(v.v[2]) : 0.0f,
                 v.count > 3 ? static_cast<float>(v.v[3]) : 1.0f);
     glm::vec4 eye4 = ctx.begin_modelview * p;
-    glm::vec3 eye = eye4.w != 0.0f ? glm::vec3(eye4) / eye4.w : glm::vec3(eye4);
-    glm::vec3 n = ctx.begin_normal_matrix *
-                  glm::vec3(static_cast<float>(nv.v[0]), static_cast<float>(nv.v[1]), static_cast<float>(nv.v[2]));
+    eye = eye4.w != 0.0f ? glm::vec3(eye4) / eye4.w : glm::vec3(eye4);
+    n = ctx.begin_normal_matrix *
+        glm::vec3(static_cast<float>(nv.v[0]), static_cast<float>(nv.v[1]), static_cast<float>(nv.v[2]));
     if (ctx.lighting.normalize && glm::length(n) > 0.0f) n = glm::normalize(n);
+  }
+  if (ctx.begin_lit) {
     lit[0] = pf::litColor(ctx.lighting, eye, n, 0);
     if (ctx.back_color_channel >= 0) lit[1] = pf::litColor(ctx.lighting, eye, n, 1);
   }
   for (const pf::ShadingChannel& s : ctx.shading) {
     float* dst = out + s.first;
+    if (s.param == pf::kEyePositionChannel || s.param == pf::kEyeNormalChannel) {
+      const glm::vec3& v = s.param == pf::kEyePositionChannel ? eye : n;
+      for (int k = 0; k < 3; ++k) dst[k] = v[k];
+      dst[3] = s.param == pf::kEyePositionChannel ? 1.0f : 0.0f;
+      continue;
+    }
     if (s.param == ctx.color_param) {
       const glm::vec4& c = ctx.begin_lit ? lit[s.back ? 1 : 0] : ctx.current_color;
       for (int k = 0; k < 4; ++k) dst[k] = c[k];
@@ -255,6 +264,7 @@ void planShading(PFcontextRec& ctx, GLenum mode, const pf::CompiledPrimitive& pr
   layout.gbuffer_slot.clear();
   layout.shared.clear();
   layout.surface_slot = -1;
+  layout.surface_interpolated = false;
   ctx.row_channels = 0;
   if (!prim.has_interp_data) return;
   std::vector<std::pair<GLuint, GLenum>>& bound = ctx.planned_bindings;
@@ -266,6 +276,14 @@ void planShading(PFcontextRec& ctx, GLenum mode, const pf::CompiledPrimitive& pr
   if (!has_color) bound.insert(bound.begin(), {ctx.color_param, GL_PERSPECTIVE_LINEAR_INTERPOLATOR_EXT});
   for (int kind = 0; kind < pf::kInterpKindCount; ++kind) {
     layout.kind_begin[kind] = 4 * static_cast<int>(ctx.shading.size());
+    if (kind == static_cast<int>(pf::InterpKind::PerspectiveLinear) && ctx.begin_vertices_per_pixel) {
+      // Per-pixel lit vertices: the eye-space position and normal, interpolated perspective-
+      // correct, are the shading pass's P and N (their x, y, z in six consecutive G-buffer
+      // slots, the w's after them; see below).
+      for (GLuint internal : {pf::kEyePositionChannel, pf::kEyeNormalChannel})
+        ctx.shading.push_back(
+            {internal, false, pf::InterpKind::PerspectiveLinear, 4 * static_cast<int>(ctx.shading.size()), nullptr});
+    }
     for (const auto& [param, interpolator] : bound) {
       const pf::CompiledPrimitive* shared = ctx.primitives.interpolator(interpolator);
       pf::InterpKind k = shared                                         ? pf::InterpKind::Shared
@@ -292,6 +310,16 @@ void planShading(PFcontextRec& ctx, GLenum mode, const pf::CompiledPrimitive& pr
   ctx.row_channels = 4 * static_cast<int>(ctx.shading.size());
   layout.count = ctx.row_channels;
   for (int c = 0; c < ctx.row_channels; ++c) layout.gbuffer_slot.push_back(c);
+  for (const pf::ShadingChannel& s : ctx.shading) {
+    if (s.param != pf::kEyePositionChannel) continue;
+    // Position x, y, z -> slots f, f+1, f+2; normal x, y, z (channels f+4..f+6) -> f+3..f+5;
+    // the two w's -> f+6, f+7.
+    const int f = s.first;
+    const int slot_of[8] = {f, f + 1, f + 2, f + 6, f + 3, f + 4, f + 5, f + 7};
+    for (int k = 0; k < 8; ++k) layout.gbuffer_slot[f + k] = slot_of[k];
+    layout.surface_slot = f;
+    layout.surface_interpolated = true;
+  }
 }
 
 float unorm(GLubyte v) { return static_cast<float>(v) / 255.0f; }
@@ -336,10 +364,13 @@ void pfglBegin(GLenum mode) {
   ctx->begin_mode = mode;
   ctx->begin_primitive = it->second.get();
   ctx->begin_mvp = ctx->projection.top * ctx->modelview.top;
-  // GL lights vertices: a primitive with a `vertex` parameter is lit per sequence point.
-  ctx->begin_lit = ctx->lighting.enabled && ctx->begin_primitive->findParam("vertex") != nullptr;
+  // GL lights vertices: a primitive with a `vertex` parameter is lit per sequence point -- or,
+  // under GL_PER_PIXEL_LIGHTING_EXT, per pixel from its interpolated position and normal.
+  const bool vertices = ctx->lighting.enabled && ctx->begin_primitive->findParam("vertex") != nullptr;
+  ctx->begin_vertices_per_pixel = vertices && ctx->lighting.per_pixel_vertices;
+  ctx->begin_lit = vertices && !ctx->begin_vertices_per_pixel;
   ctx->begin_modelview = ctx->modelview.top;
-  if (ctx->begin_lit) {
+  if (vertices) {
     // Normals go by the inverse transpose of the modelview's upper 3x3; GL_RESCALE_NORMAL
     // divides by the length of the inverse's third row (GL 1.5 section 2.11.3).
     glm::mat3 inverse = glm::inverse(glm::mat3(ctx->modelview.top));
@@ -354,6 +385,8 @@ void pfglBegin(GLenum mode) {
   // follow its channels in the G-buffer.
   ctx->begin_lit_per_pixel = ctx->lighting.enabled && !ctx->begin_lit && ctx->begin_primitive->writes_normal;
   if (ctx->begin_lit_per_pixel) ctx->begin_layout.surface_slot = ctx->row_channels;
+  // (Vertices lit per pixel have their surface slots already, among their channels.)
+  if (ctx->begin_vertices_per_pixel && ctx->begin_layout.surface_interpolated) ctx->begin_lit_per_pixel = true;
   planFeed(*ctx, *ctx->begin_primitive);
   ctx->rows_count = 0;
   ctx->rows.clear();

@@ -57,6 +57,7 @@ bool query(const PFcontextRec& ctx, GLenum pname, Query& q) {
     case GL_COLOR_MATERIAL_FACE: set({double(ctx.lighting.color_material_face)}); return true;
     case GL_COLOR_MATERIAL_PARAMETER: set({double(ctx.lighting.color_material_mode)}); return true;
     case GL_NORMALIZE: set({ctx.lighting.normalize ? 1.0 : 0.0}); return true;
+    case GL_PER_PIXEL_LIGHTING_EXT: set({ctx.lighting.per_pixel_vertices ? 1.0 : 0.0}); return true;
     case GL_RESCALE_NORMAL: set({ctx.lighting.rescale_normal ? 1.0 : 0.0}); return true;
     case GL_MAX_LIGHTS: set({double(pf::kMaxLights)}); return true;
     case GL_LIGHT_MODEL_AMBIENT: {

@@ -4,7 +4,8 @@
 // primflow renders every frame into a buffer; the window's own GL context only shows it (a
 // texture over the window) with a text overlay. Mouse: left-drag orbits, right-drag (or
 // shift + left) pans, the wheel zooms. Keys: R reload the scene file, S save a screenshot,
-// T cycle the thread count, Home reset the camera, H help, Q or Esc quit.
+// T cycle the thread count, L switch GL polygons between per-vertex and per-pixel lighting,
+// Home reset the camera, H help, Q or Esc quit.
 // While the camera moves the frame is rendered at a quarter of the window's size, and at full
 // size once it rests (progressive refinement). With --frames N it renders N full-size frames
 // (turning the camera --orbit degrees about the target before each after the first), saves
@@ -142,7 +143,8 @@ std::vector<std::string> overlay(const Viewer& v, const pf::view::FrameRenderer&
   if (v.show_help) {
     lines.push_back(threads);
     lines.push_back("left drag: orbit   right drag / shift+left: pan   wheel: zoom");
-    lines.push_back("R: reload   S: screenshot   T: threads   Home: reset view   Q/Esc: quit");
+    lines.push_back("R: reload   S: screenshot   T: threads   L: per-pixel/per-vertex lighting");
+    lines.push_back("Home: reset view   Q/Esc: quit");
   } else {
     lines.push_back(threads + "   H: help");
   }
@@ -235,6 +237,11 @@ int main(int argc, char** argv) {
         if (key == GLFW_KEY_R) {
           loadScene(v);
           if (v.errors.empty()) v.status = "reloaded";
+        } else if (key == GLFW_KEY_L && v.scene_ok) {
+          v.scene.per_pixel = !v.scene.per_pixel;
+          v.status = v.scene.lighting ? (v.scene.per_pixel ? "polygons lit per pixel" : "polygons lit per vertex")
+                                      : "the scene has no lighting";
+          v.dirty = true;
         } else if (key == GLFW_KEY_H) {
           v.show_help = !v.show_help;
         } else if (key == GLFW_KEY_HOME && v.scene_ok) {

@@ -85,6 +85,7 @@ struct Scene {
   bool lighting = false;
   glm::dvec4 global_ambient{0.2, 0.2, 0.2, 1};
   bool two_side = false, local_viewer = false;
+  bool per_pixel = false;  // GL polygons lit per pixel (GL_PER_PIXEL_LIGHTING_EXT)
   std::vector<Light> lights;
   std::vector<std::pair<std::string, std::string>> sources;  // (path, text) of .pfl files
   std::map<std::string, Material> materials;

@@ -53,6 +53,8 @@ void setLights(const Scene& s) {
   }
   pfglEnable(GL_LIGHTING);
   pfglEnable(GL_NORMALIZE);
+  if (s.per_pixel) pfglEnable(GL_PER_PIXEL_LIGHTING_EXT);
+  else pfglDisable(GL_PER_PIXEL_LIGHTING_EXT);
   pfglEnable(GL_COLOR_MATERIAL);
   pfglColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
   setVec4([](GLenum, GLenum p, const GLfloat* v) { pfglLightModelfv(p, v); }, 0, GL_LIGHT_MODEL_AMBIENT,

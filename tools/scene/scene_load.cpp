@@ -211,11 +211,12 @@ Light readLight(const Reader& r, const json& j, const std::string& p) {
 
 void readLighting(const Reader& r, const json& j, Scene& s) {
   const std::string p = "/lighting";
-  r.onlyKeys(j, p, {"ambient", "two_side", "local_viewer", "lights"});
+  r.onlyKeys(j, p, {"ambient", "two_side", "local_viewer", "per_pixel", "lights"});
   s.lighting = true;
   if (j.contains("ambient")) s.global_ambient = r.color(j["ambient"], p + "/ambient");
   if (j.contains("two_side")) s.two_side = r.boolean(j["two_side"], p + "/two_side");
   if (j.contains("local_viewer")) s.local_viewer = r.boolean(j["local_viewer"], p + "/local_viewer");
+  if (j.contains("per_pixel")) s.per_pixel = r.boolean(j["per_pixel"], p + "/per_pixel");
   if (j.contains("lights")) {
     const json& lights = j["lights"];
     if (!lights.is_array() || lights.size() > 8) r.fail(p + "/lights", "expected an array of at most 8 lights");

@@ -39,7 +39,8 @@ void pfglShadeModel(GLenum mode);
 
 /* Lighting (GL 1.5 section 2.14): 8 lights, front and back materials, the light model,
  * GL_COLOR_MATERIAL, GL_NORMALIZE, GL_RESCALE_NORMAL. Vertex primitives (those with a `vertex`
- * parameter) are lit per vertex, as GL lights them. glMaterial is allowed inside glBegin. */
+ * parameter) are lit per vertex, as GL lights them -- or per pixel with
+ * glEnable(GL_PER_PIXEL_LIGHTING_EXT). glMaterial is allowed inside glBegin. */
 void pfglLightf(GLenum light, GLenum pname, GLfloat param);
 void pfglLighti(GLenum light, GLenum pname, GLint param);
 void pfglLightfv(GLenum light, GLenum pname, const GLfloat *params);
@@ -131,6 +132,9 @@ void pfglTexCoord2f(GLfloat s, GLfloat t);
 #define GL_TOO_MANY_ITERATIONS_EXT 0x31001 /* error: a primitive program hit the iteration cap */
 #define GL_PERSPECTIVE_LINEAR_INTERPOLATOR_EXT 0x31010 /* pfglMaterialInterpEXT interpolators */
 #define GL_LINEAR_INTERPOLATOR_EXT 0x31011
+/* glEnable capability: vertex primitives (triangles, quads, ...) lit per pixel from their
+ * interpolated eye-space position and normal instead of per vertex (off initially). */
+#define GL_PER_PIXEL_LIGHTING_EXT 0x31020
 #define GL_FIRST_INTERPOLATOR_EXT 0x31400  /* pfglGetInterpolatorEXT's ids start here */
 #define GL_FIRST_PRIMITIVE_MODE_EXT 0x31800 /* glBegin modes of compiled primitives start here */
 #define GL_FIRST_PARAM_NAME_EXT 0x38000     /* pfglGetParamNameEXT's ids start here */
