@@ -10,7 +10,9 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "gl_context.h"
@@ -93,6 +95,7 @@ TEST_P(Torus, CoverageAndDepthMatchSphereTracingInDouble) {
   const float* depth = static_cast<const float*>(data);
 
   int hits = 0, undecided = 0;
+  double max_depth_error = 0;
   for (int y = 0; y < kN; ++y)
     for (int x = 0; x < kN; ++x) {
       const double z = castRay(tc, x + 0.5, y + 0.5);
@@ -110,8 +113,11 @@ TEST_P(Torus, CoverageAndDepthMatchSphereTracingInDouble) {
       EXPECT_EQ(ctx.at(x, y)[3] != 0, z >= 0) << tc.name << " (" << x << ", " << y << ")";
       if (z < 0) continue;
       ++hits;
+      max_depth_error = std::max(max_depth_error, std::abs(depth[size_t(y) * kN + x] - z));
       EXPECT_NEAR(depth[size_t(y) * kN + x], z, 4e-6) << tc.name << " (" << x << ", " << y << ")";
     }
+  std::printf("  %s: %d pixels hit and judged, %d undecided; max depth error %.2g\n", tc.name, hits, undecided,
+              max_depth_error);
   EXPECT_GT(hits, tc.min_hits) << tc.name;
   EXPECT_LT(undecided, hits / 4 + 40) << tc.name;
 }
