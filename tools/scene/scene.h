@@ -97,8 +97,10 @@ int lineOf(const Scene& scene, const Origin& origin);
 
 // Reads a scene file; throws SceneError.
 Scene loadScene(const std::string& path);
-// Parses scene text (`path` names it in messages and resolves relative file names).
-Scene parseScene(const std::string& text, const std::string& path);
+// Parses scene text (`path` names it in messages and resolves relative file names). With
+// allow_files false, a scene naming a file (an OBJ mesh, a primitive source) is refused instead
+// of read (the fuzzer's setting).
+Scene parseScene(const std::string& text, const std::string& path, bool allow_files = true);
 
 // Compiles the scene's primitive sources into the current context (pfglCompilePrimitivesEXT);
 // throws SceneError with the compiler's diagnostics.

@@ -46,7 +46,8 @@ std::string keyName(const std::string& pointer) {
 
 class Reader {
  public:
-  Reader(const std::string& text, const std::string& path) : text_(text), path_(path) {}
+  Reader(const std::string& text, const std::string& path, bool allow_files)
+      : text_(text), path_(path), allow_files_(allow_files) {}
 
   // The lines are found only for an error: a scene of 100k spheres is read without mapping
   // its 300k values to lines.
@@ -129,7 +130,8 @@ class Reader {
     return out;
   }
   // A path in the scene relative to the scene file's folder.
-  std::string relativePath(const std::string& file) const {
+  std::string relativePath(const std::string& file, const std::string& p) const {
+    if (!allow_files_) fail(p, "files are not read here");
     const std::filesystem::path f(file);
     if (f.is_absolute()) return file;
     return (std::filesystem::path(path_).parent_path() / f).string();
@@ -138,6 +140,7 @@ class Reader {
  private:
   const std::string& text_;
   std::string path_;
+  bool allow_files_;
 };
 
 void readImage(const Reader& r, const json& j, Scene& s) {
@@ -284,7 +287,7 @@ Object readObject(const Reader& r, const json& j, const std::string& p, const Sc
   if (j.contains("mesh")) {
     for (const char* k : {"instances", "vertices", "normals", "colors"})
       if (j.contains(k)) r.fail(p + "/" + k, "a mesh takes its vertices from its file");
-    const std::string file = r.relativePath(r.string(j["mesh"], p + "/mesh"));
+    const std::string file = r.relativePath(r.string(j["mesh"], p + "/mesh"), p + "/mesh");
     std::string error;
     if (!loadObjMesh(file, o.vertices, o.normals, error)) r.fail(p + "/mesh", error);
     o.primitive = "triangles";
@@ -321,7 +324,7 @@ Object readObject(const Reader& r, const json& j, const std::string& p, const Sc
 
 }  // namespace
 
-Scene parseScene(const std::string& text, const std::string& path) {
+Scene parseScene(const std::string& text, const std::string& path, bool allow_files) {
   json doc;
   try {
     doc = json::parse(text);
@@ -335,7 +338,7 @@ Scene parseScene(const std::string& text, const std::string& path) {
     throw SceneError(path + ":" + std::to_string(line) + ": error: not valid JSON: " +
                      (colon != std::string::npos ? what.substr(colon + 2) : what));
   }
-  const Reader r(text, path);
+  const Reader r(text, path, allow_files);
   Scene s;
   s.path = path;
   s.text = std::make_shared<const std::string>(text);
@@ -348,7 +351,7 @@ Scene parseScene(const std::string& text, const std::string& path) {
     if (!src.is_array()) r.fail("/primitives", "expected an array of .pfl file names");
     for (size_t i = 0; i < src.size(); ++i) {
       const std::string q = "/primitives/" + std::to_string(i);
-      const std::string file = r.relativePath(r.string(src[i], q));
+      const std::string file = r.relativePath(r.string(src[i], q), q);
       bool ok = false;
       std::string body = readFile(file, ok);
       if (!ok) r.fail(q, "cannot read '" + file + "'");
