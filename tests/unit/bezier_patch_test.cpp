@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "gl_context.h"
+#include "pixel_judging.h"
 
 namespace {
 
@@ -400,10 +401,8 @@ TEST_P(BezierPatch, CoverageAndDepthMatchSubdivisionInDouble) {
   drawPatch(pc.net);
   pfglFinish();
   ASSERT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
-  GLint w, h, bits;
-  void* data = nullptr;
-  ASSERT_TRUE(pfGetDepthBuffer(ctx.ctx, &w, &h, &bits, &data));
-  const float* depth = static_cast<const float*>(data);
+  const float* depth = ctx.depth();
+  ASSERT_NE(depth, nullptr);
 
   const Reference ref(pc);
   int hits = 0, misses = 0, undecided = 0, wrong = 0;
@@ -413,12 +412,11 @@ TEST_P(BezierPatch, CoverageAndDepthMatchSubdivisionInDouble) {
       const Hit r = ref.cast(x + 0.5, y + 0.5);
       // A silhouette, a border or a fold within 0.02 pixel (coverage or the visible layer
       // changes there): float and double may decide differently. Not judged.
-      bool edge = false;
-      for (int k = 0; k < 4 && !edge; ++k) {
-        const Hit r2 = ref.cast(x + 0.5 + (k % 2 ? 0.02 : -0.02), y + 0.5 + (k / 2 ? 0.02 : -0.02));
-        edge = r2.hit != r.hit || (r.hit && std::abs(r2.z - r.z) > 1e-3);
-      }
-      if (edge) {
+      const auto changes = [&](double px, double py) {
+        const Hit r2 = ref.cast(px, py);
+        return r2.hit != r.hit || (r.hit && std::abs(r2.z - r.z) > 1e-3);
+      };
+      if (pf::test::changesNear(x, y, changes)) {
         ++undecided;
         continue;
       }
@@ -522,12 +520,11 @@ TEST_P(BezierShading, MatchesTheExactSurfaceInDouble) {
     for (int x = pc.stride / 2; x < n; x += pc.stride) {
       const Hit r = ref.cast(x + 0.5, y + 0.5);
       if (!r.hit || ctx.at(x, y)[3] == 0) continue;  // coverage is the other test's
-      bool edge = false;
-      for (int k = 0; k < 4 && !edge; ++k) {
-        const Hit r2 = ref.cast(x + 0.5 + (k % 2 ? 0.02 : -0.02), y + 0.5 + (k / 2 ? 0.02 : -0.02));
-        edge = r2.hit != r.hit || std::abs(r2.z - r.z) > 1e-3;
-      }
-      if (edge) continue;
+      const auto changes = [&](double px, double py) {
+        const Hit r2 = ref.cast(px, py);
+        return r2.hit != r.hit || std::abs(r2.z - r.z) > 1e-3;
+      };
+      if (pf::test::changesNear(x, y, changes)) continue;
       glm::dvec3 want;
       if (sc.shading == Shading::Colours) {
         want = glm::dvec3(r.u, r.v, 0.25);

@@ -22,6 +22,12 @@ struct GlContext {
   GlContext(const GlContext&) = delete;
   GlContext& operator=(const GlContext&) = delete;
   const unsigned char* at(int x, int y) const { return &px[(size_t(y) * width + x) * 4]; }
+  // The depth buffer (floats, window depth, row 0 at the bottom); nullptr if there is none.
+  const float* depth() const {
+    GLint w, h, bits;
+    void* data = nullptr;
+    return pfGetDepthBuffer(ctx, &w, &h, &bits, &data) ? static_cast<const float*>(data) : nullptr;
+  }
 };
 
 }  // namespace pf::test

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "gl_context.h"
+#include "pixel_judging.h"
 
 namespace {
 
@@ -193,10 +194,8 @@ TEST_P(Quadrics, CoverageAndDepthMatchRayCastsInDouble) {
   shape.draw();
   pfglFinish();
   ASSERT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
-  GLint w, h, bits;
-  void* data = nullptr;
-  ASSERT_TRUE(pfGetDepthBuffer(c.ctx, &w, &h, &bits, &data));
-  const float* depth = static_cast<const float*>(data);
+  const float* depth = c.depth();
+  ASSERT_NE(depth, nullptr);
 
   int hits = 0, misses = 0, undecided = 0;
   double max_depth_error = 0;
@@ -205,12 +204,7 @@ TEST_P(Quadrics, CoverageAndDepthMatchRayCastsInDouble) {
       const auto [z, piece] = castRay(shape, x + 0.5, y + 0.5);
       // Near a silhouette, a region's border or where two pieces meet, float and double may
       // decide differently: such pixels (another answer within 0.02 pixel) are not judged.
-      bool edge = false;
-      for (int k = 0; k < 4 && !edge; ++k) {
-        const auto [z2, piece2] = castRay(shape, x + 0.5 + (k % 2 ? 0.02 : -0.02), y + 0.5 + (k / 2 ? 0.02 : -0.02));
-        edge = piece2 != piece;
-      }
-      if (edge) {
+      if (pf::test::changesNear(x, y, [&](double px, double py) { return castRay(shape, px, py).second != piece; })) {
         ++undecided;
         continue;
       }

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "gl_context.h"
+#include "pixel_judging.h"
 
 namespace {
 
@@ -87,20 +88,16 @@ TEST(SphereImpostors, NearestSphereCoverageAndDepthMatchRayCastsInDouble) {
   pfglEnd();
   pfglFinish();
   ASSERT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
-  GLint w, h, bits;
-  void* data = nullptr;
-  ASSERT_TRUE(pfGetDepthBuffer(c.ctx, &w, &h, &bits, &data));
-  const float* depth = static_cast<const float*>(data);
+  const float* depth = c.depth();
+  ASSERT_NE(depth, nullptr);
 
   int judged = 0, undecided = 0, covered = 0;
   double max_error = 0;
   for (int y = 0; y < kN; ++y)
     for (int x = 0; x < kN; ++x) {
       const auto [z, which] = castRay(balls, x + 0.5, y + 0.5);
-      bool edge = false;  // a rim or a crossing of two spheres within 0.02 pixel: either answer
-      for (int k = 0; k < 4 && !edge; ++k)
-        edge = castRay(balls, x + 0.5 + (k % 2 ? 0.02 : -0.02), y + 0.5 + (k / 2 ? 0.02 : -0.02)).second != which;
-      if (edge) {
+      // A rim or a crossing of two spheres within 0.02 pixel: either answer.
+      if (pf::test::changesNear(x, y, [&](double px, double py) { return castRay(balls, px, py).second != which; })) {
         ++undecided;
         continue;
       }

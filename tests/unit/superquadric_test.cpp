@@ -202,10 +202,8 @@ TEST_P(Superquadric, CoverageDepthAndNormalMatchARayCastInDouble) {
   pfglEnd();
   pfglFinish();
   ASSERT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
-  GLint w, h, bits;
-  void* data = nullptr;
-  ASSERT_TRUE(pfGetDepthBuffer(ctx.ctx, &w, &h, &bits, &data));
-  const float* depth = static_cast<const float*>(data);
+  const float* depth = ctx.depth();
+  ASSERT_NE(depth, nullptr);
 
   int hits = 0, undecided = 0, shaded = 0, inside = 0;
   double max_depth_error = 0, max_slack = 0, max_lit_error = 0;

@@ -16,6 +16,7 @@
 #include <string>
 
 #include "gl_context.h"
+#include "pixel_judging.h"
 
 namespace {
 
@@ -89,10 +90,8 @@ TEST_P(Torus, CoverageAndDepthMatchSphereTracingInDouble) {
   pfglEnd();
   pfglFinish();
   ASSERT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
-  GLint w, h, bits;
-  void* data = nullptr;
-  ASSERT_TRUE(pfGetDepthBuffer(ctx.ctx, &w, &h, &bits, &data));
-  const float* depth = static_cast<const float*>(data);
+  const float* depth = ctx.depth();
+  ASSERT_NE(depth, nullptr);
 
   int hits = 0, undecided = 0;
   double max_depth_error = 0;
@@ -101,12 +100,11 @@ TEST_P(Torus, CoverageAndDepthMatchSphereTracingInDouble) {
       const double z = castRay(tc, x + 0.5, y + 0.5);
       // A silhouette within 0.02 pixel, or a jump of depth there (a rim, where the tube hides
       // itself): float and double may decide differently. Not judged.
-      bool edge = false;
-      for (int k = 0; k < 4 && !edge; ++k) {
-        const double z2 = castRay(tc, x + 0.5 + (k % 2 ? 0.02 : -0.02), y + 0.5 + (k / 2 ? 0.02 : -0.02));
-        edge = (z2 < 0) != (z < 0) || std::abs(z2 - z) > 1e-3;
-      }
-      if (edge) {
+      const auto jumps = [&](double px, double py) {
+        const double z2 = castRay(tc, px, py);
+        return (z2 < 0) != (z < 0) || std::abs(z2 - z) > 1e-3;
+      };
+      if (pf::test::changesNear(x, y, jumps)) {
         ++undecided;
         continue;
       }
