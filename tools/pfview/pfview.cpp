@@ -51,6 +51,7 @@ struct Viewer {
   bool dirty = true;       // the camera or the scene changed since the last full-size frame
   bool show_help = false;
   int screenshots = 0;
+  std::vector<int> keys;  // pressed since the last frame; handled in the loop (they need the renderer)
 };
 
 // Splits a message into lines for the overlay (and echoes it on stderr).
@@ -115,16 +116,10 @@ void onScroll(GLFWwindow* w, double, double dy) {
 
 void onResize(GLFWwindow* w, int, int) { viewerOf(w).dirty = true; }
 
-// Keys that need the renderer are handled in the loop: this only records them.
-struct KeyQueue {
-  std::vector<int> keys;
-};
-KeyQueue g_keys;
-
 void onKey(GLFWwindow* w, int key, int, int action, int) {
   if (action != GLFW_PRESS) return;
   if (key == GLFW_KEY_ESCAPE || key == GLFW_KEY_Q) glfwSetWindowShouldClose(w, GLFW_TRUE);
-  g_keys.keys.push_back(key);
+  viewerOf(w).keys.push_back(key);
 }
 
 bool saveFrame(const pf::view::FrameRenderer& r, const std::string& path, std::string& error) {
@@ -233,7 +228,7 @@ int main(int argc, char** argv) {
         glfwWaitEvents();
         continue;
       }
-      for (int key : g_keys.keys) {
+      for (int key : v.keys) {
         if (key == GLFW_KEY_R) {
           loadScene(v);
           if (v.errors.empty()) v.status = "reloaded";
@@ -260,7 +255,7 @@ int main(int argc, char** argv) {
           std::cerr << "pfview: " << v.status << "\n";
         }
       }
-      g_keys.keys.clear();
+      v.keys.clear();
 
       // Progressive refinement: a quarter-size frame while the camera moves, the full one once
       // it has rested for 0.2 s (and never a coarse one in scripted mode).

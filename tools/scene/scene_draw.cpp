@@ -8,7 +8,10 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "scene/scene.h"
@@ -81,10 +84,26 @@ void setLights(const Scene& s) {
   }
 }
 
-void setParams(const std::vector<ParamValue>& params) {
+// Parameter name ids by name, looked up once per scene (a scene of 100k spheres sets 200k
+// values).
+class ParamIds {
+ public:
+  GLuint operator()(const std::string& name) {
+    auto it = ids_.find(name);
+    if (it == ids_.end()) it = ids_.emplace(name, pfglGetParamNameEXT(name.c_str())).first;
+    return it->second;
+  }
+
+ private:
+  std::unordered_map<std::string, GLuint> ids_;
+};
+
+void setParams(const std::vector<ParamValue>& params, ParamIds& ids) {
+  GLfloat v[16];
   for (const ParamValue& p : params) {
-    std::vector<GLfloat> v(p.values.begin(), p.values.end());
-    pfglRastParamfvEXT(pfglGetParamNameEXT(p.name.c_str()), static_cast<GLsizei>(v.size()), v.data());
+    const size_t n = std::min<size_t>(p.values.size(), 16);  // loading keeps 1..16 values
+    std::copy_n(p.values.begin(), n, v);
+    pfglRastParamfvEXT(ids(p.name), static_cast<GLsizei>(n), v);
   }
 }
 
@@ -100,7 +119,7 @@ GLenum interpolatorId(const Scene& s, const Material& m, const std::string& name
   return id;
 }
 
-void drawObject(const Scene& s, const Object& o) {
+void drawObject(const Scene& s, const Object& o, ParamIds& ids) {
   const GLenum mode = pfglGetPrimitiveEXT(o.primitive.c_str());
   if (mode == 0) {
     pfglGetError();
@@ -109,14 +128,14 @@ void drawObject(const Scene& s, const Object& o) {
   static const Material kDefault;
   const Material& m = o.material.empty() ? kDefault : s.materials.at(o.material);
   for (const auto& [param, interp] : m.interpolators)
-    pfglMaterialInterpEXT(pfglGetParamNameEXT(param.c_str()), mode, interpolatorId(s, m, interp));
+    pfglMaterialInterpEXT(ids(param), mode, interpolatorId(s, m, interp));
   setVec4(pfglMaterialfv, GL_FRONT_AND_BACK, GL_SPECULAR, m.specular);
   setVec4(pfglMaterialfv, GL_FRONT_AND_BACK, GL_EMISSION, m.emission);
   pfglMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, static_cast<GLfloat>(m.shininess));
   pfglColor4f(static_cast<GLfloat>(m.color.r), static_cast<GLfloat>(m.color.g), static_cast<GLfloat>(m.color.b),
               static_cast<GLfloat>(m.color.a));
-  setParams(m.params);
-  setParams(o.params);
+  setParams(m.params, ids);
+  setParams(o.params, ids);
   if (pfglGetError() != GL_NO_ERROR) fail(s, o.origin, "a material or parameter value was refused");
 
   pfglPushMatrix();
@@ -134,7 +153,7 @@ void drawObject(const Scene& s, const Object& o) {
     }
   } else {
     for (const auto& point : o.points) {
-      setParams(point);
+      setParams(point, ids);
       pfglSequencePointEXT();
     }
   }
@@ -142,7 +161,7 @@ void drawObject(const Scene& s, const Object& o) {
   pfglPopMatrix();
   // The bindings belong to this object's material: the next object of the mode starts afresh.
   for (const auto& [param, interp] : m.interpolators)
-    pfglMaterialInterpEXT(pfglGetParamNameEXT(param.c_str()), mode, GL_PERSPECTIVE_LINEAR_INTERPOLATOR_EXT);
+    pfglMaterialInterpEXT(ids(param), mode, GL_PERSPECTIVE_LINEAR_INTERPOLATOR_EXT);
   if (pfglGetError() != GL_NO_ERROR)
     fail(s, o.origin,
          "'" + o.primitive + "' refused the object's sequence points (a parameter it needs is missing or has the "
@@ -174,7 +193,8 @@ void drawScene(const Scene& s, int width, int height, bool compile_sources) {
   pfglEnable(GL_DEPTH_TEST);
   setCamera(s.camera, width, height);
   setLights(s);
-  for (const Object& o : s.objects) drawObject(s, o);
+  ParamIds ids;
+  for (const Object& o : s.objects) drawObject(s, o, ids);
   pfglFinish();
 }
 
