@@ -1,0 +1,39 @@
+// The float meaning of each field operation, shared by constant folding (FieldTapeBuilder) and
+// the float evaluator, so that a folded constant equals what evaluation would have computed.
+//
+// min and max ignore a NaN operand (as C's fmin/fmax): a field that is NaN somewhere (sqrt of a
+// negative, 0/0) then still has a defined union or intersection, and the interval evaluator,
+// which treats "could be NaN" as "could be anything", stays sound for them.
+#pragma once
+
+#include <cmath>
+
+#include "compiler/field/field_tape.h"
+
+namespace pf::field {
+
+inline float fieldMin(float a, float b) { return (a < b || b != b) ? a : b; }
+inline float fieldMax(float a, float b) { return (a > b || b != b) ? a : b; }
+
+inline float applyFieldOp(FieldOp op, float a, float b) {
+  switch (op) {
+    case FieldOp::Neg: return -a;
+    case FieldOp::Abs: return std::fabs(a);
+    case FieldOp::Square: return a * a;
+    case FieldOp::Sqrt: return std::sqrt(a);
+    case FieldOp::Exp: return std::exp(a);
+    case FieldOp::Log: return std::log(a);
+    case FieldOp::Sin: return std::sin(a);
+    case FieldOp::Cos: return std::cos(a);
+    case FieldOp::Add: return a + b;
+    case FieldOp::Sub: return a - b;
+    case FieldOp::Mul: return a * b;
+    case FieldOp::Div: return a / b;
+    case FieldOp::Min: return fieldMin(a, b);
+    case FieldOp::Max: return fieldMax(a, b);
+    case FieldOp::X: case FieldOp::Y: case FieldOp::Z: case FieldOp::Const: break;
+  }
+  return a;
+}
+
+}  // namespace pf::field

@@ -1,0 +1,83 @@
+// A field as a tape: the straight-line SSA form every implicit-surface evaluator runs.
+//
+// One expression, several evaluators (libfive, Fidget): a field f(x, y, z) -- from the language,
+// a HyperFun model or a Fidget .vm file -- becomes one FieldTape, and raster/field/ evaluates it
+// as floats over a pixel block, as intervals over a box, as values with gradients, and as a
+// polynomial in t along a ray. Convention (HyperFun's): f >= 0 inside, f < 0 outside.
+//
+// A tape is in SSA form: instruction i defines value i, and its operands are earlier values.
+// FieldTapeBuilder shares equal instructions (hash-consing) and folds constants, so a tape has
+// no duplicate work; simplify() drops the unchosen side of min/max where an interval evaluation
+// proved one side dominates (Keeter 2020, "tape simplification"), then removes dead code.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+namespace pf::field {
+
+// The operations every evaluator implements. Unary ops read `a`; binary ops read `a` and `b`.
+enum class FieldOp : uint8_t {
+  X, Y, Z, Const,                               // leaves
+  Neg, Abs, Square, Sqrt, Exp, Log, Sin, Cos,   // unary
+  Add, Sub, Mul, Div, Min, Max,                 // binary
+};
+
+int fieldOpArity(FieldOp op);                 // 0, 1 or 2
+std::string_view fieldOpName(FieldOp op);     // "add", "var-x", ... (Fidget's spelling)
+
+struct FieldInstr {
+  FieldOp op = FieldOp::Const;
+  uint32_t a = 0, b = 0;  // operand value indices (earlier instructions)
+  float value = 0.0f;     // Const only
+  bool operator==(const FieldInstr&) const = default;
+};
+
+// Which operand of a min or max an interval evaluation proved to be the result over a box.
+enum class Choice : uint8_t { Both = 0, Left = 1, Right = 2 };
+
+struct FieldTape {
+  std::vector<FieldInstr> instrs;  // SSA: value i is instrs[i]
+  uint32_t result = 0;             // the field's value
+
+  size_t size() const { return instrs.size(); }
+  bool usesZ() const;              // false for 2D models (Fidget's without var-z)
+  std::string print() const;       // one "_i op args" line per instruction, Fidget-like
+};
+
+// Builds a tape instruction by instruction, sharing repeats and folding constants.
+class FieldTapeBuilder {
+ public:
+  uint32_t x();
+  uint32_t y();
+  uint32_t z();
+  uint32_t constant(float v);
+  uint32_t unary(FieldOp op, uint32_t a);
+  uint32_t binary(FieldOp op, uint32_t a, uint32_t b);
+  size_t size() const { return tape_.instrs.size(); }
+
+  // The finished tape with `result` as its value, dead instructions removed.
+  FieldTape finish(uint32_t result);
+
+ private:
+  uint32_t add(const FieldInstr& in);
+  struct InstrHash {
+    size_t operator()(const FieldInstr& in) const;
+  };
+  FieldTape tape_;
+  std::unordered_map<FieldInstr, uint32_t, InstrHash> known_;
+};
+
+// The tape with each min/max whose choice is Left or Right replaced by that operand, and every
+// instruction the result no longer needs removed. choices has one entry per instruction (only
+// min/max entries are read). The simplified tape computes the same value wherever the choices
+// hold -- bit for bit, since a min/max that returns one operand returns it unchanged.
+FieldTape simplify(const FieldTape& tape, const std::vector<Choice>& choices);
+
+// The same tape with unreachable instructions removed and values renumbered.
+FieldTape removeDeadCode(const FieldTape& tape);
+
+}  // namespace pf::field

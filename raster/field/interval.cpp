@@ -1,0 +1,130 @@
+// Interval operations with outward rounding (see interval.h for the rules).
+#include "raster/field/interval.h"
+
+#include <algorithm>
+#include <numbers>
+
+namespace pf::field {
+namespace {
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+// The largest float <= d (one step lower still when d is not exact).
+float roundDown(double d, bool exact) {
+  float f = static_cast<float>(d);
+  if (static_cast<double>(f) > d || (!exact && static_cast<double>(f) == d)) f = std::nextafter(f, -kInf);
+  return f;
+}
+float roundUp(double d, bool exact) {
+  float f = static_cast<float>(d);
+  if (static_cast<double>(f) < d || (!exact && static_cast<double>(f) == d)) f = std::nextafter(f, kInf);
+  return f;
+}
+
+// [lo, hi] from double ends, or the whole line where either end is NaN.
+Interval outward(double lo, double hi, bool exact) {
+  if (std::isnan(lo) || std::isnan(hi)) return Interval::whole();
+  return {roundDown(lo, exact), roundUp(hi, exact)};
+}
+
+// A transcendental's double ends are within an ulp of double: one more float step each way.
+Interval outwardLibm(double lo, double hi) {
+  Interval r = outward(lo, hi, false);
+  if (r.isWhole()) return r;
+  return {std::nextafter(r.lo, -kInf), std::nextafter(r.hi, kInf)};
+}
+
+// Whether a + b is exact in double (a and b floats, so the only loss is a large exponent gap).
+bool sumExact(double a, double b, double sum) {
+  if (std::fabs(a) < std::fabs(b)) std::swap(a, b);
+  return (sum - a) == b;  // Fast2Sum: the rounding error is b - (sum - a), computed exactly
+}
+
+}  // namespace
+
+Interval intervalNeg(Interval a) { return {-a.hi, -a.lo}; }
+
+Interval intervalAbs(Interval a) {
+  if (a.lo >= 0.0f) return a;
+  if (a.hi <= 0.0f) return {-a.hi, -a.lo};
+  return {0.0f, std::max(-a.lo, a.hi)};
+}
+
+Interval intervalSquare(Interval a) {
+  const Interval m = intervalAbs(a);
+  const double lo = static_cast<double>(m.lo) * m.lo, hi = static_cast<double>(m.hi) * m.hi;
+  return outward(lo, hi, true);  // a product of two floats is exact in double
+}
+
+Interval intervalSqrt(Interval a) {
+  if (a.lo < 0.0f) return Interval::whole();  // some points give NaN
+  auto root = [](float v, bool up) {
+    const double d = std::sqrt(static_cast<double>(v));
+    const float f = static_cast<float>(d);
+    const bool exact = static_cast<double>(f) == d && static_cast<double>(f) * f == static_cast<double>(v);
+    return up ? roundUp(d, exact) : roundDown(d, exact);
+  };
+  return {root(a.lo, false), root(a.hi, true)};
+}
+
+Interval intervalExp(Interval a) {
+  Interval r = outwardLibm(std::exp(static_cast<double>(a.lo)), std::exp(static_cast<double>(a.hi)));
+  r.lo = std::max(r.lo, 0.0f);
+  return r;
+}
+
+Interval intervalLog(Interval a) {
+  if (a.lo < 0.0f || std::isnan(a.lo)) return Interval::whole();
+  return outwardLibm(std::log(static_cast<double>(a.lo)), std::log(static_cast<double>(a.hi)));
+}
+
+// sin over [lo, hi] reaches +1 where lo <= pi/2 + 2k pi <= hi, and -1 at -pi/2 + 2k pi.
+static Interval periodicRange(Interval a, double phase_max, double (*fn)(double)) {
+  if (!std::isfinite(a.lo) || !std::isfinite(a.hi)) return Interval::whole();
+  const double two_pi = 2.0 * std::numbers::pi;
+  if (static_cast<double>(a.hi) - a.lo >= two_pi || std::fabs(a.lo) > 1e6f || std::fabs(a.hi) > 1e6f)
+    return {-1.0f, 1.0f};
+  auto reaches = [&](double phase) {
+    const double k = std::ceil((a.lo - phase) / two_pi);
+    return phase + k * two_pi <= a.hi;
+  };
+  const double f_lo = fn(a.lo), f_hi = fn(a.hi);
+  double lo = std::min(f_lo, f_hi), hi = std::max(f_lo, f_hi);
+  if (reaches(phase_max)) hi = 1.0;
+  if (reaches(phase_max + std::numbers::pi)) lo = -1.0;
+  Interval r = outwardLibm(lo, hi);
+  return {std::max(r.lo, -1.0f), std::min(r.hi, 1.0f)};
+}
+
+Interval intervalSin(Interval a) { return periodicRange(a, std::numbers::pi / 2, [](double x) { return std::sin(x); }); }
+Interval intervalCos(Interval a) { return periodicRange(a, 0.0, [](double x) { return std::cos(x); }); }
+
+Interval intervalAdd(Interval a, Interval b) {
+  const double lo = static_cast<double>(a.lo) + b.lo, hi = static_cast<double>(a.hi) + b.hi;
+  if (std::isnan(lo) || std::isnan(hi)) return Interval::whole();
+  return {roundDown(lo, sumExact(a.lo, b.lo, lo)), roundUp(hi, sumExact(a.hi, b.hi, hi))};
+}
+
+Interval intervalSub(Interval a, Interval b) { return intervalAdd(a, intervalNeg(b)); }
+
+Interval intervalMul(Interval a, Interval b) {
+  const double p[4] = {static_cast<double>(a.lo) * b.lo, static_cast<double>(a.lo) * b.hi,
+                       static_cast<double>(a.hi) * b.lo, static_cast<double>(a.hi) * b.hi};
+  for (double v : p)
+    if (std::isnan(v)) return Interval::whole();
+  return outward(*std::min_element(p, p + 4), *std::max_element(p, p + 4), true);
+}
+
+Interval intervalDiv(Interval a, Interval b) {
+  if (b.lo <= 0.0f && b.hi >= 0.0f) return Interval::whole();  // division by (possibly) zero
+  const double q[4] = {static_cast<double>(a.lo) / b.lo, static_cast<double>(a.lo) / b.hi,
+                       static_cast<double>(a.hi) / b.lo, static_cast<double>(a.hi) / b.hi};
+  for (double v : q)
+    if (std::isnan(v)) return Interval::whole();
+  return outward(*std::min_element(q, q + 4), *std::max_element(q, q + 4), false);
+}
+
+Interval intervalMin(Interval a, Interval b) { return {std::min(a.lo, b.lo), std::min(a.hi, b.hi)}; }
+Interval intervalMax(Interval a, Interval b) { return {std::max(a.lo, b.lo), std::max(a.hi, b.hi)}; }
+
+}  // namespace pf::field

@@ -1,0 +1,52 @@
+// IntervalEvaluator: one pass over the tape in interval arithmetic, noting min/max choices.
+#include "raster/field/interval_evaluator.h"
+
+namespace pf::field {
+
+// Operand `a` of min(a, b) is the result over the box when a <= b everywhere in it. An interval
+// that may be NaN (the whole line) never decides: fieldMin would return the other operand.
+static Choice minChoice(Interval a, Interval b) {
+  if (a.isWhole() || b.isWhole()) return Choice::Both;
+  if (a.hi <= b.lo) return Choice::Left;
+  if (b.hi <= a.lo) return Choice::Right;
+  return Choice::Both;
+}
+
+Interval IntervalEvaluator::evaluate(Interval x, Interval y, Interval z, std::vector<Choice>* choices) {
+  const std::vector<FieldInstr>& code = tape_->instrs;
+  if (choices) choices->assign(code.size(), Choice::Both);
+  Interval* v = values_.data();
+  for (size_t i = 0; i < code.size(); ++i) {
+    const FieldInstr& in = code[i];
+    switch (in.op) {
+      case FieldOp::X: v[i] = x; break;
+      case FieldOp::Y: v[i] = y; break;
+      case FieldOp::Z: v[i] = z; break;
+      case FieldOp::Const: v[i] = Interval::point(in.value); break;
+      case FieldOp::Neg: v[i] = intervalNeg(v[in.a]); break;
+      case FieldOp::Abs: v[i] = intervalAbs(v[in.a]); break;
+      case FieldOp::Square: v[i] = intervalSquare(v[in.a]); break;
+      case FieldOp::Sqrt: v[i] = intervalSqrt(v[in.a]); break;
+      case FieldOp::Exp: v[i] = intervalExp(v[in.a]); break;
+      case FieldOp::Log: v[i] = intervalLog(v[in.a]); break;
+      case FieldOp::Sin: v[i] = intervalSin(v[in.a]); break;
+      case FieldOp::Cos: v[i] = intervalCos(v[in.a]); break;
+      case FieldOp::Add: v[i] = intervalAdd(v[in.a], v[in.b]); break;
+      case FieldOp::Sub: v[i] = intervalSub(v[in.a], v[in.b]); break;
+      case FieldOp::Mul: v[i] = intervalMul(v[in.a], v[in.b]); break;
+      case FieldOp::Div: v[i] = intervalDiv(v[in.a], v[in.b]); break;
+      case FieldOp::Min:
+        v[i] = intervalMin(v[in.a], v[in.b]);
+        if (choices) (*choices)[i] = minChoice(v[in.a], v[in.b]);
+        break;
+      case FieldOp::Max:
+        v[i] = intervalMax(v[in.a], v[in.b]);
+        // max(a, b) is a where b <= a everywhere: minChoice(b, a) says Left exactly then.
+        if (choices) (*choices)[i] = minChoice(v[in.b], v[in.a]);
+        break;
+    }
+  }
+  return code.empty() ? Interval::whole() : v[tape_->result];
+}
+
+}  // namespace pf::field

@@ -1,0 +1,98 @@
+// Test-only references for fields: a double-precision evaluation of a tape, and a double
+// interpreter of Fidget .vm text that shares nothing with the reader under test.
+#pragma once
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "compiler/field/field_tape.h"
+
+namespace pf::field::testing {
+
+inline std::string readModelText(const std::string& relative) {
+  std::ifstream in(std::string(PF_MODELS_DIR) + "/" + relative);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+inline double dmin(double a, double b) { return (a < b || b != b) ? a : b; }
+inline double dmax(double a, double b) { return (a > b || b != b) ? a : b; }
+
+// The tape evaluated in double (same operation meanings as the float form).
+inline double evaluateDouble(const FieldTape& tape, double x, double y, double z) {
+  std::vector<double> v(tape.instrs.size());
+  for (size_t i = 0; i < tape.instrs.size(); ++i) {
+    const FieldInstr& in = tape.instrs[i];
+    const double a = fieldOpArity(in.op) >= 1 ? v[in.a] : 0.0;
+    const double b = fieldOpArity(in.op) == 2 ? v[in.b] : 0.0;
+    double r = 0.0;
+    switch (in.op) {
+      case FieldOp::X: r = x; break;
+      case FieldOp::Y: r = y; break;
+      case FieldOp::Z: r = z; break;
+      case FieldOp::Const: r = in.value; break;
+      case FieldOp::Neg: r = -a; break;
+      case FieldOp::Abs: r = std::fabs(a); break;
+      case FieldOp::Square: r = a * a; break;
+      case FieldOp::Sqrt: r = std::sqrt(a); break;
+      case FieldOp::Exp: r = std::exp(a); break;
+      case FieldOp::Log: r = std::log(a); break;
+      case FieldOp::Sin: r = std::sin(a); break;
+      case FieldOp::Cos: r = std::cos(a); break;
+      case FieldOp::Add: r = a + b; break;
+      case FieldOp::Sub: r = a - b; break;
+      case FieldOp::Mul: r = a * b; break;
+      case FieldOp::Div: r = a / b; break;
+      case FieldOp::Min: r = dmin(a, b); break;
+      case FieldOp::Max: r = dmax(a, b); break;
+    }
+    v[i] = r;
+  }
+  return v[tape.result];
+}
+
+// Fidget's own meaning of a .vm text, in double (negative inside, as the file says).
+inline double interpretVmDouble(const std::string& text, double x, double y, double z) {
+  std::unordered_map<std::string, double> val;
+  std::istringstream lines(text);
+  std::string line;
+  double last = 0.0;
+  while (std::getline(lines, line)) {
+    const size_t hash = line.find('#');
+    if (hash != std::string::npos) line.resize(hash);
+    std::istringstream words(line);
+    std::string name, op, a, b;
+    if (!(words >> name >> op)) continue;
+    words >> a >> b;
+    double r = 0.0;
+    if (op == "var-x") r = x;
+    else if (op == "var-y") r = y;
+    else if (op == "var-z") r = z;
+    else if (op == "const") r = std::stod(a);
+    else if (op == "neg") r = -val.at(a);
+    else if (op == "abs") r = std::fabs(val.at(a));
+    else if (op == "square") r = val.at(a) * val.at(a);
+    else if (op == "sqrt") r = std::sqrt(val.at(a));
+    else if (op == "exp") r = std::exp(val.at(a));
+    else if (op == "ln") r = std::log(val.at(a));
+    else if (op == "sin") r = std::sin(val.at(a));
+    else if (op == "cos") r = std::cos(val.at(a));
+    else if (op == "add") r = val.at(a) + val.at(b);
+    else if (op == "sub") r = val.at(a) - val.at(b);
+    else if (op == "mul") r = val.at(a) * val.at(b);
+    else if (op == "div") r = val.at(a) / val.at(b);
+    else if (op == "min") r = dmin(val.at(a), val.at(b));
+    else if (op == "max") r = dmax(val.at(a), val.at(b));
+    else throw std::runtime_error("reference interpreter: unknown op " + op);
+    val[name] = r;
+    last = r;
+  }
+  return last;
+}
+
+}  // namespace pf::field::testing
