@@ -2,7 +2,9 @@
 // interpreter of Fidget .vm text that shares nothing with the reader under test.
 #pragma once
 
+#include <array>
 #include <cmath>
+#include <limits>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -23,9 +25,12 @@ inline std::string readModelText(const std::string& relative) {
 inline double dmin(double a, double b) { return (a < b || b != b) ? a : b; }
 inline double dmax(double a, double b) { return (a > b || b != b) ? a : b; }
 
-// The tape evaluated in double (same operation meanings as the float form).
-inline double evaluateDouble(const FieldTape& tape, double x, double y, double z) {
-  std::vector<double> v(tape.instrs.size());
+// The tape evaluated in double (same operation meanings as the float form). `scratch` saves an
+// allocation per call in dense reference loops.
+inline double evaluateDouble(const FieldTape& tape, double x, double y, double z, std::vector<double>* scratch = nullptr) {
+  std::vector<double> local;
+  std::vector<double>& v = scratch ? *scratch : local;
+  v.resize(tape.instrs.size());
   for (size_t i = 0; i < tape.instrs.size(); ++i) {
     const FieldInstr& in = tape.instrs[i];
     const double a = fieldOpArity(in.op) >= 1 ? v[in.a] : 0.0;
@@ -54,6 +59,30 @@ inline double evaluateDouble(const FieldTape& tape, double x, double y, double z
     v[i] = r;
   }
   return v[tape.result];
+}
+
+// The reference hit on a ray (test-only, as the issue asks): dense double-precision marching over
+// [entry, exit] in `steps` steps, then bisection to 1e-12. +inf where no sample is inside.
+inline double referenceHit(const FieldTape& tape, const std::array<double, 3>& o, const std::array<double, 3>& d,
+                           double entry, double exit, int steps) {
+  if (!(exit >= entry)) return std::numeric_limits<double>::infinity();
+  std::vector<double> scratch;
+  auto f = [&](double t) { return evaluateDouble(tape, o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2], &scratch); };
+  if (f(entry) >= 0.0) return entry;
+  double prev = entry;
+  for (int k = 1; k <= steps; ++k) {
+    const double t = entry + (exit - entry) * k / steps;
+    if (f(t) >= 0.0) {
+      double lo = prev, hi = t;
+      while (hi - lo > 1e-12) {
+        const double mid = 0.5 * (lo + hi);
+        (f(mid) >= 0.0 ? hi : lo) = mid;
+      }
+      return hi;
+    }
+    prev = t;
+  }
+  return std::numeric_limits<double>::infinity();
 }
 
 // Fidget's own meaning of a .vm text, in double (negative inside, as the file says).

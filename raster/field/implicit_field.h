@@ -1,0 +1,40 @@
+// A field ready to be drawn as an `implicit` instance: its tape, what the compiler derived about
+// it (polynomial degree, variables it reads), a declared Lipschitz bound, and the root-finding
+// methods (seed 000, seed 004, Keeter 2020) with the rule `auto` follows.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "compiler/field/field_tape.h"
+
+namespace pf::field {
+
+enum class RootMethod : int {
+  Auto = 0,      // analytic if polynomial of degree <= 4, sphere if Lipschitz, interval otherwise
+  Analytic = 1,  // the ray polynomial's first root (ray_polynomial.h, polynomial_roots.h)
+  Interval = 2,  // interval subdivision in t, with region culling and tape simplification
+  March = 3,     // M uniform steps, then bisection of the first sign change
+  Sphere = 4,    // sphere tracing with the declared Lipschitz bound, checked as it goes
+};
+constexpr int kRootMethodCount = 5;
+
+std::string_view rootMethodName(RootMethod m);
+std::optional<RootMethod> parseRootMethod(std::string_view name);
+
+struct ImplicitField {
+  std::string name;
+  FieldTape tape;
+  int polynomial_degree = -1;  // fieldPolynomialDegree(tape)
+  bool reads[3] = {false, false, false};  // uses var-x, var-y, var-z
+  float lipschitz = 0.0f;      // declared bound on |grad f| (0: none declared)
+
+  ImplicitField() = default;
+  ImplicitField(std::string name, FieldTape tape, float lipschitz = 0.0f);
+};
+
+// The method `auto` resolves to for this field (other methods are returned unchanged).
+RootMethod resolveMethod(const ImplicitField& field, RootMethod requested);
+
+}  // namespace pf::field

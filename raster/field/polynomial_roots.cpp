@@ -1,0 +1,84 @@
+// Root isolation by derivative splitting (see polynomial_roots.h).
+#include "raster/field/polynomial_roots.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace pf::field {
+namespace {
+
+double evaluate(const std::array<double, 5>& c, int degree, double t) {
+  double v = 0.0;
+  for (int k = degree; k >= 0; --k) v = v * t + c[k];
+  return v;
+}
+
+// A bound on the rounding error of evaluate() at t: Horner's error is about
+// degree * eps * sum |c_k| |t|^k.
+double evaluationError(const std::array<double, 5>& c, int degree, double t) {
+  double s = 0.0;
+  for (int k = degree; k >= 0; --k) s = s * std::fabs(t) + std::fabs(c[k]);
+  return 4.0 * (degree + 1) * 2.220446049250313e-16 * s;
+}
+
+// The root in [a, b] of p, monotone there with p(a) and p(b) of opposite signs.
+double refine(const std::array<double, 5>& c, int degree, double a, double b, double fa) {
+  const std::array<double, 5> dc = {c[1], 2 * c[2], 3 * c[3], 4 * c[4], 0.0};
+  double t = 0.5 * (a + b);
+  for (int it = 0; it < 200 && b - a > 0.0; ++it) {
+    const double f = evaluate(c, degree, t);
+    if (f == 0.0) return t;
+    if ((f < 0.0) == (fa < 0.0)) {
+      a = t;
+      fa = f;
+    } else {
+      b = t;
+    }
+    // Newton from t where it stays inside the bracket, else bisection.
+    const double df = evaluate(dc, degree - 1, t);
+    double next = df != 0.0 ? t - f / df : a - 1.0;
+    if (!(next > a && next < b)) next = 0.5 * (a + b);
+    if (next == t || next == a || next == b) break;
+    t = next;
+  }
+  return t;
+}
+
+// Sorted roots of p in [lo, hi] (each at most once), by splitting at the derivative's roots.
+std::vector<double> rootsIn(const std::array<double, 5>& c, int degree, double lo, double hi) {
+  while (degree > 0 && c[degree] == 0.0) --degree;
+  std::vector<double> roots;
+  if (degree == 0) return roots;
+  std::vector<double> cuts = {lo};
+  if (degree >= 2) {
+    const std::array<double, 5> dc = {c[1], 2 * c[2], 3 * c[3], 4 * c[4], 0.0};
+    for (double r : rootsIn(dc, degree - 1, lo, hi)) cuts.push_back(r);
+  }
+  cuts.push_back(hi);
+  for (size_t i = 0; i + 1 < cuts.size(); ++i) {
+    const double a = cuts[i], b = cuts[i + 1];
+    const double fa = evaluate(c, degree, a), fb = evaluate(c, degree, b);
+    // A cut where p is zero within rounding: a touching (double) root, or a root at an end.
+    if (std::fabs(fa) <= evaluationError(c, degree, a)) {
+      if (roots.empty() || roots.back() != a) roots.push_back(a);
+      continue;
+    }
+    if (std::fabs(fb) <= evaluationError(c, degree, b)) continue;  // the next piece reports it
+    if ((fa < 0.0) != (fb < 0.0)) roots.push_back(refine(c, degree, a, b, fa));
+  }
+  const double fh = evaluate(c, degree, hi);
+  if (std::fabs(fh) <= evaluationError(c, degree, hi) && (roots.empty() || roots.back() != hi)) roots.push_back(hi);
+  return roots;
+}
+
+}  // namespace
+
+std::optional<double> firstRootIn(const std::array<double, 5>& c, int degree, double lo, double hi) {
+  if (!(hi >= lo)) return std::nullopt;
+  const std::vector<double> roots = rootsIn(c, degree, lo, hi);
+  if (roots.empty()) return std::nullopt;
+  return roots.front();
+}
+
+}  // namespace pf::field
