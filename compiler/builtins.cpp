@@ -181,6 +181,46 @@ void typeBuiltinCall(Expr& e, UnitKind unit, const std::function<void(SourceLoc,
     if (!arity(1, 1) || any_void || !needScalars()) return;
     e.type = Type::of(BaseType::Bool);
     e.varying = true;
+  } else if (f == "field_hit") {
+    // field_hit(field, box_min, box_max, method, parameter): the t of the pixel's ray (from
+    // object_ray_near(), t = 0, to object_ray_far(), t = 1) where it first meets the surface of
+    // the context's field `field` inside the box; +inf where it does not.
+    if (unit != UnitKind::Primitive) {
+      err(e.loc, "field_hit() is only available in a primitive");
+      return;
+    }
+    if (!arity(5, 5) || any_void) return;
+    static const char* const roles[5] = {"field", "box minimum", "box maximum", "method", "method parameter"};
+    for (size_t k = 0; k < 5; ++k) {
+      const bool spatial = k == 1 || k == 2;
+      if (spatial ? !isSpatial(e.args[k]->type) : !isNumericScalar(e.args[k]->type)) {
+        err(e.args[k]->loc, std::string("field_hit()'s ") + roles[k] + " is " + (spatial ? "a point or vector" : "a float") +
+                                ", not " + typeName(e.args[k]->type));
+        return;
+      }
+      if (e.args[k]->varying) {
+        err(e.args[k]->loc, std::string("field_hit()'s ") + roles[k] +
+                                " must be uniform (one value per instance): the search culls whole blocks of pixels with it");
+        return;
+      }
+    }
+    e.type = Type::of(BaseType::Float);
+    e.varying = true;
+  } else if (f == "field_gradient" || f == "field_gradient_fd") {
+    // The gradient of a context's field at a point: by the derived (automatic differentiation)
+    // form, or by central differences (_fd) for comparison.
+    if (unit != UnitKind::Primitive) {
+      err(e.loc, f + "() is only available in a primitive");
+      return;
+    }
+    if (!arity(2, 2) || any_void) return;
+    if (!isNumericScalar(e.args[0]->type)) {
+      err(e.args[0]->loc, f + "()'s field is a float, not " + typeName(e.args[0]->type));
+      return;
+    }
+    if (!needSpatial(1)) return;
+    e.type = Type::of(BaseType::Vector);
+    e.varying = true;
   } else if (f == "float" || f == "int") {
     if (!arity(1, 1) || any_void || !needScalars()) return;
     e.type = Type::of(f == "float" ? BaseType::Float : BaseType::Int);

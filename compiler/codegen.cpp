@@ -19,7 +19,8 @@ bool isSetupOnlyLoad(Op op) { return op == Op::LoadParamAt || op == Op::XLoadVer
 
 bool isPixelEffect(Op op) {
   return op == Op::Retire || op == Op::ZTest || op == Op::InterpReturn || op == Op::InterpShared ||
-         op == Op::ZCommit || op == Op::ShadeOut || op == Op::SurfaceCommit;
+         op == Op::ZCommit || op == Op::ShadeOut || op == Op::SurfaceCommit || op == Op::FieldBox ||
+         op == Op::FieldHit;
 }
 
 class Generator {

@@ -12,7 +12,7 @@ const char* opName(Op op) {
       "fnoise", "iadd", "isub", "imul", "idiv", "imod", "ineg", "imin", "imax", "iabs", "i2f",
       "f2i", "flt", "fle", "feq", "fne", "ilt", "ile", "ieq", "ine", "band", "bor", "bnot", "sel", "cross_sign",
       "mov", "xadd", "xsub", "xneg", "xmulf", "xdivf", "xmov", "xloadvertex", "xsel", "loadparamat", "xloadvertexat", "loadstate", "haskinds",
-      "bound", "kill", "retire", "ztest", "interp_return", "interp_shared", "shadeout", "zcommit", "surfacecommit", "outparam", "outvertex", "emit", "backfacing",
+      "bound", "kill", "retire", "ztest", "interp_return", "interp_shared", "shadeout", "zcommit", "surfacecommit", "fieldbox", "fieldhit", "fieldgradient", "outparam", "outvertex", "emit", "backfacing",
       "loopbegin", "looptest", "break", "continue", "loopcontinue", "loopback", "loopend", "jmp",
       "jmpifnot", "maskif", "maskelse", "maskend", "jmpifnone"};
   static_assert(sizeof(names) / sizeof(names[0]) == static_cast<size_t>(Op::OpCount));

@@ -48,6 +48,14 @@ enum class Op : uint8_t {
   ShadeOut,      // pixel, in a shared interpolator: its value (a, b, c, d)
   ZCommit,       // pixel: a is the Z to write for lanes alive at the end
   SurfaceCommit, // pixel: the surface for per-pixel lighting: imm 0: P = (a, b, c, d); 1: N = (a, b, c)
+  // implicit surfaces (raster/field/ray_caster.h): a field of the context (its id, uniform) along
+  // each pixel's object-space ray from the near plane (t = 0) to the far plane (t = 1)
+  FieldBox,      // pixel: the box of the next FieldHit: imm 0: its minimum (a, b, c); 1: its maximum
+  FieldHit,      // pixel: dst = t of the first surface point in the box (+inf: none), for field a,
+                 // root-finding method b (0 auto, 1 analytic, 2 interval, 3 march, 4 sphere), its
+                 // parameter c
+  FieldGradient, // pixel: dst = component (imm & 3) of the gradient of field d at (a, b, c);
+                 // imm & 4: by central differences instead of the derived gradient form
   // calls of one primitive from another (setup; paper section 5: polygon -> screen_triangle):
   // the arguments fill an outgoing parameter block, then Emit submits the callee's instance
   OutParam,      // setup: outgoing parameter slot imm = a

@@ -1137,6 +1137,27 @@ class Lowerer {
     if (f == "int")
       return scalar(e.type, cls(arg(0)) == ValueClass::I32 ? arg(0) : emit(Op::F2I, ValueClass::I32, false, arg(0)));
     if (f == "ztest") return scalar(e.type, emit(Op::ZTest, ValueClass::Bool, true, farg(0), -1, -1, 0, e.loc));
+    if (f == "field_hit") {
+      // The box goes to the executor first (FieldBox), then the search (FieldHit), in order.
+      for (int end = 0; end < 2; ++end) {
+        const std::vector<int>& c = args[1 + end].comps;
+        emitEffect(Op::FieldBox, toFloat(c[0]), toFloat(c[1]), toFloat(c[2]), -1, end, e.loc);
+      }
+      return scalar(e.type, emit(Op::FieldHit, ValueClass::F32, true, farg(0), farg(3), farg(4), 0, e.loc));
+    }
+    if (f == "field_gradient" || f == "field_gradient_fd") {
+      const std::vector<int>& c = args[1].comps;
+      const int field = farg(0);
+      const int by_differences = f == "field_gradient_fd" ? 4 : 0;
+      std::vector<int> out;
+      for (int k = 0; k < 3; ++k) {
+        int g = emit(Op::FieldGradient, ValueClass::F32, true, toFloat(c[0]), toFloat(c[1]), toFloat(c[2]),
+                     k | by_differences, e.loc);
+        blocks_.back()->back().inst.d = field;  // the field: the fourth operand
+        out.push_back(g);
+      }
+      return vec(e.type, out);
+    }
     if (f == "culled") {
       int front = frontFacing(farg(0));
       return scalar(e.type, emit(Op::Sel, ValueClass::Bool, false, front, stateOn(StateValue::CullFront),

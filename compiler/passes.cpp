@@ -19,7 +19,8 @@ namespace {
 bool isEffect(Op op) {
   switch (op) {
     case Op::Bound: case Op::Kill: case Op::Retire: case Op::InterpReturn: case Op::InterpShared: case Op::ShadeOut:
-    case Op::SurfaceCommit:
+    case Op::SurfaceCommit: case Op::FieldBox:
+    case Op::FieldHit:  // reads the box FieldBox staged: never merged with another, never moved
     case Op::ZCommit: case Op::Break: case Op::Continue: case Op::OutParam: case Op::OutVertex:
     case Op::Emit: case Op::BackFacing:
       return true;

@@ -532,6 +532,8 @@ class Analyzer {
       }
     }
     if (e.kind == ExprKind::Call && e.name == "ztest") return "it depends on ztest(), which reads the depth buffer";
+    if (e.kind == ExprKind::Call && (e.name == "field_hit" || e.name.rfind("field_gradient", 0) == 0))
+      return "it depends on " + e.name + "(), which is computed per pixel";
     for (const ExprPtr& a : e.args)
       if (a->varying) return whyOf(*a);
     return "it is varying";

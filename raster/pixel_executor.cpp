@@ -135,6 +135,7 @@ void PixelExecutor::runSharedInterpolators(const ChannelLayout& layout, const Ra
 uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const uint32_t* record, const ChannelLayout& layout,
                                 const RasterState& state, int bx, int by, uint64_t mask, const BlockTarget& target,
                                 const uint32_t* shared_records, const uint32_t* p_in) {
+  ++run_serial_;  // field_hit()'s tapes belong to this run only
   const PixelProgram& p = prim.pixel;
   const int nch = layout.count;
   const size_t reg_words = static_cast<size_t>(p.num_regs) * kLanes;
@@ -315,6 +316,42 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const uint32_t* r
           tmp[i] = state.depth_test ? depthPasses(state.depth_func, zi, asF(zb[i])) : 1u;
         }
         blend(d, tmp, exec);
+        continue;
+      }
+      case Op::FieldBox:
+        for (int k = 0; k < 3; ++k) {
+          bool w;
+          const uint32_t* v = src(k == 0 ? ins.a : k == 1 ? ins.b : ins.c, w);
+          field_box_[ins.imm * 3 + k] = asF(w ? v[exec ? __builtin_ctzll(exec) : 0] : v[0]);
+        }
+        continue;
+      case Op::FieldHit: {
+        // Uniform operands (the compiler requires it): the first active lane's value.
+        const int lane = exec ? __builtin_ctzll(exec) : 0;
+        float u[3];
+        for (int k = 0; k < 3; ++k) {
+          bool w;
+          const uint32_t* v = src(k == 0 ? ins.a : k == 1 ? ins.b : ins.c, w);
+          u[k] = asF(w ? v[lane] : v[0]);
+        }
+        alignas(64) float t[kLanes];
+        fieldHit(state, bx, by, exec, u[0], u[1], u[2], t);
+        std::memcpy(tmp, t, sizeof t);
+        blend(R + static_cast<size_t>(operandIndex(ins.dst)) * kLanes, tmp, exec);
+        continue;
+      }
+      case Op::FieldGradient: {
+        const float* p[3];
+        bool wide[3];
+        for (int k = 0; k < 3; ++k)
+          p[k] = reinterpret_cast<const float*>(src(k == 0 ? ins.a : k == 1 ? ins.b : ins.c, wide[k]));
+        bool wf;
+        const uint32_t* fv = src(ins.d, wf);
+        alignas(64) float g[kLanes];
+        fieldGradient(state, exec, asF(wf ? fv[exec ? __builtin_ctzll(exec) : 0] : fv[0]), ins.imm & 3,
+                      (ins.imm & 4) != 0, p, wide, g);
+        std::memcpy(tmp, g, sizeof g);
+        blend(R + static_cast<size_t>(operandIndex(ins.dst)) * kLanes, tmp, exec);
         continue;
       }
       case Op::ZCommit: {

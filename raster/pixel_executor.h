@@ -7,9 +7,12 @@
 
 #include <cstdint>
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
 #include "compiler/compiler.h"
+#include "raster/field/gradient_evaluator.h"
+#include "raster/field/ray_caster.h"
 #include "raster/limits.h"
 #include "raster/raster_state.h"
 
@@ -31,7 +34,17 @@ struct BlockCounters {
   uint64_t instructions = 0;  // executed, once per block (each covers every lane)
   uint64_t iteration_cap_lanes = 0;  // lanes stopped by the iteration cap
   const CompiledPrimitive* cap_primitive = nullptr;  // the last primitive that hit it
+  field::FieldCounters field;          // implicit surfaces: work of field_hit()
+  uint64_t unknown_field_lanes = 0;    // field_hit() / field_gradient() lanes naming no field
 };
+
+// The object-space rays of field_hit() for a state and a staged box (min xyz, max xyz).
+field::FieldRays fieldRaysOf(const RasterState& state, const float box[6]);
+// The method a FieldHit's method operand names (anything else: auto).
+field::RootMethod fieldMethodOf(float method);
+// Component `axis` of the gradient of the evaluator's field at q: derived, or by central
+// differences (FieldGradient's imm & 4).
+float fieldGradientAt(field::GradientEvaluator& ge, const float q[3], int axis, bool by_differences);
 
 class PixelExecutor {
  public:
@@ -55,6 +68,34 @@ class PixelExecutor {
   void runSharedInterpolators(const ChannelLayout& layout, const RasterState& state, int bx, int by,
                               uint64_t exec, const uint32_t* const p[4], const bool p_wide[4],
                               const uint32_t* shared_records);
+
+  // field_hit(): the box FieldBox staged, then the search over the block's `exec` lanes into t
+  // (raster/field_ops.cpp). field_gradient(): component `axis` at the lanes' points.
+  void fieldHit(const RasterState& state, int bx, int by, uint64_t exec, float field, float method, float param,
+                float* t);
+  void fieldGradient(const RasterState& state, uint64_t exec, float field, int axis, bool by_differences,
+                     const float* const p[3], const bool p_wide[3], float* out);
+  const field::ImplicitField* lookUpField(const RasterState& state, float id, uint64_t exec);
+
+  field::FieldRayCaster caster_;
+  float field_box_[6] = {0, 0, 0, 0, 0, 0};
+  std::unordered_map<const field::ImplicitField*, std::unique_ptr<field::GradientEvaluator>> gradients_;
+  // The last FieldHit of this program run: its field, its hit lanes and the tapes that found
+  // them (the gradient at a point inside a lane's box runs that lane's short tape).
+  uint64_t run_serial_ = 0;  // counts program runs
+  uint64_t hit_serial_ = 0;
+  const field::ImplicitField* hit_field_ = nullptr;
+  uint64_t hit_lanes_ = 0;
+  field::HitTapes hit_tapes_;
+  // The last gradient computed (all three components, for the lanes in `lanes`): the three
+  // FieldGradient instructions of one field_gradient() share it.
+  struct GradientCache {
+    const field::ImplicitField* field = nullptr;
+    bool by_differences = false;
+    uint64_t lanes = 0;
+    float q[3][kLanes];  // the points
+    float g[3][kLanes];
+  } gradient_cache_;
 
   std::unique_ptr<PixelExecutor> shared_;  // runs shared interpolators (their own registers)
   std::vector<uint32_t> shade_out_;        // 4 x kLanes: a shared interpolator's value

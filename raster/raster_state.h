@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "compiler/types.h"
+#include "raster/field/implicit_field.h"
 
 namespace pf {
 
@@ -37,6 +38,9 @@ struct RasterState {
   // Iterations one loop may run per pixel (pixel program) or per instance (setup) before the
   // pixel, or the instance, is stopped and the hit reported.
   uint32_t iteration_cap = 65536;
+  // The context's fields (pfglCompileFieldEXT), which field_hit() and field_gradient() name by
+  // id (1-based). Owned by the context, which outlives its drawing.
+  const field::FieldTable* fields = nullptr;
 
   bool operator==(const RasterState&) const = default;
 };

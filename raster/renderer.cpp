@@ -283,6 +283,8 @@ void Renderer::flush() {
     stats_.pixels_shaded += s->pixels_shaded;
     stats_.tiles_run += s->tiles_run;
     stats_.iteration_cap_pixels += s->executor.counters.iteration_cap_lanes;
+    stats_.field.add(s->executor.counters.field);
+    stats_.unknown_field_lanes += s->executor.counters.unknown_field_lanes;
     if (s->executor.counters.iteration_cap_lanes) {
       cap_report_.pixels += s->executor.counters.iteration_cap_lanes;
       cap_report_.primitive = s->executor.counters.cap_primitive->name;

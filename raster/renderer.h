@@ -34,6 +34,8 @@ struct FrameStats {
   uint64_t pixel_instructions = 0;    // executed by pixel programs, once per block
   uint64_t iteration_cap_pixels = 0;  // pixels stopped by the iteration cap
   uint64_t iteration_cap_instances = 0;  // instances stopped by it in setup
+  field::FieldCounters field;         // implicit surfaces (field_hit): rays, evaluations, culling
+  uint64_t unknown_field_lanes = 0;   // field_hit / field_gradient lanes naming no field
 };
 
 // Runaway primitives since the last report: what the API turns into an error and a log line.

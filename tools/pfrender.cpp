@@ -1,18 +1,23 @@
-// pfrender: renders a scene with primflow to a PNG.
+// pfrender: renders a scene or a model with primflow to a PNG.
 //   pfrender [SCENE.json] [-o OUT.png] [--size WxH] [--threads N] [--stats]
+//   pfrender MODEL.vm|MODEL.hf [-o OUT.png] [--size WxH] [--bbox x0,y0,z0,x1,y1,z1] [--ortho]
+//            [--method M] [--steps N] [--depth-out FILE.pfm] [--threads N] [--time T] [--stats]
 // A scene file (docs/scenes.md); with no scene, the built-in showcase (tools/showcase.cpp).
+// A model (tools/model/model_file.h, docs/models.md) is drawn as an implicit surface.
 // --size overrides the scene's own image size.
 #include <CLI/CLI.hpp>
 
 #include <primflow/gl.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
 #include <iostream>
 #include <vector>
 
+#include "model/model_file.h"
 #include "png_image.h"
 #include "raster/renderer.h"
 #include "scene/scene.h"
@@ -21,6 +26,62 @@
 // The context internals, for --stats only.
 #include "api/src/context_state.h"
 
+namespace {
+
+void printStats(PFcontext ctx, double ms) {
+  const pf::FrameStats& s = ctx->renderer.stats();
+  std::printf("threads            %d\n", pfGetThreadCount(ctx));
+  std::printf("frame time         %.2f ms\n", ms);
+  std::printf("instances          %llu submitted, %llu killed in setup\n",
+              static_cast<unsigned long long>(s.instances_submitted), static_cast<unsigned long long>(s.instances_killed));
+  std::printf("bin entries        %llu\n", static_cast<unsigned long long>(s.bin_entries));
+  std::printf("tiles run          %llu\n", static_cast<unsigned long long>(s.tiles_run));
+  std::printf("blocks run         %llu\n", static_cast<unsigned long long>(s.blocks_run));
+  std::printf("active lanes       %.1f%% at start, %.1f%% committed\n",
+              s.blocks_run ? 100.0 * s.lanes_started / (64.0 * s.blocks_run) : 0.0,
+              s.blocks_run ? 100.0 * s.lanes_committed / (64.0 * s.blocks_run) : 0.0);
+  std::printf("pixels shaded      %llu\n", static_cast<unsigned long long>(s.pixels_shaded));
+  std::printf("instructions       %llu setup, %llu pixel (per 8x8 block): %.1f%% uniform setup\n",
+              static_cast<unsigned long long>(s.setup_instructions), static_cast<unsigned long long>(s.pixel_instructions),
+              s.setup_instructions + s.pixel_instructions
+                  ? 100.0 * s.setup_instructions / double(s.setup_instructions + s.pixel_instructions) : 0.0);
+  std::printf("g-buffer bytes     %llu\n", static_cast<unsigned long long>(s.gbuffer_bytes));
+  if (s.field.rays) {
+    const pf::field::FieldCounters& f = s.field;
+    std::printf("field rays         %llu, %llu hit\n", static_cast<unsigned long long>(f.rays),
+                static_cast<unsigned long long>(f.hits));
+    std::printf("field evaluations  %llu points (%.1f per ray), %llu intervals\n",
+                static_cast<unsigned long long>(f.point_evaluations), double(f.point_evaluations) / double(f.rays),
+                static_cast<unsigned long long>(f.interval_evaluations));
+    std::printf("field slabs        %llu culled, %llu filled\n", static_cast<unsigned long long>(f.slabs_culled),
+                static_cast<unsigned long long>(f.slabs_filled));
+    if (f.tape_ops_full)
+      std::printf("tape ops pruned    %.1f%% (sampled slabs ran %llu of %llu instructions)\n",
+                  100.0 * (1.0 - double(f.tape_ops_run) / double(f.tape_ops_full)),
+                  static_cast<unsigned long long>(f.tape_ops_run), static_cast<unsigned long long>(f.tape_ops_full));
+    if (f.lipschitz_overshoots || f.analytic_fallbacks || f.iteration_cap_lanes)
+      std::printf("field fallbacks    %llu Lipschitz overshoots, %llu analytic lanes to interval, %llu capped lanes\n",
+                  static_cast<unsigned long long>(f.lipschitz_overshoots),
+                  static_cast<unsigned long long>(f.analytic_fallbacks),
+                  static_cast<unsigned long long>(f.iteration_cap_lanes));
+  }
+}
+
+// "x0,y0,z0,x1,y1,z1" with x0 < x1 etc.
+bool parseBox(const std::string& text, glm::dvec3& lo, glm::dvec3& hi) {
+  double v[6];
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf%c", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &tail) != 6)
+    return false;
+  for (double x : v)
+    if (!std::isfinite(x)) return false;
+  lo = {v[0], v[1], v[2]};
+  hi = {v[3], v[4], v[5]};
+  return lo.x < hi.x && lo.y < hi.y && lo.z < hi.z;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   CLI::App app{"pfrender: render a scene with primflow (no scene: the built-in showcase)"};
   std::string scene_path;
@@ -28,23 +89,64 @@ int main(int argc, char** argv) {
   std::string size;
   int threads = 0;
   bool stats = false;
-  app.add_option("scene", scene_path, "scene file (.json); none: the built-in showcase");
+  std::string bbox, method_name = "auto", depth_out;
+  bool ortho = false;
+  double steps = 0.0, time = 0.0;
+  app.add_option("scene", scene_path, "scene file (.json) or model (.vm, .hf); none: the built-in showcase");
   app.add_option("-o,--output", out, "output PNG file (default: the scene's name, or showcase.png)");
   app.add_option("--size", size, "image size WxH (each 1..8192; default: the scene's, or 960x640)");
   app.add_option("--threads", threads, "rasterizer threads (0: PF_NUM_THREADS or all cores)")->check(CLI::Range(0, 256));
   app.add_flag("--stats", stats, "print the renderer's work counters");
+  auto* o_bbox = app.add_option("--bbox", bbox, "model: box x0,y0,z0,x1,y1,z1 (default [-1,1]^3 for .vm, [-10,10]^3 for .hf)");
+  auto* o_ortho = app.add_flag("--ortho", ortho, "model: look down -z from above the box, the image covering its x and y");
+  auto* o_method = app.add_option("--method", method_name, "model: auto, analytic, interval, march or sphere");
+  auto* o_steps = app.add_option("--steps", steps, "model: march's steps M, or sphere tracing's Lipschitz bound")
+                      ->check(CLI::Range(0.0, 1e6));
+  auto* o_depth = app.add_option("--depth-out", depth_out, "model: write the visible surface's world z as a PFM (NaN: none)");
+  auto* o_time = app.add_option("--time", time, "model: the time of an animated model (models without time ignore it)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
-  // The scene is read before anything else: a bad file is reported before any work.
+  const bool is_model = !scene_path.empty() && pf::model::isModelPath(scene_path);
+  if (!is_model) {
+    for (CLI::Option* o : {o_bbox, o_ortho, o_method, o_steps, o_depth, o_time})
+      if (o->count()) {
+        std::cerr << "pfrender: " << o->get_name() << " applies to models (.vm, .hf), not to scenes\n";
+        return 2;
+      }
+  }
+  // The scene or model is read before anything else: a bad file is reported before any work.
   std::optional<pf::scene::Scene> scene;
-  if (!scene_path.empty()) {
+  std::optional<pf::model::Model> model;
+  pf::model::ModelView view;
+  if (is_model) {
+    try {
+      model = pf::model::loadModel(scene_path);
+    } catch (const pf::model::ModelError& e) {
+      std::cerr << e.what() << (std::string(e.what()).back() == '\n' ? "" : "\n");
+      return 1;
+    }
+    auto method = pf::field::parseRootMethod(method_name);
+    if (!method) {
+      std::cerr << "pfrender: --method must be auto, analytic, interval, march or sphere, not '" << method_name << "'\n";
+      return 2;
+    }
+    view.method = static_cast<int>(*method);
+    view.steps = static_cast<float>(steps);
+    view.ortho = ortho;
+    view.box_min = model->default_box_min;
+    view.box_max = model->default_box_max;
+    if (!bbox.empty() && !parseBox(bbox, view.box_min, view.box_max)) {
+      std::cerr << "pfrender: --bbox must be x0,y0,z0,x1,y1,z1 with x0 < x1, y0 < y1, z0 < z1, not '" << bbox << "'\n";
+      return 2;
+    }
+  } else if (!scene_path.empty()) {
     const std::string ext = std::filesystem::path(scene_path).extension().string();
     if (ext != ".json") {
       std::cerr << "pfrender: " << scene_path << ": error: unknown scene type '" << ext
-                << "' (pfrender reads .json scene files, docs/scenes.md)\n";
+                << "' (pfrender reads .json scene files, docs/scenes.md, and .vm / .hf models)\n";
       return 1;
     }
     try {
@@ -54,8 +156,8 @@ int main(int argc, char** argv) {
       return 1;
     }
   }
-  if (out.empty()) out = scene ? std::filesystem::path(scene_path).stem().string() + ".png" : "showcase.png";
-  int w = scene ? scene->width : 960, h = scene ? scene->height : 640;
+  if (out.empty()) out = !scene_path.empty() ? std::filesystem::path(scene_path).stem().string() + ".png" : "showcase.png";
+  int w = scene ? scene->width : model ? 512 : 960, h = scene ? scene->height : model ? 512 : 640;
   char tail = 0;
   if (!size.empty() &&
       (std::sscanf(size.c_str(), "%dx%d%c", &w, &h, &tail) != 2 || w < 1 || h < 1 || w > 8192 || h > 8192)) {
@@ -75,7 +177,17 @@ int main(int argc, char** argv) {
     return 1;
   }
   auto t0 = std::chrono::steady_clock::now();
-  if (scene) {
+  if (model) {
+    view.width = w;
+    view.height = h;
+    try {
+      pf::model::drawModel(*model, view);
+    } catch (const pf::model::ModelError& e) {
+      std::cerr << e.what();
+      pfDestroyContext(ctx);
+      return 1;
+    }
+  } else if (scene) {
     try {
       pf::scene::drawScene(*scene, w, h);
     } catch (const pf::scene::SceneError& e) {
@@ -89,25 +201,21 @@ int main(int argc, char** argv) {
   auto t1 = std::chrono::steady_clock::now();
   GLenum err = pfglGetError();
   if (err != GL_NO_ERROR) std::cerr << "pfrender: GL error 0x" << std::hex << err << std::dec << "\n";
-  if (stats) {
-    const pf::FrameStats& s = ctx->renderer.stats();
-    double ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
-    std::printf("threads            %d\n", pfGetThreadCount(ctx));
-    std::printf("frame time         %.2f ms\n", ms);
-    std::printf("instances          %llu submitted, %llu killed in setup\n",
-                static_cast<unsigned long long>(s.instances_submitted), static_cast<unsigned long long>(s.instances_killed));
-    std::printf("bin entries        %llu\n", static_cast<unsigned long long>(s.bin_entries));
-    std::printf("tiles run          %llu\n", static_cast<unsigned long long>(s.tiles_run));
-    std::printf("blocks run         %llu\n", static_cast<unsigned long long>(s.blocks_run));
-    std::printf("active lanes       %.1f%% at start, %.1f%% committed\n",
-                s.blocks_run ? 100.0 * s.lanes_started / (64.0 * s.blocks_run) : 0.0,
-                s.blocks_run ? 100.0 * s.lanes_committed / (64.0 * s.blocks_run) : 0.0);
-    std::printf("pixels shaded      %llu\n", static_cast<unsigned long long>(s.pixels_shaded));
-    std::printf("instructions       %llu setup, %llu pixel (per 8x8 block): %.1f%% uniform setup\n",
-                static_cast<unsigned long long>(s.setup_instructions), static_cast<unsigned long long>(s.pixel_instructions),
-                s.setup_instructions + s.pixel_instructions
-                    ? 100.0 * s.setup_instructions / double(s.setup_instructions + s.pixel_instructions) : 0.0);
-    std::printf("g-buffer bytes     %llu\n", static_cast<unsigned long long>(s.gbuffer_bytes));
+  if (stats) printStats(ctx, std::chrono::duration<double, std::milli>(t1 - t0).count());
+  if (model && !depth_out.empty()) {
+    GLint dw = 0, dh = 0, bytes = 0;
+    void* data = nullptr;
+    std::string error;
+    if (!pfGetDepthBuffer(ctx, &dw, &dh, &bytes, &data) ||
+        !pf::model::writePfm(depth_out, w, h,
+                             pf::model::worldDepth(*model, view,
+                                                   std::vector<float>(static_cast<const float*>(data),
+                                                                      static_cast<const float*>(data) + size_t(w) * h)),
+                             &error)) {
+      std::cerr << "pfrender: " << (error.empty() ? "no depth buffer" : error) << "\n";
+      pfDestroyContext(ctx);
+      return 1;
+    }
   }
   std::string error;
   bool ok = pf::writePngBottomUp(out, pixels.data(), w, h, &error);

@@ -112,6 +112,11 @@ struct PFcontextRec {
   unsigned iteration_cap = 65536;
 
   pf::PrimitiveRegistry primitives;
+  // Fields for implicit surfaces (pfglCompileFieldEXT): by id - 1, with each compilation's log;
+  // the last failed compilation's log is field_failed_log.
+  pf::field::FieldTable fields;
+  std::vector<std::string> field_logs;
+  std::string field_failed_log;
   pf::Renderer renderer;
 
   // GL state.
@@ -206,6 +211,9 @@ struct PFcontextRec {
 
 namespace pf {
 PFcontextRec* currentContext();
+// glGetShaderInfoLog's contract for a compile log: at most bufSize - 1 characters and a NUL into
+// `out`, the count into *length; no log (null) or a negative size: GL_INVALID_VALUE.
+void copyInfoLog(PFcontextRec& ctx, const std::string* text, GLsizei bufSize, GLsizei* length, GLchar* out);
 // The current context, or null if there is none or (GL_INVALID_OPERATION set) it is between
 // glBegin and glEnd, where GL allows only the vertex-attribute commands.
 PFcontextRec* contextOutsideBegin();

@@ -71,6 +71,7 @@ pf::RasterState PFcontextRec::rasterState() const {
   s.depth_write = depth_write;
   s.depth_func = toDepthFunc(depth_func);
   s.iteration_cap = iteration_cap;
+  s.fields = &fields;
   s.cull_front = cull && (cull_face == GL_FRONT || cull_face == GL_FRONT_AND_BACK);
   s.cull_back = cull && (cull_face == GL_BACK || cull_face == GL_FRONT_AND_BACK);
   s.front_ccw = front_face == GL_CCW;

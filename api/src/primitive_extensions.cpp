@@ -10,6 +10,24 @@
 
 using pf::currentContext;
 
+namespace pf {
+
+void copyInfoLog(PFcontextRec& ctx, const std::string* text, GLsizei bufSize, GLsizei* length, GLchar* out) {
+  if (!text || bufSize < 0) {
+    ctx.setError(GL_INVALID_VALUE);
+    return;
+  }
+  GLsizei n = 0;
+  if (out && bufSize > 0) {
+    n = static_cast<GLsizei>(std::min<size_t>(text->size(), static_cast<size_t>(bufSize - 1)));
+    std::memcpy(out, text->data(), static_cast<size_t>(n));
+    out[n] = '\0';
+  }
+  if (length) *length = n;
+}
+
+}  // namespace pf
+
 extern "C" {
 
 GLuint pfglCompilePrimitivesEXT(const GLchar* source) {
@@ -44,17 +62,7 @@ void pfglGetCompileLogEXT(GLuint module, GLsizei bufSize, GLsizei* length, GLcha
   const std::string* text = nullptr;
   if (module == 0) text = &ctx->primitives.failed_log;
   else if (module <= ctx->primitives.module_logs.size()) text = &ctx->primitives.module_logs[module - 1];
-  if (!text || bufSize < 0) {
-    ctx->setError(GL_INVALID_VALUE);
-    return;
-  }
-  GLsizei n = 0;
-  if (out && bufSize > 0) {
-    n = static_cast<GLsizei>(std::min<size_t>(text->size(), static_cast<size_t>(bufSize - 1)));
-    std::memcpy(out, text->data(), static_cast<size_t>(n));
-    out[n] = '\0';
-  }
-  if (length) *length = n;
+  pf::copyInfoLog(*ctx, text, bufSize, length, out);
 }
 
 GLenum pfglGetInterpolatorEXT(const GLchar* name) {

@@ -4,8 +4,10 @@
 
 #include <bit>
 #include <cstdint>
+#include <memory>
 
 #include "raster/field/field_rays.h"
+#include "raster/field/ray_caster.h"
 #include "raster/limits.h"
 
 namespace pf::field {
@@ -14,10 +16,19 @@ struct CastLanes {
   PixelRay ray[kLanes];
   double t[kLanes];
   uint64_t pending = 0;  // lanes still searching
+  // The tape that decided the hits being recorded now, and the box it holds over (null: the
+  // field's own tape): recorded per lane for field_gradient() (HitTapes).
+  std::shared_ptr<const FieldTape> deciding_tape;
+  HitBox deciding_box;
+  HitTapes* tapes = nullptr;
 
   void hit(int i, double t_hit) {
     t[i] = t_hit;
     pending &= ~(uint64_t(1) << i);
+    if (tapes) {
+      tapes->tape[i] = deciding_tape;
+      tapes->box[i] = deciding_box;
+    }
   }
   // The pending lanes whose span in the box overlaps [ta, tb].
   uint64_t overlapping(double ta, double tb) const {

@@ -30,10 +30,9 @@ FloatEvaluator::FloatEvaluator(const FieldTape& tape) {
     SlotInstr s{in.op, 0, 0, 0, in.value};
     if (arity >= 1) s.a = slot_of[in.a];
     if (arity == 2) s.b = slot_of[in.b];
-    // Operands read for the last time free their slots before the result takes one: the loops
-    // read lane j of the operands before writing lane j of the result, so sharing is safe.
-    if (arity >= 1 && last_use[in.a] == i) free_slots.push_back(s.a);
-    if (arity == 2 && last_use[in.b] == i && in.b != in.a) free_slots.push_back(s.b);
+    // The result takes a slot before the operands read for the last time free theirs: a result
+    // never shares a slot with an operand, so the loops below have no aliasing to check for
+    // and vectorize (GCC's cheap cost model at -O2 does not version loops for aliasing).
     if (free_slots.empty()) {
       if (slot_count_ == 0xffff) throw std::length_error("FloatEvaluator: field needs more than 65535 slots");
       s.out = static_cast<uint16_t>(slot_count_++);
@@ -41,6 +40,8 @@ FloatEvaluator::FloatEvaluator(const FieldTape& tape) {
       s.out = free_slots.back();
       free_slots.pop_back();
     }
+    if (arity >= 1 && last_use[in.a] == i) free_slots.push_back(s.a);
+    if (arity == 2 && last_use[in.b] == i && in.b != in.a) free_slots.push_back(s.b);
     slot_of[i] = s.out;
     // A value nobody reads (only possible for the result) keeps its slot to the end.
     code_.push_back(s);
@@ -53,9 +54,9 @@ void FloatEvaluator::evaluate(const float* x, const float* y, const float* z, in
   n = std::clamp(n, 0, kBatch);
   float* base = slots_.data();
   for (const SlotInstr& in : code_) {
-    float* o = base + static_cast<size_t>(in.out) * kBatch;
-    const float* a = base + static_cast<size_t>(in.a) * kBatch;
-    const float* b = base + static_cast<size_t>(in.b) * kBatch;
+    float* __restrict o = base + static_cast<size_t>(in.out) * kBatch;
+    const float* __restrict a = base + static_cast<size_t>(in.a) * kBatch;
+    const float* __restrict b = base + static_cast<size_t>(in.b) * kBatch;
     switch (in.op) {
       case FieldOp::X: std::copy(x, x + n, o); break;
       case FieldOp::Y: std::copy(y, y + n, o); break;

@@ -3,9 +3,11 @@
 // methods (seed 000, seed 004, Keeter 2020) with the rule `auto` follows.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "compiler/field/field_tape.h"
 
@@ -33,6 +35,9 @@ struct ImplicitField {
   ImplicitField() = default;
   ImplicitField(std::string name, FieldTape tape, float lipschitz = 0.0f);
 };
+
+// A context's fields, by id - 1 (ids start at 1). Entries never move or change once added.
+using FieldTable = std::vector<std::unique_ptr<const ImplicitField>>;
 
 // The method `auto` resolves to for this field (other methods are returned unchanged).
 RootMethod resolveMethod(const ImplicitField& field, RootMethod requested);

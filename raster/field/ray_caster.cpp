@@ -29,7 +29,8 @@ void FieldCounters::add(const FieldCounters& o) {
 struct FieldRayCaster::Slab {
   double ta = 0.0, tb = 0.0;
   bool full = false;                     // proven inside over the whole tile
-  std::shared_ptr<const FieldTape> tape; // simplified for the tile slab (when not full)
+  std::shared_ptr<const FieldTape> tape; // simplified for the tile slab's box
+  HitBox box;                            // (for full slabs: where the tape holds, for gradients)
 };
 
 struct FieldRayCaster::TileSlabs {
@@ -120,8 +121,19 @@ bool worthSplitting(const FieldRays& fr, const ImplicitField& field, double x0, 
   return (b - a) * length(mid.direction) > ratio * width;
 }
 
+HitBox hitBoxOf(const Box& b) { return {{b.x.lo, b.y.lo, b.z.lo}, {b.x.hi, b.y.hi, b.z.hi}}; }
+
 Interval evaluateBox(IntervalEvaluator& ie, const Box& b, std::vector<Choice>* choices) {
   return ie.evaluate(b.x, b.y, b.z, choices);
+}
+
+// Whether some coordinate the field reads changes along the rays (checked on the centre ray of
+// the viewport-independent family: ortho rays are all parallel, perspective ones all diverge).
+bool variesAlongRays(const CastRequest& r) {
+  const PixelRay ray = r.rays.unclipped(0.0, 0.0);
+  for (int k = 0; k < 3; ++k)
+    if (r.field->reads[k] && (ray.empty() || ray.direction[k] != 0.0)) return true;
+  return !r.rays.affine();
 }
 
 }  // namespace
@@ -137,10 +149,12 @@ FloatEvaluator& FieldRayCaster::fullEvaluator(const ImplicitField& field) {
   return *e;
 }
 
-void FieldRayCaster::castBlock(const CastRequest& r, int bx, int by, uint64_t mask, float* t_out, FieldCounters& c) {
+void FieldRayCaster::castBlock(const CastRequest& r, int bx, int by, uint64_t mask, float* t_out, FieldCounters& c,
+                               HitTapes* tapes) {
   if (!r.field || r.field->tape.instrs.empty()) return;
   Lanes lanes;
   lanes.pending = 0;
+  lanes.tapes = tapes;
   for (uint64_t m = mask; m; m &= m - 1) {
     const int i = std::countr_zero(m);
     lanes.ray[i] = r.rays.ray(bx + i % kBlockSize + 0.5, by + i / kBlockSize + 0.5);
@@ -157,7 +171,11 @@ void FieldRayCaster::castBlock(const CastRequest& r, int bx, int by, uint64_t ma
         from[i] = lanes.ray[i].entry;
         to[i] = lanes.ray[i].exit;
       }
-      const int steps = r.param >= 1.0f ? static_cast<int>(std::min(r.param, 1e6f)) : kDefaultMarchSteps;
+      // Where nothing the field reads changes along the rays (a 2D model seen from above), f at
+      // the entry decides the whole ray: one evaluation per pixel.
+      const int steps = !variesAlongRays(r) ? 0
+                        : r.param >= 1.0f   ? static_cast<int>(std::min(r.param, 1e6f))
+                                            : kDefaultMarchSteps;
       sampleAndBisect(fullEvaluator(*r.field), lanes, lanes.pending, from, to, steps, c);
       break;
     }
@@ -199,17 +217,17 @@ const FieldRayCaster::TileSlabs& FieldRayCaster::tileSlabs(const CastRequest& r,
       ++c.slabs_culled;
       return;
     }
+    auto simplified = std::make_shared<const FieldTape>(simplify(*tape, choices));
     if (f.allNonNegative()) {
-      ts.slabs.push_back({ta, tb, true, nullptr});
+      ts.slabs.push_back({ta, tb, true, std::move(simplified), hitBoxOf(box)});
       return;
     }
-    auto simplified = std::make_shared<const FieldTape>(simplify(*tape, choices));
     if (depth < kMaxTileDepth && worthSplitting(r.rays, *r.field, x0, y0, x1, y1, ta, tb, 4.0)) {
       const double tm = 0.5 * (ta + tb);
       self(self, ta, tm, simplified, depth + 1);
       self(self, tm, tb, simplified, depth + 1);
     } else {
-      ts.slabs.push_back({ta, tb, false, std::move(simplified)});
+      ts.slabs.push_back({ta, tb, false, std::move(simplified), hitBoxOf(box)});
     }
   };
   // The field's own tape, not owned (the field outlives the caster's use of it).
@@ -225,10 +243,13 @@ void FieldRayCaster::castInterval(const CastRequest& r, int bx, int by, Lanes& l
     if (!over) continue;
     if (slab.full) {
       ++c.slabs_filled;
+      lanes.deciding_tape = slab.tape;
+      lanes.deciding_box = slab.box;
       for (uint64_t p = over; p; p &= p - 1) {
         const int i = std::countr_zero(p);
         lanes.hit(i, std::max(slab.ta, lanes.ray[i].entry));
       }
+      lanes.deciding_tape = nullptr;
       continue;
     }
     regionSlab(r, bx, by, {0, 0, kBlockSize}, slab.ta, slab.tb, slab.tape, 0, lanes, c);
@@ -255,15 +276,18 @@ void FieldRayCaster::regionSlab(const CastRequest& r, int bx, int by, const Lane
     ++c.slabs_culled;
     return;
   }
+  auto simplified = std::make_shared<const FieldTape>(simplify(*tape, choices));
   if (f.allNonNegative()) {
     ++c.slabs_filled;
+    lanes.deciding_tape = simplified;
+    lanes.deciding_box = hitBoxOf(box);
     for (uint64_t p = over; p; p &= p - 1) {
       const int i = std::countr_zero(p);
       lanes.hit(i, std::max(ta, lanes.ray[i].entry));
     }
+    lanes.deciding_tape = nullptr;
     return;
   }
-  auto simplified = std::make_shared<const FieldTape>(simplify(*tape, choices));
   // Deeper than wide: halve along the ray, near half first (front to back).
   if (depth < kMaxBlockDepth && worthSplitting(r.rays, *r.field, x0, y0, x1, y1, ta, tb, 1.0)) {
     const double tm = 0.5 * (ta + tb);
@@ -303,7 +327,10 @@ void FieldRayCaster::regionSlab(const CastRequest& r, int bx, int by, const Lane
     to[i] = std::min(tb, lanes.ray[i].exit);
   }
   FloatEvaluator fe(*simplified);
+  lanes.deciding_tape = simplified;
+  lanes.deciding_box = hitBoxOf(box);
   sampleAndBisect(fe, lanes, over, from, to, steps, c);
+  lanes.deciding_tape = nullptr;
 }
 
 // For each lane in `which`: samples t_k = from + k (to - from) / steps, k = 0..steps (steps = 0:

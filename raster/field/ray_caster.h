@@ -34,6 +34,7 @@
 #include "raster/field/float_evaluator.h"
 #include "raster/field/implicit_field.h"
 #include "raster/field/interval_evaluator.h"
+#include "raster/limits.h"
 
 namespace pf::field {
 
@@ -52,6 +53,22 @@ struct FieldCounters {
   uint64_t analytic_fallbacks = 0;    // analytic lanes without a polynomial form
   uint64_t iteration_cap_lanes = 0;   // lanes stopped by the iteration cap (sphere tracing)
   void add(const FieldCounters& o);
+};
+
+// A box of object space, as the interval form saw it (outward-rounded floats).
+struct HitBox {
+  float lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  bool contains(const float p[3]) const {
+    return lo[0] <= p[0] && p[0] <= hi[0] && lo[1] <= p[1] && p[1] <= hi[1] && lo[2] <= p[2] && p[2] <= hi[2];
+  }
+};
+
+// Per lane of a cast: the simplified tape that found the lane's hit and the box over which it
+// equals the field (tape simplification is exact there), so that the gradient at the hit can
+// run the short tape. A null tape: the field's own.
+struct HitTapes {
+  std::shared_ptr<const FieldTape> tape[kLanes];
+  HitBox box[kLanes];
 };
 
 struct CastRequest {
@@ -75,7 +92,9 @@ class FieldRayCaster {
 
   // t for the lanes set in `mask` of the block whose lower-left pixel is (bx, by); lane i is
   // pixel (bx + i % 8, by + i / 8). t_out has 64 entries; lanes outside the mask are left alone.
-  void castBlock(const CastRequest& request, int bx, int by, uint64_t mask, float* t_out, FieldCounters& counters);
+  // With `tapes`, records for each hit lane the tape that found it (HitTapes).
+  void castBlock(const CastRequest& request, int bx, int by, uint64_t mask, float* t_out, FieldCounters& counters,
+                 HitTapes* tapes = nullptr);
 
  private:
   struct Slab;

@@ -52,7 +52,8 @@ struct BlockRun {
 inline BlockRun runBlock(const CompiledPrimitive& prim, const std::vector<float>& params,
                          const std::vector<float>& vertex_channels, int nch, bool depth_test = true,
                          float initial_depth = 1.0f, InterpKind kind = InterpKind::PerspectiveLinear,
-                         uint32_t iteration_cap = 65536, int sequence_points = -1) {
+                         uint32_t iteration_cap = 65536, int sequence_points = -1,
+                         const field::FieldTable* fields = nullptr) {
   BlockRun r;
   std::fill(r.depth.begin(), r.depth.end(), initial_depth);
   std::vector<uint32_t> p(params.size());
@@ -67,6 +68,7 @@ inline BlockRun runBlock(const CompiledPrimitive& prim, const std::vector<float>
   st.vp_y1 = 8;
   st.depth_test = depth_test;
   st.iteration_cap = iteration_cap;
+  st.fields = fields;
   std::vector<uint32_t> record(SetupExecutor::recordWords(prim, nch) + 1);
   SetupExecutor setup;
   r.setup = setup.run(prim, SetupInput{p.data(), vertex_channels.data(), &layout, &st,

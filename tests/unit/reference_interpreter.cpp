@@ -2,8 +2,11 @@
 #include "reference_interpreter.h"
 
 #include <bit>
+#include <cmath>
+#include <limits>
 
 #include "compiler/scalar_ops.h"
+#include "raster/pixel_executor.h"
 
 namespace pf::test {
 namespace {
@@ -44,6 +47,34 @@ class Interpreter {
   std::vector<uint32_t> scalar_;
   std::vector<std::vector<float>> interp_;
   ReferencePixel out_;
+  float field_box_[6] = {0, 0, 0, 0, 0, 0};  // FieldBox's staging, as the executor's
+
+  const field::ImplicitField* fieldOf(float id) const {
+    const double index = static_cast<double>(id) - 1.0;
+    if (!st_.fields || !(index >= 0.0) || index >= static_cast<double>(st_.fields->size()) || index != std::floor(index))
+      return nullptr;
+    return (*st_.fields)[static_cast<size_t>(index)].get();
+  }
+  // The caster for this one pixel, as a lane of its own block: the search of a lane does not
+  // depend on the other lanes, so the result must equal the SIMD executor's bit for bit.
+  float fieldHit(float id, float method, float param) {
+    const field::ImplicitField* f = fieldOf(id);
+    if (!f) return std::numeric_limits<float>::infinity();
+    field::CastRequest req;
+    req.field = f;
+    req.rays = fieldRaysOf(st_, field_box_);
+    req.method = fieldMethodOf(method);
+    req.param = std::isfinite(param) ? param : 0.0f;
+    req.iteration_cap = st_.iteration_cap;
+    const int px = static_cast<int>(std::floor(x_)), py = static_cast<int>(std::floor(y_));
+    const int bx = px - ((px % kBlockSize) + kBlockSize) % kBlockSize, by = py - ((py % kBlockSize) + kBlockSize) % kBlockSize;
+    const int lane = (py - by) * kBlockSize + (px - bx);
+    float t[kLanes];
+    field::FieldRayCaster caster;
+    field::FieldCounters counters;
+    caster.castBlock(req, bx, by, uint64_t(1) << lane, t, counters);
+    return t[lane];
+  }
 
   uint32_t get(int v) const {
     if (v < 0) return 0;
@@ -160,6 +191,21 @@ class Interpreter {
         return {};
       }
       case Op::ZTest: scalar_[in.dst] = depthPasses(asF(get(in.a))) ? 1u : 0u; return {};
+      case Op::FieldBox:
+        for (int k = 0; k < 3; ++k) field_box_[in.imm * 3 + k] = asF(get(k == 0 ? in.a : k == 1 ? in.b : in.c));
+        return {};
+      case Op::FieldHit: scalar_[in.dst] = fromF(fieldHit(asF(get(in.a)), asF(get(in.b)), asF(get(in.c)))); return {};
+      case Op::FieldGradient: {
+        const field::ImplicitField* f = fieldOf(asF(get(in.d)));
+        const float q[3] = {asF(get(in.a)), asF(get(in.b)), asF(get(in.c))};
+        if (!f) {
+          scalar_[in.dst] = fromF(0.0f);
+          return {};
+        }
+        field::GradientEvaluator ge(f->tape);
+        scalar_[in.dst] = fromF(fieldGradientAt(ge, q, in.imm & 3, (in.imm & 4) != 0));
+        return {};
+      }
       case Op::LoadState: scalar_[in.dst] = fromF(state(in.imm)); return {};
       case Op::HasKinds: scalar_[in.dst] = layout_.hasKinds(static_cast<unsigned>(in.imm)) ? 1u : 0u; return {};
       case Op::XLoadVertex: {

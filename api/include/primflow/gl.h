@@ -187,6 +187,27 @@ void pfglRastParamfvEXT(GLuint name, GLsizei count, const GLfloat *values);
 void pfglRastParamivEXT(GLuint name, GLsizei count, const GLint *values);
 void pfglSequencePointEXT(void);
 
+/* Implicit surfaces (docs/api.md, "Fields"). A field is f(x, y, z) with f >= 0 inside (HyperFun's
+ * convention). pfglCompileFieldEXT compiles one from `source` in `format` and returns its id
+ * (> 0), which the built-in "implicit" primitive's `field` parameter takes; 0 if the source does
+ * not compile (pfglGetFieldLogEXT(0, ...) then holds the diagnostics, file:line:col with a caret,
+ * `name` standing for the file). `lipschitz` declares a bound on |grad f| for sphere tracing
+ * (0: none; negative or not finite: GL_INVALID_VALUE). Formats:
+ *   GL_FIELD_FIDGET_EXT -- Fidget's SSA text (.vm files); Fidget's sign (negative inside) is
+ *     flipped on reading.
+ * An unknown format: GL_INVALID_ENUM; NULL source or name: GL_INVALID_VALUE; inside glBegin /
+ * glEnd: GL_INVALID_OPERATION. Fields live as long as the context. */
+#define GL_FIELD_FIDGET_EXT 0x31030
+/* The `method` parameter of the implicit primitive: how it finds the surface along a ray. */
+#define GL_FIELD_METHOD_AUTO_EXT 0     /* analytic if polynomial (degree <= 4), sphere if Lipschitz, else interval */
+#define GL_FIELD_METHOD_ANALYTIC_EXT 1 /* the ray polynomial's first root */
+#define GL_FIELD_METHOD_INTERVAL_EXT 2 /* interval subdivision, block culling, tape simplification */
+#define GL_FIELD_METHOD_MARCH_EXT 3    /* `steps` uniform steps, then bisection */
+#define GL_FIELD_METHOD_SPHERE_EXT 4   /* sphere tracing with the declared bound (or `steps` as the bound) */
+GLuint pfglCompileFieldEXT(GLenum format, const GLchar *name, const GLchar *source, GLfloat lipschitz);
+/* As pfglGetCompileLogEXT, for fields: field 0 is the last failed compilation. */
+void pfglGetFieldLogEXT(GLuint field, GLsizei bufSize, GLsizei *length, GLchar *log);
+
 #ifdef __cplusplus
 }
 #endif

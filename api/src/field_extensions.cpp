@@ -1,0 +1,50 @@
+// The extension's fields for implicit surfaces: compile a field from a model's source into the
+// context's field table (its id is what the `implicit` primitive's `field` parameter names),
+// and read the diagnostics. See docs/api.md, "Fields".
+#include <cmath>
+
+#include <primflow/gl.h>
+
+#include "api/src/context_state.h"
+#include "compiler/field/fidget_reader.h"
+
+using pf::currentContext;
+
+extern "C" {
+
+GLuint pfglCompileFieldEXT(GLenum format, const GLchar* name, const GLchar* source, GLfloat lipschitz) {
+  PFcontextRec* ctx = currentContext();
+  if (!ctx) return 0;
+  if (ctx->in_begin) {
+    ctx->setError(GL_INVALID_OPERATION);
+    return 0;
+  }
+  if (format != GL_FIELD_FIDGET_EXT) {
+    ctx->setError(GL_INVALID_ENUM);
+    return 0;
+  }
+  if (!source || !name || !(lipschitz >= 0.0f) || !std::isfinite(lipschitz)) {
+    ctx->setError(GL_INVALID_VALUE);
+    return 0;
+  }
+  pf::DiagnosticLog log;
+  std::optional<pf::field::FieldTape> tape = pf::field::readFidgetModel(name, source, log);
+  if (!tape) {
+    ctx->field_failed_log = log.format();
+    return 0;
+  }
+  ctx->fields.push_back(std::make_unique<const pf::field::ImplicitField>(name, std::move(*tape), lipschitz));
+  ctx->field_logs.push_back(log.format());
+  return static_cast<GLuint>(ctx->fields.size());
+}
+
+void pfglGetFieldLogEXT(GLuint field, GLsizei bufSize, GLsizei* length, GLchar* out) {
+  PFcontextRec* ctx = currentContext();
+  if (!ctx) return;
+  const std::string* text = nullptr;
+  if (field == 0) text = &ctx->field_failed_log;
+  else if (field <= ctx->field_logs.size()) text = &ctx->field_logs[field - 1];
+  pf::copyInfoLog(*ctx, text, bufSize, length, out);
+}
+
+}  // extern "C"

@@ -1,0 +1,159 @@
+// The pixel executor's implicit-surface instructions: FieldHit runs the field ray caster over
+// the block (raster/field/ray_caster.h), FieldGradient the gradient form. The rays are the
+// pixels' own, rebuilt in double from the state the language's object_ray_near()/_far() read.
+#include <cmath>
+#include <limits>
+
+#include "raster/field/float_evaluator.h"
+#include "raster/pixel_executor.h"
+
+namespace pf {
+namespace {
+
+using Mat4 = std::array<double, 16>;  // column-major
+
+Mat4 multiply(const Mat4& a, const Mat4& b) {
+  Mat4 r{};
+  for (int c = 0; c < 4; ++c)
+    for (int row = 0; row < 4; ++row) {
+      double s = 0.0;
+      for (int k = 0; k < 4; ++k) s += a[k * 4 + row] * b[c * 4 + k];
+      r[c * 4 + row] = s;
+    }
+  return r;
+}
+
+Mat4 fromFloats(const float* m) {
+  Mat4 r;
+  for (int i = 0; i < 16; ++i) r[i] = m[i];
+  return r;
+}
+
+}  // namespace
+
+// Window coordinates to object coordinates: the inverse viewport and depth range, then the
+// inverse projection and the inverse modelview (as unscreen(), eye() and object() compose).
+field::FieldRays fieldRaysOf(const RasterState& s, const float box[6]) {
+  Mat4 ndc{};
+  ndc[0] = 1.0 / s.vp_scale_x;
+  ndc[12] = -static_cast<double>(s.vp_offset_x) / s.vp_scale_x;
+  ndc[5] = 1.0 / s.vp_scale_y;
+  ndc[13] = -static_cast<double>(s.vp_offset_y) / s.vp_scale_y;
+  ndc[10] = 1.0 / s.depth_scale;
+  ndc[14] = -static_cast<double>(s.depth_offset) / s.depth_scale;
+  ndc[15] = 1.0;
+  field::FieldRays rays;
+  rays.window_to_object = multiply(fromFloats(s.inv_modelview), multiply(fromFloats(s.inv_projection), ndc));
+  rays.depth_near = s.depth_near;
+  rays.depth_far = s.depth_far;
+  for (int k = 0; k < 3; ++k) {
+    rays.box_min[k] = std::min(box[k], box[3 + k]);
+    rays.box_max[k] = std::max(box[k], box[3 + k]);
+  }
+  return rays;
+}
+
+field::RootMethod fieldMethodOf(float method) {
+  const int m = static_cast<int>(method);
+  return (m >= 0 && m < field::kRootMethodCount && static_cast<float>(m) == method) ? static_cast<field::RootMethod>(m)
+                                                                                     : field::RootMethod::Auto;
+}
+
+float fieldGradientAt(field::GradientEvaluator& ge, const float q[3], int axis, bool by_differences) {
+  if (!by_differences) {
+    const field::FieldGradient g = ge.evaluate(q[0], q[1], q[2]);
+    return axis == 0 ? g.dx : axis == 1 ? g.dy : g.dz;
+  }
+  // Central differences in double around the float point, with a step of 2^-12 of the point's
+  // magnitude (at least 2^-12): for comparison with the derived gradient.
+  const double h = std::ldexp(std::max(1.0, static_cast<double>(std::fabs(q[axis]))), -12);
+  float a[3] = {q[0], q[1], q[2]}, b[3] = {q[0], q[1], q[2]};
+  a[axis] = static_cast<float>(q[axis] + h);
+  b[axis] = static_cast<float>(q[axis] - h);
+  const double fa = ge.evaluate(a[0], a[1], a[2]).value, fb = ge.evaluate(b[0], b[1], b[2]).value;
+  return static_cast<float>((fa - fb) / (static_cast<double>(a[axis]) - b[axis]));
+}
+
+const field::ImplicitField* PixelExecutor::lookUpField(const RasterState& state, float id, uint64_t exec) {
+  const double index = static_cast<double>(id) - 1.0;
+  if (state.fields && index >= 0.0 && index < static_cast<double>(state.fields->size()) && index == std::floor(index))
+    return (*state.fields)[static_cast<size_t>(index)].get();
+  counters.unknown_field_lanes += static_cast<uint64_t>(__builtin_popcountll(exec));
+  return nullptr;
+}
+
+void PixelExecutor::fieldHit(const RasterState& state, int bx, int by, uint64_t exec, float field_id, float method,
+                             float param, float* t) {
+  std::fill_n(t, kLanes, std::numeric_limits<float>::infinity());
+  const field::ImplicitField* f = lookUpField(state, field_id, exec);
+  if (!f || !exec) return;
+  field::CastRequest req;
+  req.field = f;
+  req.rays = fieldRaysOf(state, field_box_);
+  req.method = fieldMethodOf(method);
+  req.param = std::isfinite(param) ? param : 0.0f;
+  req.iteration_cap = state.iteration_cap;
+  const uint64_t capped_before = counters.field.iteration_cap_lanes;
+  for (auto& tape : hit_tapes_.tape) tape.reset();
+  caster_.castBlock(req, bx, by, exec, t, counters.field, &hit_tapes_);
+  hit_serial_ = run_serial_;
+  hit_field_ = f;
+  hit_lanes_ = exec;
+  // Lanes stopped by the iteration cap are reported like a runaway loop's.
+  counters.iteration_cap_lanes += counters.field.iteration_cap_lanes - capped_before;
+}
+
+void PixelExecutor::fieldGradient(const RasterState& state, uint64_t exec, float field_id, int axis,
+                                  bool by_differences, const float* const p[3], const bool p_wide[3], float* out) {
+  std::fill_n(out, kLanes, 0.0f);
+  const field::ImplicitField* f = lookUpField(state, field_id, exec);
+  if (!f) return;
+  GradientCache& gc = gradient_cache_;
+  // The three components of one field_gradient() come one after the other: the second and
+  // third read what the first computed, where the field, the mode and the points are the same.
+  bool reuse = axis != 0 && gc.field == f && gc.by_differences == by_differences && (gc.lanes & exec) == exec;
+  for (uint64_t m = exec; m && reuse; m &= m - 1) {
+    const int i = __builtin_ctzll(m);
+    for (int k = 0; k < 3 && reuse; ++k) reuse = gc.q[k][i] == (p_wide[k] ? p[k][i] : p[k][0]);
+  }
+  if (!reuse) {
+    std::unique_ptr<field::GradientEvaluator>& full = gradients_[f];
+    if (!full) full = std::make_unique<field::GradientEvaluator>(f->tape);
+    // A lane whose point lies in the box of the short tape that found its hit runs that tape:
+    // it equals the field there, gradient included (the same side of every min and max).
+    const bool hits_usable = hit_serial_ == run_serial_ && hit_field_ == f && !by_differences;
+    const field::FieldTape* short_tape = nullptr;
+    std::unique_ptr<field::GradientEvaluator> short_eval;
+    for (uint64_t m = exec; m; m &= m - 1) {
+      const int i = __builtin_ctzll(m);
+      float q[3];
+      for (int k = 0; k < 3; ++k) gc.q[k][i] = q[k] = p_wide[k] ? p[k][i] : p[k][0];
+      field::GradientEvaluator* ge = full.get();
+      if (hits_usable && (hit_lanes_ >> i & 1) && hit_tapes_.tape[i] && hit_tapes_.box[i].contains(q)) {
+        if (hit_tapes_.tape[i].get() != short_tape) {
+          short_tape = hit_tapes_.tape[i].get();
+          short_eval = std::make_unique<field::GradientEvaluator>(*short_tape);
+        }
+        ge = short_eval.get();
+      }
+      if (by_differences) {
+        for (int k = 0; k < 3; ++k) gc.g[k][i] = fieldGradientAt(*ge, q, k, true);
+      } else {
+        const field::FieldGradient g = ge->evaluate(q[0], q[1], q[2]);
+        gc.g[0][i] = g.dx;
+        gc.g[1][i] = g.dy;
+        gc.g[2][i] = g.dz;
+      }
+    }
+    gc.field = f;
+    gc.by_differences = by_differences;
+    gc.lanes = exec;
+    counters.field.point_evaluations += static_cast<uint64_t>(__builtin_popcountll(exec)) * (by_differences ? 6 : 1);
+  }
+  for (uint64_t m = exec; m; m &= m - 1) {
+    const int i = __builtin_ctzll(m);
+    out[i] = gc.g[axis][i];
+  }
+}
+
+}  // namespace pf

@@ -1,0 +1,128 @@
+// Models as pfrender draws them (tools/model): the --ortho contract (pixel centres at
+// x0 + (i + 0.5)(x1 - x0)/W, row 0 at the bottom), 2D coverage, the world-z depth output against
+// analytic surfaces, the PFM format, and bad model files.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "gl_context.h"
+#include "model/model_file.h"
+
+namespace {
+
+std::string writeTemp(const std::string& name, const std::string& text) {
+  const std::filesystem::path p = std::filesystem::temp_directory_path() / name;
+  std::ofstream(p) << text;
+  return p.string();
+}
+
+std::vector<float> depthOf(const pf::test::GlContext& gl) {
+  const float* d = gl.depth();
+  return std::vector<float>(d, d + size_t(gl.width) * gl.height);
+}
+
+// quarter.vm: inside where max(x, y) < 0 and x^2 + y^2 < 0.5 (Fidget: negative inside).
+TEST(Model, TwoDimensionalCoverageFollowsTheOrthoPixelCentres) {
+  const pf::model::Model m = pf::model::loadModel(std::string(PF_SOURCE_DIR) + "/tests/data/models/fidget/quarter.vm");
+  EXPECT_TRUE(m.two_dimensional);
+  const int w = 40, h = 24;  // not square: the x and y extents map separately
+  pf::test::GlContext gl(w, h);
+  pf::model::ModelView v;
+  v.width = w;
+  v.height = h;
+  v.box_min = {-1.0, -0.8, -1.0};
+  v.box_max = {0.6, 0.4, 1.0};
+  pf::model::drawModel(m, v);
+  int inside = 0;
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) {
+      const double x = v.box_min.x + (i + 0.5) * (v.box_max.x - v.box_min.x) / w;
+      const double y = v.box_min.y + (j + 0.5) * (v.box_max.y - v.box_min.y) / h;
+      const double f = std::max(std::max(x, y), x * x + y * y - 0.5);
+      if (std::fabs(f) < 1e-6) continue;
+      EXPECT_EQ(gl.at(i, j)[0] == 255, f < 0) << i << ", " << j;
+      inside += f < 0;
+    }
+  EXPECT_GT(inside, 100);
+  // A 2D model's depth output is the box's top wherever it is inside.
+  const std::vector<float> z = pf::model::worldDepth(m, v, depthOf(gl));
+  for (int k = 0; k < w * h; ++k) {
+    if (gl.px[size_t(k) * 4] == 255) {
+      EXPECT_NEAR(z[k], 1.0, 1e-6);
+    } else {
+      EXPECT_TRUE(std::isnan(z[k]));
+    }
+  }
+}
+
+TEST(Model, OrthoDepthIsTheWorldZOfTheSurface) {
+  // A sphere of radius 0.7 around (0.1, 0, 0), Fidget style.
+  const std::string path = writeTemp("pf_model_sphere.vm",
+                                     "x var-x\ny var-y\nz var-z\nc const 0.1\ndx sub x c\nx2 square dx\ny2 square y\n"
+                                     "z2 square z\ns add x2 y2\nr2 add s z2\nr const 0.49\nout sub r2 r\n");
+  const pf::model::Model m = pf::model::loadModel(path);
+  EXPECT_FALSE(m.two_dimensional);
+  const int n = 48;
+  pf::test::GlContext gl(n, n);
+  pf::model::ModelView v;
+  v.width = v.height = n;
+  v.ortho = true;
+  v.method = GL_FIELD_METHOD_INTERVAL_EXT;
+  pf::model::drawModel(m, v);
+  const std::vector<float> z = pf::model::worldDepth(m, v, depthOf(gl));
+  double max_err = 0;
+  int hits = 0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double x = -1 + (i + 0.5) * 2.0 / n - 0.1, y = -1 + (j + 0.5) * 2.0 / n;
+      const double h2 = 0.49 - x * x - y * y;
+      if (std::fabs(h2) < 1e-3) continue;
+      const float got = z[size_t(j) * n + i];
+      ASSERT_EQ(!std::isnan(got), h2 > 0) << i << ", " << j;
+      if (h2 > 0) {
+        max_err = std::max(max_err, std::fabs(got - std::sqrt(h2)));
+        ++hits;
+      }
+    }
+  EXPECT_GT(hits, 500);
+  EXPECT_LT(max_err, 2e-6);  // the depth buffer's float precision over the box's depth
+}
+
+TEST(Model, PfmIsLittleEndianBottomToTop) {
+  const std::string path = (std::filesystem::temp_directory_path() / "pf_model_test.pfm").string();
+  std::string error;
+  ASSERT_TRUE(pf::model::writePfm(path, 2, 1, {1.5f, std::nanf("")}, &error)) << error;
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string data = ss.str();
+  ASSERT_EQ(data.substr(0, 12), "Pf\n2 1\n-1.0\n");
+  ASSERT_EQ(data.size(), 12u + 8u);
+  float first;
+  std::memcpy(&first, data.data() + 12, 4);  // (the test machines are little-endian)
+  EXPECT_EQ(first, 1.5f);
+  EXPECT_FALSE(pf::model::writePfm("/nonexistent-dir/x.pfm", 1, 1, {0.0f}, &error));
+}
+
+TEST(Model, BadModelsAreReportedWithFileLineAndColumn) {
+  auto error = [](const std::string& path) {
+    try {
+      pf::model::loadModel(path);
+    } catch (const pf::model::ModelError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  EXPECT_NE(error(writeTemp("pf_bad.vm", "x var-x\ny atan x x\n")).find("pf_bad.vm:2:3: error: unsupported operation 'atan'"),
+            std::string::npos);
+  EXPECT_NE(error("/nonexistent/model.vm").find("/nonexistent/model.vm: error: cannot open the model file"),
+            std::string::npos);
+  EXPECT_NE(error(writeTemp("pf_model.hf", "my_model(x[3], a[1]) { my_model = 1; }\n")).find("no HyperFun front end"),
+            std::string::npos);
+}
+
+}  // namespace

@@ -1,0 +1,172 @@
+// Models (see model_file.h): reading, the model command line's camera, drawing, depth output.
+#include "model/model_file.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include "compiler/field/fidget_reader.h"
+
+namespace pf::model {
+
+bool isModelPath(const std::string& path) {
+  const std::string ext = std::filesystem::path(path).extension().string();
+  return ext == ".vm" || ext == ".hf";
+}
+
+Model loadModel(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ModelError(path + ": error: cannot open the model file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  Model m;
+  m.path = path;
+  m.text = ss.str();
+  if (std::filesystem::path(path).extension() == ".hf") {
+    m.format = ModelFormat::HyperFun;
+    m.default_box_min = glm::dvec3(-10.0);
+    m.default_box_max = glm::dvec3(10.0);
+    throw ModelError(path + ":1:1: error: HyperFun models are not read yet: primflow has no HyperFun front end "
+                            "(only Fidget .vm models can be drawn)");
+  }
+  // Checked here, before any drawing, so that a bad file is reported with its line.
+  DiagnosticLog log;
+  auto tape = field::readFidgetModel(path, m.text, log);
+  if (!tape) throw ModelError(log.format());
+  m.two_dimensional = !tape->usesZ();
+  return m;
+}
+
+namespace {
+
+// The matrices of the model view: projection and modelview (the model's space is the world).
+struct ViewMatrices {
+  glm::dmat4 projection, modelview;
+};
+
+ViewMatrices matricesOf(const ModelView& v, bool two_dimensional) {
+  const glm::dvec3 lo = v.box_min, hi = v.box_max;
+  const double depth = hi.z - lo.z, margin = 0.01 * depth + 1e-6;
+  ViewMatrices m;
+  if (v.ortho || two_dimensional) {
+    // Looking down -z from just above the box; the image spans the box's x and y exactly.
+    m.projection = glm::ortho(lo.x, hi.x, lo.y, hi.y, margin, depth + 2 * margin);
+    m.modelview = glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 0.0, -(hi.z + margin)));
+    return m;
+  }
+  const glm::dvec3 centre = 0.5 * (lo + hi);
+  const double radius = 0.5 * glm::length(hi - lo);
+  const double fov = glm::radians(40.0);
+  const double distance = radius / std::sin(0.5 * fov) * 1.05;
+  const glm::dvec3 eye = centre + distance * glm::normalize(glm::dvec3(0.3, 0.35, 1.0));
+  const double aspect = static_cast<double>(v.width) / v.height;
+  m.projection = glm::perspective(fov, aspect, std::max(distance - radius * 1.01, 1e-3 * distance),
+                                  distance + radius * 1.01);
+  m.modelview = glm::lookAt(eye, centre, glm::dvec3(0, 1, 0));
+  return m;
+}
+
+void loadMatrix(GLenum mode, const glm::dmat4& m) {
+  pfglMatrixMode(mode);
+  pfglLoadIdentity();
+  double a[16];
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) a[c * 4 + r] = m[c][r];
+  pfglMultMatrixd(a);
+}
+
+}  // namespace
+
+void drawModel(const Model& model, const ModelView& view) {
+  const GLuint field = pfglCompileFieldEXT(GL_FIELD_FIDGET_EXT, model.path.c_str(), model.text.c_str(), 0.0f);
+  if (field == 0) {
+    char log[4096];
+    pfglGetFieldLogEXT(0, sizeof log, nullptr, log);
+    throw ModelError(log);
+  }
+  const ViewMatrices m = matricesOf(view, model.two_dimensional);
+  pfglViewport(0, 0, view.width, view.height);
+  pfglClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+  pfglClearDepth(1.0);
+  pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  pfglEnable(GL_DEPTH_TEST);
+  loadMatrix(GL_PROJECTION, m.projection);
+  loadMatrix(GL_MODELVIEW, glm::dmat4(1.0));
+  if (model.two_dimensional) {
+    pfglDisable(GL_LIGHTING);
+    pfglColor3f(1.0f, 1.0f, 1.0f);
+  } else {
+    // One light from over the viewer's shoulder (eye space, set before the model's modelview).
+    pfglEnable(GL_LIGHTING);
+    pfglEnable(GL_LIGHT0);
+    const GLfloat dir[4] = {0.4f, 0.6f, 1.0f, 0.0f}, white[4] = {1, 1, 1, 1}, ambient[4] = {0.12f, 0.12f, 0.14f, 1};
+    pfglLightfv(GL_LIGHT0, GL_POSITION, dir);
+    pfglLightfv(GL_LIGHT0, GL_DIFFUSE, white);
+    pfglLightModelfv(GL_LIGHT_MODEL_AMBIENT, ambient);
+    const GLfloat diffuse[4] = {0.85f, 0.78f, 0.62f, 1}, specular[4] = {0.25f, 0.25f, 0.25f, 1};
+    pfglMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, diffuse);
+    pfglMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT, diffuse);
+    pfglMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, specular);
+    pfglMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, 24.0f);
+  }
+  loadMatrix(GL_MODELVIEW, m.modelview);
+  const GLuint p_field = pfglGetParamNameEXT("field"), p_lo = pfglGetParamNameEXT("box_min"),
+               p_hi = pfglGetParamNameEXT("box_max"), p_method = pfglGetParamNameEXT("method"),
+               p_steps = pfglGetParamNameEXT("steps");
+  pfglBegin(pfglGetPrimitiveEXT("implicit"));
+  pfglRastParamfEXT(p_field, static_cast<GLfloat>(field));
+  pfglRastParam3fEXT(p_lo, static_cast<float>(view.box_min.x), static_cast<float>(view.box_min.y),
+                     static_cast<float>(view.box_min.z));
+  pfglRastParam3fEXT(p_hi, static_cast<float>(view.box_max.x), static_cast<float>(view.box_max.y),
+                     static_cast<float>(view.box_max.z));
+  pfglRastParamfEXT(p_method, static_cast<GLfloat>(view.method));
+  pfglRastParamfEXT(p_steps, view.steps);
+  pfglSequencePointEXT();
+  pfglEnd();
+  pfglFinish();
+}
+
+std::vector<float> worldDepth(const Model& model, const ModelView& view, const std::vector<float>& window_depth) {
+  const ViewMatrices m = matricesOf(view, model.two_dimensional);
+  const glm::dmat4 inv = glm::inverse(m.projection * m.modelview);
+  std::vector<float> out(static_cast<size_t>(view.width) * view.height, std::numeric_limits<float>::quiet_NaN());
+  for (int y = 0; y < view.height; ++y)
+    for (int x = 0; x < view.width; ++x) {
+      const size_t i = static_cast<size_t>(y) * view.width + x;
+      const double d = window_depth[i];
+      if (!(d < 1.0)) continue;  // the clear value: nothing drawn here
+      const glm::dvec4 ndc((x + 0.5) / view.width * 2 - 1, (y + 0.5) / view.height * 2 - 1, d * 2 - 1, 1.0);
+      const glm::dvec4 p = inv * ndc;
+      out[i] = static_cast<float>(p.z / p.w);
+    }
+  return out;
+}
+
+bool writePfm(const std::string& path, int width, int height, const std::vector<float>& values, std::string* error) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out) {
+    if (error) *error = path + ": cannot write";
+    return false;
+  }
+  out << "Pf\n" << width << ' ' << height << "\n-1.0\n";  // negative scale: little-endian
+  for (float v : values) {
+    unsigned char b[4];
+    uint32_t bits;
+    std::memcpy(&bits, &v, 4);
+    for (int k = 0; k < 4; ++k) b[k] = static_cast<unsigned char>(bits >> (8 * k));
+    out.write(reinterpret_cast<const char*>(b), 4);
+  }
+  if (!out) {
+    if (error) *error = path + ": write failed";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace pf::model

@@ -1,0 +1,63 @@
+// Models as pfrender and pfview open them: a Fidget .vm or HyperFun .hf file, compiled into the
+// current context as a field (pfglCompileFieldEXT) and drawn through the public API as an
+// `implicit` instance, with the camera the model command line describes (issue #8's contract):
+//   --ortho: looking down -z from above the box, the image covering the box's x and y extent
+//   exactly (pixel centres at x0 + (i + 0.5)(x1 - x0)/W, row 0 at the bottom); otherwise a
+//   perspective view of the box from the +z side, a little from above and the right.
+// 2D models (no var-z) are coverage images over the box's x and y extent, as in the Prospero
+// challenge: white where the model is inside, black elsewhere, whatever the camera option.
+#pragma once
+
+#include <primflow/gl.h>
+
+#include <glm/glm.hpp>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace pf::model {
+
+// A model that cannot be read or compiled: the message names the file (and line and column,
+// with the source line and a caret, for compile errors).
+struct ModelError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+enum class ModelFormat { Fidget, HyperFun };
+
+struct Model {
+  std::string path;
+  ModelFormat format = ModelFormat::Fidget;
+  std::string text;
+  bool two_dimensional = false;  // reads no z: drawn as a coverage image
+  glm::dvec3 default_box_min{-1.0}, default_box_max{1.0};  // [-1, 1]^3 (.vm), [-10, 10]^3 (.hf)
+};
+
+// Whether pfrender treats `path` as a model (by its extension: .vm, .hf).
+bool isModelPath(const std::string& path);
+
+// Reads and checks a model file (throws ModelError).
+Model loadModel(const std::string& path);
+
+struct ModelView {
+  int width = 512, height = 512;
+  bool ortho = false;
+  glm::dvec3 box_min{-1.0}, box_max{1.0};
+  int method = GL_FIELD_METHOD_AUTO_EXT;
+  float steps = 0.0f;  // the method's parameter (march: steps; sphere: Lipschitz bound)
+};
+
+// Compiles the model into the current context and draws it: clears, camera, light, the
+// implicit instance. Throws ModelError if it does not compile.
+void drawModel(const Model& model, const ModelView& view);
+
+// The world z of the visible surface per pixel of the current context's last frame (rows
+// bottom to top), NaN where nothing was drawn; from the depth buffer through the view's
+// matrices, in double.
+std::vector<float> worldDepth(const Model& model, const ModelView& view, const std::vector<float>& window_depth);
+
+// Writes a greyscale PFM (little-endian, rows bottom to top). False with `error` on failure.
+bool writePfm(const std::string& path, int width, int height, const std::vector<float>& values, std::string* error);
+
+}  // namespace pf::model
