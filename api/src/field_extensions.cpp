@@ -47,4 +47,13 @@ void pfglGetFieldLogEXT(GLuint field, GLsizei bufSize, GLsizei* length, GLchar* 
   pf::copyInfoLog(*ctx, text, bufSize, length, out);
 }
 
+GLuint pfglGetFieldEXT(const GLchar* name) {
+  PFcontextRec* ctx = currentContext();
+  if (!ctx) return 0;
+  for (size_t i = name ? ctx->fields.size() : 0; i-- > 0;)
+    if (ctx->fields[i]->name == name) return static_cast<GLuint>(i + 1);
+  ctx->setError(GL_INVALID_VALUE);
+  return 0;
+}
+
 }  // extern "C"

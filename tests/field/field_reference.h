@@ -1,5 +1,6 @@
-// Test-only references for fields: a double-precision evaluation of a tape, and a double
-// interpreter of Fidget .vm text that shares nothing with the reader under test.
+// Test-only references for fields: a double-precision evaluation of a tape, the reference hit
+// along a ray (dense double marching + bisection), and a double interpreter of Fidget .vm text
+// that shares nothing with the reader under test. (Also used by bench/pffields for accuracy.)
 #pragma once
 
 #include <array>
@@ -15,12 +16,14 @@
 
 namespace pf::field::testing {
 
+#ifdef PF_MODELS_DIR
 inline std::string readModelText(const std::string& relative) {
   std::ifstream in(std::string(PF_MODELS_DIR) + "/" + relative);
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
 }
+#endif
 
 inline double dmin(double a, double b) { return (a < b || b != b) ? a : b; }
 inline double dmax(double a, double b) { return (a > b || b != b) ? a : b; }

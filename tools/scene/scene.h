@@ -42,10 +42,22 @@ struct Light {
   glm::dvec3 attenuation{1, 0, 0};  // constant, linear, quadratic
 };
 
-// A named parameter's current value (pfglRastParamfvEXT), 1 to 16 numbers.
+// A named parameter's current value (pfglRastParamfvEXT), 1 to 16 numbers -- or the name of one
+// of the scene's fields (`field`), whose id the parameter then takes (the implicit primitive's
+// "field").
 struct ParamValue {
   std::string name;
   std::vector<double> values;
+  std::string field;
+};
+
+// A field of the scene ("fields"): a model for implicit surfaces, read from a file or given
+// inline, compiled with pfglCompileFieldEXT under its name.
+struct FieldSource {
+  std::string name;
+  std::string file;  // as named in messages (the file, or the scene's key for inline text)
+  std::string text;
+  Origin origin;
 };
 
 struct Material {
@@ -88,6 +100,7 @@ struct Scene {
   bool per_pixel = false;  // GL polygons lit per pixel (GL_PER_PIXEL_LIGHTING_EXT)
   std::vector<Light> lights;
   std::vector<std::pair<std::string, std::string>> sources;  // (path, text) of .pfl files
+  std::vector<FieldSource> fields;
   std::map<std::string, Material> materials;
   std::vector<Object> objects;
 };
@@ -102,8 +115,8 @@ Scene loadScene(const std::string& path);
 // of read (the fuzzer's setting).
 Scene parseScene(const std::string& text, const std::string& path, bool allow_files = true);
 
-// Compiles the scene's primitive sources into the current context (pfglCompilePrimitivesEXT);
-// throws SceneError with the compiler's diagnostics.
+// Compiles the scene's primitive sources (pfglCompilePrimitivesEXT) and fields
+// (pfglCompileFieldEXT) into the current context; throws SceneError with the diagnostics.
 void compileSceneSources(const Scene& scene);
 
 // Draws the scene into the current context at width x height: compiles its sources (unless

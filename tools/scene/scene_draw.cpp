@@ -101,6 +101,10 @@ class ParamIds {
 void setParams(const std::vector<ParamValue>& params, ParamIds& ids) {
   GLfloat v[16];
   for (const ParamValue& p : params) {
+    if (!p.field.empty()) {  // a field's name: its id (compileSceneSources compiled it)
+      pfglRastParamfEXT(ids(p.name), static_cast<GLfloat>(pfglGetFieldEXT(p.field.c_str())));
+      continue;
+    }
     const size_t n = std::min<size_t>(p.values.size(), 16);  // loading keeps 1..16 values
     std::copy_n(p.values.begin(), n, v);
     pfglRastParamfvEXT(ids(p.name), static_cast<GLsizei>(n), v);
@@ -181,6 +185,10 @@ void compileSceneSources(const Scene& s) {
     if (colon != std::string::npos) text_log = file + text_log.substr(colon + 4);
     throw SceneError(text_log.empty() ? file + ": error: does not compile" : text_log);
   }
+  // (Checked when the scene was read: a failure here is the context's, e.g. inside glBegin.)
+  for (const FieldSource& f : s.fields)
+    if (pfglCompileFieldEXT(GL_FIELD_FIDGET_EXT, f.name.c_str(), f.text.c_str(), 0.0f) == 0)
+      fail(s, f.origin, "the field '" + f.name + "' does not compile");
 }
 
 void drawScene(const Scene& s, int width, int height, bool compile_sources) {

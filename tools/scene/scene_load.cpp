@@ -15,6 +15,8 @@
 #include "scene/obj_mesh.h"
 #include "scene/scene.h"
 
+#include "compiler/field/fidget_reader.h"
+
 namespace pf::scene {
 
 namespace {
@@ -56,6 +58,8 @@ class Reader {
                      keyName(pointer) + ": " + message);
   }
   Origin origin(const std::string& pointer) const { return {pointer}; }
+  // The scene's field names, which string parameter values may name (read before the objects).
+  std::set<std::string> field_names_;
   const std::string& path() const { return path_; }
 
   // Fails on a key of `j` outside `known`.
@@ -116,11 +120,17 @@ class Reader {
   }
   // A parameter value: a number or an array of 1 to 16 numbers.
   ParamValue param(const std::string& name, const json& j, const std::string& p) const {
-    ParamValue v{name, {}};
+    ParamValue v{name, {}, {}};
+    if (j.is_string()) {
+      v.field = j.get<std::string>();
+      if (!field_names_.count(v.field))
+        fail(p, "no field named '" + v.field + "' (a string value names one of the scene's \"fields\")");
+      return v;
+    }
     if (j.is_number()) v.values.push_back(number(j, p));
     else if (j.is_boolean()) v.values.push_back(j.get<bool>() ? 1 : 0);
     else if (j.is_array()) v.values = numbers(j, p, 1, 16);
-    else fail(p, std::string("expected a number or an array of 1 to 16 numbers, found ") + j.type_name());
+    else fail(p, std::string("expected a number, an array of 1 to 16 numbers or a field's name, found ") + j.type_name());
     return v;
   }
   std::vector<ParamValue> params(const json& j, const std::string& p) const {
@@ -324,6 +334,31 @@ Object readObject(const Reader& r, const json& j, const std::string& p, const Sc
 
 }  // namespace
 
+// "fields": name -> {"file": "model.vm"} or {"fidget": "inline .vm text"}. Each is read and checked
+// now, so that a bad model is reported with its own file, line and column.
+void readFields(const Reader& r, const json& j, Scene& s) {
+  if (!j.is_object()) r.fail("/fields", "expected an object: name -> {\"file\": ...} or {\"fidget\": ...}");
+  for (const auto& [name, f] : j.items()) {
+    const std::string p = "/fields/" + pointerToken(name);
+    r.onlyKeys(f, p, {"file", "fidget"});
+    if (f.contains("file") == f.contains("fidget")) r.fail(p, "a field has either \"file\" or \"fidget\" (inline text)");
+    FieldSource src{name, name, {}, r.origin(p)};
+    if (f.contains("file")) {
+      src.file = r.relativePath(r.string(f["file"], p + "/file"), p + "/file");
+      if (std::filesystem::path(src.file).extension() != ".vm")
+        r.fail(p + "/file", "'" + src.file + "': fields are read from Fidget .vm files");
+      bool ok = false;
+      src.text = readFile(src.file, ok);
+      if (!ok) r.fail(p + "/file", "cannot read '" + src.file + "'");
+    } else {
+      src.text = r.string(f["fidget"], p + "/fidget");
+    }
+    DiagnosticLog log;
+    if (!field::readFidgetModel(src.file, src.text, log)) throw SceneError(log.format());
+    s.fields.push_back(std::move(src));
+  }
+}
+
 Scene parseScene(const std::string& text, const std::string& path, bool allow_files) {
   json doc;
   try {
@@ -338,11 +373,15 @@ Scene parseScene(const std::string& text, const std::string& path, bool allow_fi
     throw SceneError(path + ":" + std::to_string(line) + ": error: not valid JSON: " +
                      (colon != std::string::npos ? what.substr(colon + 2) : what));
   }
-  const Reader r(text, path, allow_files);
+  Reader r(text, path, allow_files);
   Scene s;
   s.path = path;
   s.text = std::make_shared<const std::string>(text);
-  r.onlyKeys(doc, "", {"image", "camera", "lighting", "primitives", "materials", "objects"});
+  r.onlyKeys(doc, "", {"image", "camera", "lighting", "primitives", "fields", "materials", "objects"});
+  if (doc.contains("fields")) {
+    readFields(r, doc["fields"], s);
+    for (const FieldSource& f : s.fields) r.field_names_.insert(f.name);
+  }
   if (doc.contains("image")) readImage(r, doc["image"], s);
   if (doc.contains("camera")) readCamera(r, doc["camera"], s.camera);
   if (doc.contains("lighting")) readLighting(r, doc["lighting"], s);

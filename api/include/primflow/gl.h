@@ -207,6 +207,8 @@ void pfglSequencePointEXT(void);
 GLuint pfglCompileFieldEXT(GLenum format, const GLchar *name, const GLchar *source, GLfloat lipschitz);
 /* As pfglGetCompileLogEXT, for fields: field 0 is the last failed compilation. */
 void pfglGetFieldLogEXT(GLuint field, GLsizei bufSize, GLsizei *length, GLchar *log);
+/* The id of the field last compiled under `name`; 0 and GL_INVALID_VALUE if there is none. */
+GLuint pfglGetFieldEXT(const GLchar *name);
 
 #ifdef __cplusplus
 }

@@ -1,0 +1,207 @@
+// pffields: implicit surfaces, time against accuracy, per model x method x parameter
+// (docs/performance.md, "Implicit surfaces"). Every model is drawn through the API as pfrender
+// draws it (tools/model: --ortho view of its box), timed as the median of --frames frames after a
+// warm-up, glFinish inside the timed region; accuracy against the reference of issue #8 -- per
+// pixel, dense double-precision marching plus bisection to 1e-12 along the same ray -- at
+// --ref-size (the reference is slow), in world units of depth and in coverage mismatches.
+//   pffields [--models a.vm,b.vm] [--size 512] [--prospero-size 1024] [--ref-size 96]
+//            [--ref-steps 1000] [--frames 5] [--threads 1] [--csv FILE]
+// 2D models (no z): plain per-pixel evaluation (march, 1 step) against interval culling with
+// tape simplification, coverage compared over the whole image. 3D models: interval; march with
+// M = 50, 500, 5000 (seed 004's values); analytic where the field is a polynomial.
+#include <CLI/CLI.hpp>
+
+#include <primflow/gl.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "compiler/field/fidget_reader.h"
+#include "field/field_reference.h"
+#include "model/model_file.h"
+#include "raster/field/ray_polynomial.h"
+
+namespace {
+
+struct Run {
+  std::string method_name;
+  int method;
+  float param;
+};
+
+struct Frame {
+  double ms = 0;
+  std::vector<unsigned char> color;
+  std::vector<float> z;  // world z, NaN where nothing
+};
+
+// Draws `model` `frames` + 1 times (the first is the warm-up) into a w x h context.
+Frame render(const pf::model::Model& model, int w, int h, const Run& run, int threads, int frames) {
+  Frame f;
+  f.color.assign(size_t(w) * h * 4, 0);
+  const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_THREADS, threads, 0};
+  PFcontext ctx = pfCreateContextAttribs(attribs);
+  pfMakeCurrent(ctx, f.color.data(), GL_UNSIGNED_BYTE, w, h);
+  pf::model::ModelView v;
+  v.width = w;
+  v.height = h;
+  v.ortho = true;
+  v.box_min = model.default_box_min;
+  v.box_max = model.default_box_max;
+  v.method = run.method;
+  v.steps = run.param;
+  std::vector<double> ms;
+  for (int k = 0; k <= frames; ++k) {
+    const auto t0 = std::chrono::steady_clock::now();
+    pf::model::drawModel(model, v);  // clears, draws, glFinish
+    const auto t1 = std::chrono::steady_clock::now();
+    if (k > 0) ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+  }
+  std::sort(ms.begin(), ms.end());
+  f.ms = ms.empty() ? 0.0 : ms[ms.size() / 2];
+  GLint dw, dh, bytes;
+  void* data = nullptr;
+  pfGetDepthBuffer(ctx, &dw, &dh, &bytes, &data);
+  const float* d = static_cast<const float*>(data);
+  f.z = pf::model::worldDepth(model, v, std::vector<float>(d, d + size_t(w) * h));
+  pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
+  pfDestroyContext(ctx);
+  return f;
+}
+
+// The reference world z per pixel of the --ortho view (NaN: no surface), on `threads` threads.
+std::vector<double> reference(const pf::field::FieldTape& tape, const pf::model::Model& m, int n, int steps,
+                              bool two_dimensional) {
+  std::vector<double> z(size_t(n) * n);
+  const glm::dvec3 lo = m.default_box_min, hi = m.default_box_max;
+  auto rows = [&](int r0, int r1) {
+    for (int j = r0; j < r1; ++j)
+      for (int i = 0; i < n; ++i) {
+        const double x = lo.x + (i + 0.5) * (hi.x - lo.x) / n, y = lo.y + (j + 0.5) * (hi.y - lo.y) / n;
+        const double t = pf::field::testing::referenceHit(tape, {x, y, hi.z}, {0, 0, -(hi.z - lo.z)}, 0.0, 1.0,
+                                                          two_dimensional ? 1 : steps);
+        z[size_t(j) * n + i] = std::isinf(t) ? std::nan("") : hi.z - t * (hi.z - lo.z);
+      }
+  };
+  const int workers = std::max(1u, std::thread::hardware_concurrency());
+  std::vector<std::thread> pool;
+  for (int k = 0; k < workers; ++k) pool.emplace_back(rows, n * k / workers, n * (k + 1) / workers);
+  for (auto& t : pool) t.join();
+  return z;
+}
+
+struct Accuracy {
+  int judged = 0, coverage_mismatches = 0;
+  double max_depth = 0, mean_depth = 0;
+};
+
+Accuracy compare(const std::vector<float>& got, const std::vector<double>& want) {
+  Accuracy a;
+  int both = 0;
+  for (size_t k = 0; k < want.size(); ++k) {
+    ++a.judged;
+    const bool g = !std::isnan(got[k]), r = !std::isnan(want[k]);
+    if (g != r) {
+      ++a.coverage_mismatches;
+      continue;
+    }
+    if (!g) continue;
+    const double e = std::fabs(got[k] - want[k]);
+    a.max_depth = std::max(a.max_depth, e);
+    a.mean_depth += e;
+    ++both;
+  }
+  if (both) a.mean_depth /= both;
+  return a;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"pffields: implicit surfaces, time against accuracy per model and method"};
+  std::string models_arg, csv;
+  int size = 512, prospero_size = 1024, ref_size = 96, ref_steps = 1000, frames = 5, threads = 1;
+  app.add_option("--models", models_arg, "comma-separated .vm files (default: tests/data/models/fidget/*.vm)");
+  app.add_option("--size", size, "3D models' image size (square)")->check(CLI::Range(8, 8192));
+  app.add_option("--prospero-size", prospero_size, "2D models' image size (square)")->check(CLI::Range(8, 8192));
+  app.add_option("--ref-size", ref_size, "3D accuracy image size")->check(CLI::Range(8, 1024));
+  app.add_option("--ref-steps", ref_steps, "reference marching steps per ray")->check(CLI::Range(10, 1000000));
+  app.add_option("--frames", frames, "timed frames after one warm-up")->check(CLI::Range(1, 1000));
+  app.add_option("--threads", threads, "rasterizer threads")->check(CLI::Range(1, 256));
+  app.add_option("--csv", csv, "append results here");
+  CLI11_PARSE(app, argc, argv);
+
+  std::vector<std::string> models;
+  if (models_arg.empty()) {
+    for (const auto& e : std::filesystem::directory_iterator(std::string(PF_SOURCE_DIR) + "/tests/data/models/fidget"))
+      if (e.path().extension() == ".vm") models.push_back(e.path().string());
+    std::sort(models.begin(), models.end());
+  } else {
+    size_t a = 0;
+    while (a <= models_arg.size()) {
+      size_t b = models_arg.find(',', a);
+      if (b == std::string::npos) b = models_arg.size();
+      if (b > a) models.push_back(models_arg.substr(a, b - a));
+      a = b + 1;
+    }
+  }
+  std::ofstream out;
+  if (!csv.empty()) {
+    const bool fresh = !std::filesystem::exists(csv);
+    out.open(csv, std::ios::app);
+    if (fresh)
+      out << "model,method,param,size,threads,ms_median,ref_size,judged,coverage_mismatches,max_depth_error,"
+             "mean_depth_error\n";
+  }
+  std::printf("%-14s %-9s %7s %6s %10s | %6s %8s %11s %11s\n", "model", "method", "param", "size", "ms", "judged",
+              "mismatch", "max depth", "mean depth");
+  for (const std::string& path : models) {
+    pf::model::Model m;
+    try {
+      m = pf::model::loadModel(path);
+    } catch (const pf::model::ModelError& e) {
+      std::fprintf(stderr, "%s", e.what());
+      return 1;
+    }
+    pf::DiagnosticLog log;
+    const pf::field::FieldTape tape = *pf::field::readFidgetModel(path, m.text, log);
+    const std::string name = std::filesystem::path(path).stem().string();
+    // The tanglecube's file suggests --scale 0.222: its surface spans about [-3, 3]^3.
+    if (name == "tanglecube") {
+      m.default_box_min = glm::dvec3(-3.0);
+      m.default_box_max = glm::dvec3(3.0);
+    }
+    std::vector<Run> runs;
+    if (m.two_dimensional) {
+      runs = {{"march", GL_FIELD_METHOD_MARCH_EXT, 1.0f}, {"interval", GL_FIELD_METHOD_INTERVAL_EXT, 0.0f}};
+    } else {
+      runs = {{"interval", GL_FIELD_METHOD_INTERVAL_EXT, 0.0f},
+              {"march", GL_FIELD_METHOD_MARCH_EXT, 50.0f},
+              {"march", GL_FIELD_METHOD_MARCH_EXT, 500.0f},
+              {"march", GL_FIELD_METHOD_MARCH_EXT, 5000.0f}};
+      const int degree = pf::field::fieldPolynomialDegree(tape);
+      if (degree >= 0 && degree <= 4) runs.insert(runs.begin(), {"analytic", GL_FIELD_METHOD_ANALYTIC_EXT, 0.0f});
+    }
+    const int n = m.two_dimensional ? prospero_size : size;
+    const int rn = m.two_dimensional ? prospero_size : ref_size;
+    const std::vector<double> want = reference(tape, m, rn, ref_steps, m.two_dimensional);
+    for (const Run& run : runs) {
+      const Frame timed = render(m, n, n, run, threads, frames);
+      const Frame judged = rn == n ? timed : render(m, rn, rn, run, threads, 0);
+      const Accuracy a = compare(judged.z, want);
+      std::printf("%-14s %-9s %7g %6d %10.2f | %6d %8d %11.3g %11.3g\n", name.c_str(), run.method_name.c_str(),
+                  run.param, n, timed.ms, a.judged, a.coverage_mismatches, a.max_depth, a.mean_depth);
+      if (out)
+        out << name << ',' << run.method_name << ',' << run.param << ',' << n << ',' << threads << ',' << timed.ms << ','
+            << rn << ',' << a.judged << ',' << a.coverage_mismatches << ',' << a.max_depth << ',' << a.mean_depth << '\n';
+    }
+  }
+  return 0;
+}
