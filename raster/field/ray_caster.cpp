@@ -44,7 +44,7 @@ namespace {
 
 constexpr int kMaxTileDepth = 6;    // tile slabs: at most 64 along t
 constexpr int kMaxBlockDepth = 16;  // block slabs: halvings along t below a tile slab
-constexpr int kLeafSize = 2;        // undecided regions stop splitting at 2x2 pixels
+constexpr int kLeafSize = 4;        // undecided regions stop splitting at 4x4 pixels (measured: 2x faster than 2x2 on the bear)
 constexpr int kBisections = 30;  // the bracket shrinks to 2^-30 of a sample step
 
 struct Box {
@@ -119,6 +119,15 @@ bool worthSplitting(const FieldRays& fr, const ImplicitField& field, double x0, 
   const Vec3d pl = left.at(tm), pr = right.at(tm);
   const double width = length({pr[0] - pl[0], pr[1] - pl[1], pr[2] - pl[2]});
   return (b - a) * length(mid.direction) > ratio * width;
+}
+
+// The tape simplified by an interval evaluation's choices -- the same tape where nothing was
+// decided (no rebuild for fields with few min/max, such as the bear).
+std::shared_ptr<const FieldTape> simplifiedTape(const std::shared_ptr<const FieldTape>& tape,
+                                                const std::vector<Choice>& choices) {
+  for (Choice c : choices)
+    if (c != Choice::Both) return std::make_shared<const FieldTape>(simplify(*tape, choices));
+  return tape;
 }
 
 HitBox hitBoxOf(const Box& b) { return {{b.x.lo, b.y.lo, b.z.lo}, {b.x.hi, b.y.hi, b.z.hi}}; }
@@ -217,7 +226,7 @@ const FieldRayCaster::TileSlabs& FieldRayCaster::tileSlabs(const CastRequest& r,
       ++c.slabs_culled;
       return;
     }
-    auto simplified = std::make_shared<const FieldTape>(simplify(*tape, choices));
+    auto simplified = simplifiedTape(tape, choices);
     if (f.allNonNegative()) {
       ts.slabs.push_back({ta, tb, true, std::move(simplified), hitBoxOf(box)});
       return;
@@ -276,7 +285,7 @@ void FieldRayCaster::regionSlab(const CastRequest& r, int bx, int by, const Lane
     ++c.slabs_culled;
     return;
   }
-  auto simplified = std::make_shared<const FieldTape>(simplify(*tape, choices));
+  auto simplified = simplifiedTape(tape, choices);
   if (f.allNonNegative()) {
     ++c.slabs_filled;
     lanes.deciding_tape = simplified;

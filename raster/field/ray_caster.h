@@ -8,9 +8,9 @@
 //     slabs along t, front to back; over each slab's box of ray points the interval form proves
 //     the slab empty (skipped), full (hit at its front) or neither, and in the last case the tape
 //     is simplified to what can matter there and the region is split further: along t while it
-//     is deeper than wide, else into quarters, down to 2x2 pixels. Regions that stay undecided
+//     is deeper than wide, else into quarters, down to 4x4 pixels. Regions that stay undecided
 //     are sampled at steps under half a pixel's footprint and the first sign change is bisected
-//     (a feature thinner than that inside an undecided 2x2-pixel slab can be missed). The
+//     (a feature thinner than that inside an undecided 4x4-pixel slab can be missed). The
 //     tile's slabs are computed once and shared by its blocks. Counters say how much was culled
 //     and pruned.
 //   march -- M uniform steps over the ray's span in the box (the full tape, no culling), then
