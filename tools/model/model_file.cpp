@@ -132,6 +132,53 @@ void drawModel(const Model& model, const ModelView& view) {
   pfglFinish();
 }
 
+scene::Scene sceneOfModel(const Model& model, const ModelView& view) {
+  scene::Scene s;
+  s.path = model.path;
+  s.width = view.width;
+  s.height = view.height;
+  s.background = {0.0, 0.0, 0.0, 1.0};
+  const std::string name = std::filesystem::path(model.path).stem().string();
+  s.fields.push_back({name, model.path, model.text, {}});
+  const glm::dvec3 lo = view.box_min, hi = view.box_max, centre = 0.5 * (lo + hi);
+  const double radius = 0.5 * glm::length(hi - lo);
+  scene::Camera& c = s.camera;
+  if (model.two_dimensional) {
+    c.ortho = true;
+    c.eye = {centre.x, centre.y, hi.z + radius};
+    c.target = centre;
+    c.height = hi.y - lo.y;
+  } else {
+    const double fov = 40.0, distance = radius / std::sin(glm::radians(0.5 * fov)) * 1.05;
+    c.eye = centre + distance * glm::normalize(glm::dvec3(0.3, 0.35, 1.0));
+    c.target = centre;
+    c.fov_degrees = fov;
+    s.lighting = true;
+    s.global_ambient = {0.12, 0.12, 0.14, 1.0};
+    scene::Light light;
+    light.position = glm::normalize(glm::dvec3(0.4, 0.6, 1.0));
+    s.lights.push_back(light);
+  }
+  c.near = std::max(radius * 0.01, glm::length(c.eye - centre) - radius * 1.01);
+  c.far = glm::length(c.eye - centre) + radius * 1.01;
+  scene::Material m;
+  m.color = model.two_dimensional ? glm::dvec4(1.0) : glm::dvec4(0.85, 0.78, 0.62, 1.0);
+  m.specular = {0.25, 0.25, 0.25, 1.0};
+  m.shininess = 24;
+  s.materials["model"] = m;
+  scene::Object o;
+  o.primitive = "implicit";
+  o.material = "model";
+  o.params = {{"field", {}, name},
+              {"box_min", {lo.x, lo.y, lo.z}, {}},
+              {"box_max", {hi.x, hi.y, hi.z}, {}},
+              {"method", {static_cast<double>(view.method)}, {}},
+              {"steps", {static_cast<double>(view.steps)}, {}}};
+  o.points.emplace_back();
+  s.objects.push_back(std::move(o));
+  return s;
+}
+
 std::vector<float> worldDepth(const Model& model, const ModelView& view, const std::vector<float>& window_depth) {
   const ViewMatrices m = matricesOf(view, model.two_dimensional);
   const glm::dmat4 inv = glm::inverse(m.projection * m.modelview);

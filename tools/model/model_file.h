@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "scene/scene.h"
+
 namespace pf::model {
 
 // A model that cannot be read or compiled: the message names the file (and line and column,
@@ -56,6 +58,11 @@ void drawModel(const Model& model, const ModelView& view);
 // bottom to top), NaN where nothing was drawn; from the depth buffer through the view's
 // matrices, in double.
 std::vector<float> worldDepth(const Model& model, const ModelView& view, const std::vector<float>& window_depth);
+
+// The model as a scene (docs/scenes.md): its field, one implicit object over the view's box with
+// the view's method, the perspective camera of drawModel (an orthographic view from above for 2D
+// models, as their coverage images), and one light -- what pfview opens a model as.
+scene::Scene sceneOfModel(const Model& model, const ModelView& view);
 
 // Writes a greyscale PFM (little-endian, rows bottom to top). False with `error` on failure.
 bool writePfm(const std::string& path, int width, int height, const std::vector<float>& values, std::string* error);

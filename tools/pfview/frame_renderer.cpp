@@ -1,6 +1,9 @@
 // pfview's primflow side (see frame_renderer.h).
 #include "pfview/frame_renderer.h"
 
+// The context internals, for the work counters the overlay shows.
+#include "api/src/context_state.h"
+
 #include <chrono>
 
 namespace pf::view {
@@ -62,6 +65,9 @@ bool FrameRenderer::render(const scene::Scene& scene, int scene_generation, cons
     return false;
   }
   milliseconds_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  const field::FieldCounters& f = ctx_->renderer.stats().field;
+  field_evaluations_per_ray_ = f.rays ? double(f.point_evaluations) / double(f.rays) : 0.0;
+  ctx_->renderer.resetStats();
   return true;
 }
 

@@ -35,6 +35,8 @@ class FrameRenderer {
   int width() const { return width_; }
   int height() const { return height_; }
   double milliseconds() const { return milliseconds_; }  // of the last render, glFinish included
+  // Implicit surfaces in the last render: field evaluations per ray (0 without any).
+  double fieldEvaluationsPerRay() const { return field_evaluations_per_ray_; }
 
  private:
   PFcontext ctx_ = nullptr;
@@ -42,6 +44,7 @@ class FrameRenderer {
   std::vector<unsigned char> pixels_;
   int width_ = 0, height_ = 0;
   double milliseconds_ = 0;
+  double field_evaluations_per_ray_ = 0;
 };
 
 }  // namespace pf::view

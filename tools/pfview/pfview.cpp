@@ -1,11 +1,13 @@
 // pfview: primflow's scenes in a window (GLFW), to look at rather than read.
-//   pfview [SCENE.json] [--size WxH] [--threads N] [--frames N [--orbit DEG]] [--screenshot FILE]
+//   pfview [SCENE.json | MODEL.vm] [--size WxH] [--threads N] [--frames N [--orbit DEG]] [--screenshot FILE]
 //          [--window-shot FILE]
 // primflow renders every frame into a buffer; the window's own GL context only shows it (a
 // texture over the window) with a text overlay. Mouse: left-drag orbits, right-drag (or
 // shift + left) pans, the wheel zooms. Keys: R reload the scene file, S save a screenshot,
 // T cycle the thread count, L switch GL polygons between per-vertex and per-pixel lighting,
-// Home reset the camera, H help, Q or Esc quit.
+// M cycle the root-finding method of implicit surfaces and [ ] halve or double its steps (the
+// overlay shows the method and the field evaluations per ray), Home reset the camera, H help,
+// Q or Esc quit. A model (.vm) opens as a scene of one implicit surface.
 // While the camera moves the frame is rendered at a quarter of the window's size, and at full
 // size once it rests (progressive refinement). With --frames N it renders N full-size frames
 // (turning the camera --orbit degrees about the target before each after the first), saves
@@ -17,12 +19,15 @@
 
 #include <chrono>
 #include <cstdio>
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <optional>
 #include <sstream>
 #include <thread>
 
+#include "model/model_file.h"
+#include "raster/field/implicit_field.h"
 #include "pfview/frame_renderer.h"
 #include "pfview/orbit_camera.h"
 #include "pfview/window_display.h"
@@ -65,7 +70,19 @@ void reportError(Viewer& v, const std::string& message) {
 // (Re)reads the scene; on failure the error shows and the last good scene stays.
 void loadScene(Viewer& v) {
   try {
-    pf::scene::Scene next = v.scene_path.empty() ? pf::showcaseScene() : pf::scene::loadScene(v.scene_path);
+    pf::scene::Scene next;
+    if (v.scene_path.empty()) {
+      next = pf::showcaseScene();
+    } else if (pf::model::isModelPath(v.scene_path)) {
+      // A model opens as a scene of one implicit instance (tools/model/model_file.h).
+      const pf::model::Model m = pf::model::loadModel(v.scene_path);
+      pf::model::ModelView view;
+      view.box_min = m.default_box_min;
+      view.box_max = m.default_box_max;
+      next = pf::model::sceneOfModel(m, view);
+    } else {
+      next = pf::scene::loadScene(v.scene_path);
+    }
     const bool first = !v.scene_ok;
     v.scene = std::move(next);
     v.scene_ok = true;
@@ -75,7 +92,47 @@ void loadScene(Viewer& v) {
     v.dirty = true;
   } catch (const pf::scene::SceneError& e) {
     reportError(v, e.what());
+  } catch (const pf::model::ModelError& e) {
+    reportError(v, e.what());
   }
+}
+
+// The implicit objects' "method" and "steps" parameters (models, and scenes with fields).
+std::vector<pf::scene::ParamValue*> implicitParams(pf::scene::Scene& s, const std::string& name) {
+  std::vector<pf::scene::ParamValue*> out;
+  for (pf::scene::Object& o : s.objects)
+    if (o.primitive == "implicit")
+      for (pf::scene::ParamValue& p : o.params)
+        if (p.name == name && !p.values.empty()) out.push_back(&p);
+  return out;
+}
+
+// "implicit: interval, steps 64" for the first implicit object, or "".
+std::string implicitStatus(pf::scene::Scene& s) {
+  const auto methods = implicitParams(s, "method");
+  if (methods.empty()) return "";
+  const auto steps = implicitParams(s, "steps");
+  std::string text = "implicit: " +
+                     std::string(pf::field::rootMethodName(pf::field::RootMethod(static_cast<int>(methods[0]->values[0]))));
+  if (!steps.empty()) text += ", steps " + std::to_string(static_cast<int>(steps[0]->values[0]));
+  return text;
+}
+
+// M: the next root-finding method; [ and ]: halve or double march's steps (from 64).
+std::string changeImplicitMethod(pf::scene::Scene& s, int key) {
+  const auto methods = implicitParams(s, "method");
+  const auto steps = implicitParams(s, "steps");
+  if (methods.empty()) return "the scene has no implicit surfaces";
+  if (key == GLFW_KEY_M) {
+    const int next = (static_cast<int>(methods[0]->values[0]) + 1) % pf::field::kRootMethodCount;
+    for (auto* p : methods) p->values[0] = next;
+  } else {
+    for (auto* p : steps) {
+      const double cur = p->values[0] >= 1 ? p->values[0] : 64;
+      p->values[0] = std::clamp(key == GLFW_KEY_RIGHT_BRACKET ? cur * 2 : cur / 2, 1.0, 65536.0);
+    }
+  }
+  return implicitStatus(s);
 }
 
 Viewer& viewerOf(GLFWwindow* w) { return *static_cast<Viewer*>(glfwGetWindowUserPointer(w)); }
@@ -139,9 +196,17 @@ std::vector<std::string> overlay(const Viewer& v, const pf::view::FrameRenderer&
     lines.push_back(threads);
     lines.push_back("left drag: orbit   right drag / shift+left: pan   wheel: zoom");
     lines.push_back("R: reload   S: screenshot   T: threads   L: per-pixel/per-vertex lighting");
+    lines.push_back("M: root-finding method of implicit surfaces   [ ]: its steps");
     lines.push_back("Home: reset view   Q/Esc: quit");
   } else {
     lines.push_back(threads + "   H: help");
+  }
+  if (r.fieldEvaluationsPerRay() > 0) {
+    std::ostringstream f;
+    f.precision(1);
+    f << std::fixed << implicitStatus(const_cast<pf::scene::Scene&>(v.scene)) << "   " << r.fieldEvaluationsPerRay()
+      << " field evaluations per ray";
+    lines.push_back(f.str());
   }
   if (!v.status.empty()) lines.push_back(v.status);
   for (const std::string& e : v.errors) lines.push_back(e);
@@ -156,7 +221,7 @@ int main(int argc, char** argv) {
   std::string size, screenshot, window_shot;
   int threads = 0, frames = 0;
   double orbit = 0;
-  app.add_option("scene", v.scene_path, "scene file (.json); none: the built-in showcase");
+  app.add_option("scene", v.scene_path, "scene file (.json) or model (.vm); none: the built-in showcase");
   app.add_option("--size", size, "window size WxH (default: the scene's)");
   app.add_option("--threads", threads, "rasterizer threads (0: PF_NUM_THREADS or all cores)")->check(CLI::Range(0, 256));
   app.add_option("--frames", frames, "render this many frames, then exit (scripted mode)")->check(CLI::Range(0, 100000));
@@ -168,8 +233,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
-  if (!v.scene_path.empty() && std::filesystem::path(v.scene_path).extension() != ".json") {
-    std::cerr << "pfview: " << v.scene_path << ": error: unknown scene type (pfview opens .json scene files)\n";
+  if (!v.scene_path.empty() && std::filesystem::path(v.scene_path).extension() != ".json" &&
+      !pf::model::isModelPath(v.scene_path)) {
+    std::cerr << "pfview: " << v.scene_path << ": error: unknown scene type (pfview opens .json scene files and .vm models)\n";
     return 1;
   }
   loadScene(v);
@@ -236,6 +302,9 @@ int main(int argc, char** argv) {
           v.scene.per_pixel = !v.scene.per_pixel;
           v.status = v.scene.lighting ? (v.scene.per_pixel ? "polygons lit per pixel" : "polygons lit per vertex")
                                       : "the scene has no lighting";
+          v.dirty = true;
+        } else if ((key == GLFW_KEY_M || key == GLFW_KEY_LEFT_BRACKET || key == GLFW_KEY_RIGHT_BRACKET) && v.scene_ok) {
+          v.status = changeImplicitMethod(v.scene, key);
           v.dirty = true;
         } else if (key == GLFW_KEY_H) {
           v.show_help = !v.show_help;
