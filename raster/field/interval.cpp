@@ -12,12 +12,12 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 // The largest float <= d (one step lower still when d is not exact).
 float roundDown(double d, bool exact) {
   float f = static_cast<float>(d);
-  if (static_cast<double>(f) > d || (!exact && static_cast<double>(f) == d)) f = std::nextafter(f, -kInf);
+  if (static_cast<double>(f) > d || (!exact && static_cast<double>(f) == d)) f = floatBelow(f);
   return f;
 }
 float roundUp(double d, bool exact) {
   float f = static_cast<float>(d);
-  if (static_cast<double>(f) < d || (!exact && static_cast<double>(f) == d)) f = std::nextafter(f, kInf);
+  if (static_cast<double>(f) < d || (!exact && static_cast<double>(f) == d)) f = floatAbove(f);
   return f;
 }
 
@@ -31,7 +31,7 @@ Interval outward(double lo, double hi, bool exact) {
 Interval outwardLibm(double lo, double hi) {
   Interval r = outward(lo, hi, false);
   if (r.isWhole()) return r;
-  return {std::nextafter(r.lo, -kInf), std::nextafter(r.hi, kInf)};
+  return {floatBelow(r.lo), floatAbove(r.hi)};
 }
 
 // Whether a + b is exact in double (a and b floats, so the only loss is a large exponent gap).

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace pf::field {
@@ -31,6 +32,19 @@ struct Interval {
   bool allNegative() const { return hi < 0.0f; }      // every point outside (f < 0)
   bool allNonNegative() const { return lo >= 0.0f; }  // every point inside (f >= 0)
 };
+
+// The next float below / above v (v itself for -inf / +inf and NaN): std::nextafter without the
+// library call, for the interval form's inner loop.
+inline float floatBelow(float v) {
+  if (!(v > -std::numeric_limits<float>::infinity())) return v;
+  if (v == 0.0f) return -std::numeric_limits<float>::denorm_min();
+  uint32_t bits;
+  __builtin_memcpy(&bits, &v, 4);
+  bits += v > 0.0f ? -1 : 1;
+  __builtin_memcpy(&v, &bits, 4);
+  return v;
+}
+inline float floatAbove(float v) { return -floatBelow(-v); }
 
 Interval intervalNeg(Interval a);
 Interval intervalAbs(Interval a);

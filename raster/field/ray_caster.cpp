@@ -52,8 +52,8 @@ struct Box {
   bool empty = false;
 };
 
-float down(double v) { return std::nextafter(static_cast<float>(v), -std::numeric_limits<float>::infinity()); }
-float up(double v) { return std::nextafter(static_cast<float>(v), std::numeric_limits<float>::infinity()); }
+float down(double v) { return floatBelow(static_cast<float>(v)); }
+float up(double v) { return floatAbove(static_cast<float>(v)); }
 
 // The box of points o + t d, t in [a, b], of the given rays, intersected with the field's box
 // and rounded outward (one float step: the double points round to floats within half a step).

@@ -94,6 +94,15 @@ TEST(IntervalEvaluator, RoundsOutwardWhereFloatRoundingCouldLeaveTheRange) {
   EXPECT_TRUE(intervalSin({0.0f, std::numeric_limits<float>::infinity()}).isWhole());
 }
 
+TEST(IntervalEvaluator, FloatStepsMatchNextafter) {
+  const float inf = std::numeric_limits<float>::infinity();
+  for (float v : {0.0f, -0.0f, 1.0f, -1.0f, 1e-45f, -1e-45f, 3.4028235e38f, -3.4028235e38f, inf, -inf, 0.1f, -7.5f}) {
+    EXPECT_EQ(floatBelow(v), std::nextafter(v, -inf)) << v;
+    EXPECT_EQ(floatAbove(v), std::nextafter(v, inf)) << v;
+  }
+  EXPECT_TRUE(std::isnan(floatBelow(std::nanf(""))));
+}
+
 FieldTape model(const std::string& name) {
   DiagnosticLog log;
   auto t = readFidgetModel(name, testing::readModelText(name), log);
