@@ -103,7 +103,7 @@ int main(int argc, char** argv) {
   auto* o_steps = app.add_option("--steps", steps, "model: march's steps M, or sphere tracing's Lipschitz bound")
                       ->check(CLI::Range(0.0, 1e6));
   auto* o_depth = app.add_option("--depth-out", depth_out, "model: write the visible surface's world z as a PFM (NaN: none)");
-  auto* o_time = app.add_option("--time", time, "model: the time of an animated model (models without time ignore it)");
+  auto* o_time = app.add_option("--time", time, "model: HyperFun's time x[4] (Fidget models have none and ignore it)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -123,7 +123,7 @@ int main(int argc, char** argv) {
   pf::model::ModelView view;
   if (is_model) {
     try {
-      model = pf::model::loadModel(scene_path);
+      model = pf::model::loadModel(scene_path, time);
     } catch (const pf::model::ModelError& e) {
       std::cerr << e.what() << (std::string(e.what()).back() == '\n' ? "" : "\n");
       return 1;
@@ -135,6 +135,7 @@ int main(int argc, char** argv) {
     }
     view.method = static_cast<int>(*method);
     view.steps = static_cast<float>(steps);
+    view.time = time;
     view.ortho = ortho;
     view.box_min = model->default_box_min;
     view.box_max = model->default_box_max;

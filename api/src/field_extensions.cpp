@@ -7,28 +7,34 @@
 
 #include "api/src/context_state.h"
 #include "compiler/field/fidget_reader.h"
+#include "compiler/field/hyperfun_reader.h"
 
 using pf::currentContext;
 
 extern "C" {
 
-GLuint pfglCompileFieldEXT(GLenum format, const GLchar* name, const GLchar* source, GLfloat lipschitz) {
+GLuint pfglCompileFieldParamsEXT(GLenum format, const GLchar* name, const GLchar* source, GLfloat lipschitz,
+                                 GLdouble time, GLsizei count, const GLdouble* params) {
   PFcontextRec* ctx = currentContext();
   if (!ctx) return 0;
   if (ctx->in_begin) {
     ctx->setError(GL_INVALID_OPERATION);
     return 0;
   }
-  if (format != GL_FIELD_FIDGET_EXT) {
+  if (format != GL_FIELD_FIDGET_EXT && format != GL_FIELD_HYPERFUN_EXT) {
     ctx->setError(GL_INVALID_ENUM);
     return 0;
   }
-  if (!source || !name || !(lipschitz >= 0.0f) || !std::isfinite(lipschitz)) {
+  if (!source || !name || !(lipschitz >= 0.0f) || !std::isfinite(lipschitz) || !std::isfinite(time) || count < 0 ||
+      (count > 0 && !params) || (format == GL_FIELD_FIDGET_EXT && (time != 0.0 || count != 0))) {
     ctx->setError(GL_INVALID_VALUE);
     return 0;
   }
   pf::DiagnosticLog log;
-  std::optional<pf::field::FieldTape> tape = pf::field::readFidgetModel(name, source, log);
+  std::optional<pf::field::FieldTape> tape =
+      format == GL_FIELD_FIDGET_EXT
+          ? pf::field::readFidgetModel(name, source, log)
+          : pf::field::readHyperFunModel(name, source, log, std::vector<double>(params, params + count), "my_model", time);
   if (!tape) {
     ctx->field_failed_log = log.format();
     return 0;
@@ -36,6 +42,10 @@ GLuint pfglCompileFieldEXT(GLenum format, const GLchar* name, const GLchar* sour
   ctx->fields.push_back(std::make_unique<const pf::field::ImplicitField>(name, std::move(*tape), lipschitz));
   ctx->field_logs.push_back(log.format());
   return static_cast<GLuint>(ctx->fields.size());
+}
+
+GLuint pfglCompileFieldEXT(GLenum format, const GLchar* name, const GLchar* source, GLfloat lipschitz) {
+  return pfglCompileFieldParamsEXT(format, name, source, lipschitz, 0.0, 0, nullptr);
 }
 
 void pfglGetFieldLogEXT(GLuint field, GLsizei bufSize, GLsizei* length, GLchar* out) {

@@ -9,6 +9,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <glm/glm.hpp>
+
 #include "gl_context.h"
 #include "model/model_file.h"
 
@@ -92,6 +94,42 @@ TEST(Model, OrthoDepthIsTheWorldZOfTheSurface) {
   EXPECT_LT(max_err, 2e-6);  // the depth buffer's float precision over the box's depth
 }
 
+// A HyperFun sphere whose radius grows with the time x[4]: --ortho depth against the formula.
+TEST(Model, HyperFunModelsReadTheTime) {
+  const std::string path =
+      writeTemp("pf_model_time.hf", "my_model(x[4], a[1]) {\n  array c[3], p[3];\n  c = [0, 0, 0];\n"
+                                    "  p[1] = x[1]; p[2] = x[2]; p[3] = x[3];\n"
+                                    "  my_model = hfSphere(p, c, 0.5 + x[4]);\n}\n");
+  for (double time : {0.0, 0.25}) {
+    const pf::model::Model m = pf::model::loadModel(path, time);
+    EXPECT_EQ(m.format, pf::model::ModelFormat::HyperFun);
+    const int n = 32;
+    pf::test::GlContext gl(n, n);
+    pf::model::ModelView v;
+    v.width = v.height = n;
+    v.ortho = true;
+    v.time = time;
+    v.box_min = glm::dvec3(-1.0);
+    v.box_max = glm::dvec3(1.0);
+    pf::model::drawModel(m, v);
+    const std::vector<float> z = pf::model::worldDepth(m, v, depthOf(gl));
+    const double r = 0.5 + time;
+    int hits = 0;
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const double x = -1 + (i + 0.5) * 2.0 / n, y = -1 + (j + 0.5) * 2.0 / n, h2 = r * r - x * x - y * y;
+        if (std::fabs(h2) < 1e-3) continue;
+        const float got = z[size_t(j) * n + i];
+        ASSERT_EQ(!std::isnan(got), h2 > 0) << i << ", " << j << " at time " << time;
+        if (h2 > 0) {
+          EXPECT_NEAR(got, std::sqrt(h2), 2e-6);
+          ++hits;
+        }
+      }
+    EXPECT_GT(hits, 100);
+  }
+}
+
 TEST(Model, PfmIsLittleEndianBottomToTop) {
   const std::string path = (std::filesystem::temp_directory_path() / "pf_model_test.pfm").string();
   std::string error;
@@ -121,7 +159,9 @@ TEST(Model, BadModelsAreReportedWithFileLineAndColumn) {
             std::string::npos);
   EXPECT_NE(error("/nonexistent/model.vm").find("/nonexistent/model.vm: error: cannot open the model file"),
             std::string::npos);
-  EXPECT_NE(error(writeTemp("pf_model.hf", "my_model(x[3], a[1]) { my_model = 1; }\n")).find("no HyperFun front end"),
+  EXPECT_NE(error(writeTemp("pf_model.hf", "my_model(x[3], a[1]) {\n  if x[1] > 0 then r = 1; else r = 2; endif;\n"
+                                          "  my_model = r;\n}\n"))
+                .find("pf_model.hf:2:6: error: condition depends on the point x"),
             std::string::npos);
 }
 

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "compiler/field/fidget_reader.h"
+#include "compiler/field/hyperfun_reader.h"
 
 namespace pf::model {
 
@@ -20,7 +21,7 @@ bool isModelPath(const std::string& path) {
   return ext == ".vm" || ext == ".hf";
 }
 
-Model loadModel(const std::string& path) {
+Model loadModel(const std::string& path, double time) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ModelError(path + ": error: cannot open the model file");
   std::stringstream ss;
@@ -28,19 +29,24 @@ Model loadModel(const std::string& path) {
   Model m;
   m.path = path;
   m.text = ss.str();
-  if (std::filesystem::path(path).extension() == ".hf") {
-    m.format = ModelFormat::HyperFun;
-    m.default_box_min = glm::dvec3(-10.0);
-    m.default_box_max = glm::dvec3(10.0);
-    throw ModelError(path + ":1:1: error: HyperFun models are not read yet: primflow has no HyperFun front end "
-                            "(only Fidget .vm models can be drawn)");
-  }
   // Checked here, before any drawing, so that a bad file is reported with its line.
   DiagnosticLog log;
-  auto tape = field::readFidgetModel(path, m.text, log);
+  std::optional<field::FieldTape> tape;
+  if (std::filesystem::path(path).extension() == ".hf") {
+    m.format = ModelFormat::HyperFun;
+    m.default_box_min = glm::dvec3(-10.0);  // HyperFun's polygonizer's default box
+    m.default_box_max = glm::dvec3(10.0);
+    tape = field::readHyperFunModel(path, m.text, log, {}, "my_model", time);
+  } else {
+    tape = field::readFidgetModel(path, m.text, log);
+  }
   if (!tape) throw ModelError(log.format());
   m.two_dimensional = !tape->usesZ();
   return m;
+}
+
+GLenum fieldFormatOf(const Model& m) {
+  return m.format == ModelFormat::HyperFun ? GL_FIELD_HYPERFUN_EXT : GL_FIELD_FIDGET_EXT;
 }
 
 namespace {
@@ -84,7 +90,8 @@ void loadMatrix(GLenum mode, const glm::dmat4& m) {
 }  // namespace
 
 void drawModel(const Model& model, const ModelView& view) {
-  const GLuint field = pfglCompileFieldEXT(GL_FIELD_FIDGET_EXT, model.path.c_str(), model.text.c_str(), 0.0f);
+  const GLuint field = pfglCompileFieldParamsEXT(fieldFormatOf(model), model.path.c_str(), model.text.c_str(), 0.0f,
+                                                 model.format == ModelFormat::HyperFun ? view.time : 0.0, 0, nullptr);
   if (field == 0) {
     char log[4096];
     pfglGetFieldLogEXT(0, sizeof log, nullptr, log);
@@ -139,7 +146,7 @@ scene::Scene sceneOfModel(const Model& model, const ModelView& view) {
   s.height = view.height;
   s.background = {0.0, 0.0, 0.0, 1.0};
   const std::string name = std::filesystem::path(model.path).stem().string();
-  s.fields.push_back({name, model.path, model.text, {}});
+  s.fields.push_back({name, model.path, model.text, {}, model.format == ModelFormat::HyperFun, view.time, {}});
   const glm::dvec3 lo = view.box_min, hi = view.box_max, centre = 0.5 * (lo + hi);
   const double radius = 0.5 * glm::length(hi - lo);
   scene::Camera& c = s.camera;

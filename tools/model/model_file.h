@@ -1,6 +1,7 @@
 // Models as pfrender and pfview open them: a Fidget .vm or HyperFun .hf file, compiled into the
 // current context as a field (pfglCompileFieldEXT) and drawn through the public API as an
 // `implicit` instance, with the camera the model command line describes (issue #8's contract):
+// HyperFun models are read as docs/hyperfun.md says, at the view's time (x[4]).
 //   --ortho: looking down -z from above the box, the image covering the box's x and y extent
 //   exactly (pixel centres at x0 + (i + 0.5)(x1 - x0)/W, row 0 at the bottom); otherwise a
 //   perspective view of the box from the +z side, a little from above and the right.
@@ -39,8 +40,11 @@ struct Model {
 // Whether pfrender treats `path` as a model (by its extension: .vm, .hf).
 bool isModelPath(const std::string& path);
 
-// Reads and checks a model file (throws ModelError).
-Model loadModel(const std::string& path);
+// GL_FIELD_FIDGET_EXT or GL_FIELD_HYPERFUN_EXT.
+GLenum fieldFormatOf(const struct Model& m);
+
+// Reads and checks a model file (throws ModelError), a HyperFun one at `time`.
+Model loadModel(const std::string& path, double time = 0.0);
 
 struct ModelView {
   int width = 512, height = 512;
@@ -48,6 +52,7 @@ struct ModelView {
   glm::dvec3 box_min{-1.0}, box_max{1.0};
   int method = GL_FIELD_METHOD_AUTO_EXT;
   float steps = 0.0f;  // the method's parameter (march: steps; sphere: Lipschitz bound)
+  double time = 0.0;   // HyperFun's x[4] (Fidget models have no time)
 };
 
 // Compiles the model into the current context and draws it: clears, camera, light, the

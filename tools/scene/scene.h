@@ -58,6 +58,9 @@ struct FieldSource {
   std::string file;  // as named in messages (the file, or the scene's key for inline text)
   std::string text;
   Origin origin;
+  bool hyperfun = false;       // a HyperFun model (else Fidget)
+  double time = 0.0;           // HyperFun: x[4]
+  std::vector<double> params;  // HyperFun: a[1], a[2], ...
 };
 
 struct Material {

@@ -16,6 +16,7 @@
 #include "scene/scene.h"
 
 #include "compiler/field/fidget_reader.h"
+#include "compiler/field/hyperfun_reader.h"
 
 namespace pf::scene {
 
@@ -334,27 +335,38 @@ Object readObject(const Reader& r, const json& j, const std::string& p, const Sc
 
 }  // namespace
 
-// "fields": name -> {"file": "model.vm"} or {"fidget": "inline .vm text"}. Each is read and checked
-// now, so that a bad model is reported with its own file, line and column.
+// "fields": name -> {"file": "model.vm" or "model.hf"}, {"fidget": "inline .vm text"} or
+// {"hyperfun": "inline .hf text"}, with "time" and "params" for HyperFun models. Each is read
+// and checked now, so that a bad model is reported with its own file, line and column.
 void readFields(const Reader& r, const json& j, Scene& s) {
-  if (!j.is_object()) r.fail("/fields", "expected an object: name -> {\"file\": ...} or {\"fidget\": ...}");
+  if (!j.is_object()) r.fail("/fields", "expected an object: name -> {\"file\": ...}, {\"fidget\": ...} or {\"hyperfun\": ...}");
   for (const auto& [name, f] : j.items()) {
     const std::string p = "/fields/" + pointerToken(name);
-    r.onlyKeys(f, p, {"file", "fidget"});
-    if (f.contains("file") == f.contains("fidget")) r.fail(p, "a field has either \"file\" or \"fidget\" (inline text)");
-    FieldSource src{name, name, {}, r.origin(p)};
+    r.onlyKeys(f, p, {"file", "fidget", "hyperfun", "time", "params"});
+    if (f.contains("file") + f.contains("fidget") + f.contains("hyperfun") != 1)
+      r.fail(p, "a field has exactly one of \"file\", \"fidget\" or \"hyperfun\" (inline text)");
+    FieldSource src{name, name, {}, r.origin(p), false, 0.0, {}};
     if (f.contains("file")) {
       src.file = r.relativePath(r.string(f["file"], p + "/file"), p + "/file");
-      if (std::filesystem::path(src.file).extension() != ".vm")
-        r.fail(p + "/file", "'" + src.file + "': fields are read from Fidget .vm files");
+      const std::string ext = std::filesystem::path(src.file).extension().string();
+      if (ext != ".vm" && ext != ".hf")
+        r.fail(p + "/file", "'" + src.file + "': fields are read from Fidget .vm or HyperFun .hf files");
+      src.hyperfun = ext == ".hf";
       bool ok = false;
       src.text = readFile(src.file, ok);
       if (!ok) r.fail(p + "/file", "cannot read '" + src.file + "'");
     } else {
-      src.text = r.string(f["fidget"], p + "/fidget");
+      src.hyperfun = f.contains("hyperfun");
+      src.text = r.string(f[src.hyperfun ? "hyperfun" : "fidget"], p + (src.hyperfun ? "/hyperfun" : "/fidget"));
     }
+    if (!src.hyperfun && (f.contains("time") || f.contains("params")))
+      r.fail(p, "\"time\" and \"params\" are for HyperFun models; Fidget models have neither");
+    if (f.contains("time")) src.time = r.number(f["time"], p + "/time");
+    if (f.contains("params")) src.params = r.numbers(f["params"], p + "/params", 1, 1000);
     DiagnosticLog log;
-    if (!field::readFidgetModel(src.file, src.text, log)) throw SceneError(log.format());
+    const bool ok = src.hyperfun ? field::readHyperFunModel(src.file, src.text, log, src.params, "my_model", src.time).has_value()
+                                 : field::readFidgetModel(src.file, src.text, log).has_value();
+    if (!ok) throw SceneError(log.format());
     s.fields.push_back(std::move(src));
   }
 }

@@ -195,9 +195,12 @@ void pfglSequencePointEXT(void);
  * (0: none; negative or not finite: GL_INVALID_VALUE). Formats:
  *   GL_FIELD_FIDGET_EXT -- Fidget's SSA text (.vm files); Fidget's sign (negative inside) is
  *     flipped on reading.
+ *   GL_FIELD_HYPERFUN_EXT -- a HyperFun model (.hf, docs/hyperfun.md); the object named
+ *     "my_model", else the file's first.
  * An unknown format: GL_INVALID_ENUM; NULL source or name: GL_INVALID_VALUE; inside glBegin /
  * glEnd: GL_INVALID_OPERATION. Fields live as long as the context. */
 #define GL_FIELD_FIDGET_EXT 0x31030
+#define GL_FIELD_HYPERFUN_EXT 0x31031
 /* The `method` parameter of the implicit primitive: how it finds the surface along a ray. */
 #define GL_FIELD_METHOD_AUTO_EXT 0     /* analytic if polynomial (degree <= 4), sphere if Lipschitz, else interval */
 #define GL_FIELD_METHOD_ANALYTIC_EXT 1 /* the ray polynomial's first root */
@@ -205,6 +208,12 @@ void pfglSequencePointEXT(void);
 #define GL_FIELD_METHOD_MARCH_EXT 3    /* `steps` uniform steps, then bisection */
 #define GL_FIELD_METHOD_SPHERE_EXT 4   /* sphere tracing with the declared bound (or `steps` as the bound) */
 GLuint pfglCompileFieldEXT(GLenum format, const GLchar *name, const GLchar *source, GLfloat lipschitz);
+/* pfglCompileFieldEXT with the model's parameters: for GL_FIELD_HYPERFUN_EXT, `time` is x[4] and
+ * params[0 .. count-1] are a[1 .. count] (the rest of a[] is 0; more than a[] holds: the
+ * compilation fails, with the message in the log). Fidget models have neither: time must be 0
+ * and count 0 (else GL_INVALID_VALUE). count < 0, or count > 0 with NULL params: GL_INVALID_VALUE. */
+GLuint pfglCompileFieldParamsEXT(GLenum format, const GLchar *name, const GLchar *source, GLfloat lipschitz,
+                                 GLdouble time, GLsizei count, const GLdouble *params);
 /* As pfglGetCompileLogEXT, for fields: field 0 is the last failed compilation. */
 void pfglGetFieldLogEXT(GLuint field, GLsizei bufSize, GLsizei *length, GLchar *log);
 /* The id of the field last compiled under `name`; 0 and GL_INVALID_VALUE if there is none. */

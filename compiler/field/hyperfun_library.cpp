@@ -1,0 +1,614 @@
+// HyperFun's built-in maths, R-functions and hf* library as tape builders (hyperfun_library.h).
+#include "compiler/field/hyperfun_library.h"
+
+#include <cmath>
+
+namespace pf::field::hyperfun {
+
+// --- TapeAlgebra --------------------------------------------------------------------------------
+
+Real TapeAlgebra::emit(FieldOp op, Real a) { return Real::onTape(b_.unary(op, materialize(a))); }
+Real TapeAlgebra::emit(FieldOp op, Real a, Real b) {
+  return Real::onTape(b_.binary(op, materialize(a), materialize(b)));
+}
+
+static bool isKnown(Real r, double v) { return r.is_known && r.value == v; }
+
+Real TapeAlgebra::add(Real a, Real b) {
+  if (a.is_known && b.is_known) return Real::known(a.value + b.value);
+  if (isKnown(a, 0.0)) return b;
+  if (isKnown(b, 0.0)) return a;
+  return emit(FieldOp::Add, a, b);
+}
+Real TapeAlgebra::sub(Real a, Real b) {
+  if (a.is_known && b.is_known) return Real::known(a.value - b.value);
+  if (isKnown(b, 0.0)) return a;
+  if (isKnown(a, 0.0)) return neg(b);
+  return emit(FieldOp::Sub, a, b);
+}
+Real TapeAlgebra::mul(Real a, Real b) {
+  if (a.is_known && b.is_known) return Real::known(a.value * b.value);
+  if (isKnown(a, 1.0)) return b;
+  if (isKnown(b, 1.0)) return a;
+  if (isKnown(a, -1.0)) return neg(b);
+  if (isKnown(b, -1.0)) return neg(a);
+  return emit(FieldOp::Mul, a, b);
+}
+Real TapeAlgebra::div(Real a, Real b) {
+  if (a.is_known && b.is_known) return Real::known(a.value / b.value);
+  if (isKnown(b, 1.0)) return a;
+  return emit(FieldOp::Div, a, b);
+}
+// min and max ignore a NaN operand, as the tape's (field_scalar.h).
+Real TapeAlgebra::min(Real a, Real b) {
+  if (a.is_known && b.is_known) return Real::known((a.value < b.value || b.value != b.value) ? a.value : b.value);
+  return emit(FieldOp::Min, a, b);
+}
+Real TapeAlgebra::max(Real a, Real b) {
+  if (a.is_known && b.is_known) return Real::known((a.value > b.value || b.value != b.value) ? a.value : b.value);
+  return emit(FieldOp::Max, a, b);
+}
+
+// a^n for n >= 0 by squaring and multiplying (a^0 = 1, as HyperFun's empty product).
+static Real integerPower(TapeAlgebra& m, Real a, uint64_t n) {
+  Real result = Real::known(1.0);
+  while (n) {
+    if (n & 1) result = m.mul(result, a);
+    n >>= 1;
+    if (n) a = m.square(a);
+  }
+  return result;
+}
+
+Real TapeAlgebra::pow(Real a, Real b) {
+  if (b.is_known && b.value - std::floor(b.value) < kEps && std::fabs(b.value) < 4.0e9) {
+    const double c = std::ceil(std::fabs(b.value));  // HyperFun's HF_round of |b|
+    const auto n = static_cast<uint64_t>(c - std::fabs(b.value) > 0.5 ? c - 1.0 : c);
+    const Real p = integerPower(*this, a, n);
+    return b.value < 0.0 ? div(Real::known(1.0), p) : p;
+  }
+  return exp(mul(b, log(a)));
+}
+
+Real TapeAlgebra::unite(Real a, Real b) { return add(add(a, b), sqrt(add(square(a), square(b)))); }
+Real TapeAlgebra::intersect(Real a, Real b) { return sub(add(a, b), sqrt(add(square(a), square(b)))); }
+// a & -b, written a - b - sqrt(a^2 + b^2): the same doubles, since (-b)^2 = b^2 and a + (-b) = a - b.
+Real TapeAlgebra::subtract(Real a, Real b) { return sub(sub(a, b), sqrt(add(square(a), square(b)))); }
+
+// --- Helpers for the library functions ---------------------------------------------------------
+namespace {
+
+using Items = std::vector<Real>;
+Real K(double v) { return Real::known(v); }
+
+[[noreturn]] void reject(int argument, std::string message) { throw LibraryError{argument, std::move(message)}; }
+
+// "'center' (argument 2 of 'hfSphere')"
+std::string paramLabel(const LibraryCall& c, int i) {
+  std::string_view p = c.function.params;
+  for (int k = 0; k < i; ++k) p = p.substr(p.find(", ") + 2);
+  p = p.substr(0, p.find(", "));
+  return "'" + std::string(p) + "' (argument " + std::to_string(i + 1) + " of '" + std::string(c.function.name) + "')";
+}
+
+// The items of array argument i, which must hold `size` items.
+Items& items(LibraryCall& c, int i, size_t size) {
+  Items& a = *c.arrays[i];
+  if (a.size() != size)
+    reject(i, paramLabel(c, i) + " must be an array of " + std::to_string(size) + " items; '" + c.array_names[i] +
+                  "' has " + std::to_string(a.size()));
+  return a;
+}
+
+// Array arguments [first, last] that must all hold as many items as argument `first`.
+size_t sameSizes(LibraryCall& c, int first, int last) {
+  const size_t n = c.arrays[first]->size();
+  for (int i = first + 1; i <= last; ++i) items(c, i, n);
+  return n;
+}
+
+// A real argument that must be known when the model is compiled.
+double knownArg(LibraryCall& c, int i, std::string_view why) {
+  if (!c.reals[i].is_known)
+    reject(i, paramLabel(c, i) + " depends on the point x; it must be known when the model is compiled (" +
+                  std::string(why) + ")");
+  return c.reals[i].value;
+}
+
+// An item of an array argument that must be known when the model is compiled.
+double knownItem(LibraryCall& c, int i, size_t k, std::string_view why) {
+  const Real r = (*c.arrays[i])[k];
+  if (!r.is_known)
+    reject(i, "item " + std::to_string(k + 1) + " of " + paramLabel(c, i) + " depends on the point x; it must be known "
+                  "when the model is compiled (" + std::string(why) + ")");
+  return r.value;
+}
+
+// |v|^p for a known or point-dependent p: a small whole p multiplies, any other p is exp(p*log|v|)
+// (|v| = 0 then gives exp(-inf) = 0 for p > 0, as pow does).
+Real absPower(TapeAlgebra& m, Real v, Real p) {
+  if (p.is_known && p.value == std::floor(p.value) && p.value >= 1.0 && p.value <= 64.0) {
+    const auto n = static_cast<uint64_t>(p.value);
+    return integerPower(m, n % 2 == 0 ? v : m.abs(v), n);
+  }
+  return m.exp(m.mul(p, m.log(m.abs(v))));
+}
+
+// The point's offsets from a centre array: d[k] = x[k] - c[k].
+struct Offsets {
+  Real d[3];
+};
+Offsets offsets(LibraryCall& c, int point_arg, int centre_arg) {
+  Items& x = items(c, point_arg, 3);
+  Items& ctr = items(c, centre_arg, 3);
+  return {{c.alg.sub(x[0], ctr[0]), c.alg.sub(x[1], ctr[1]), c.alg.sub(x[2], ctr[2])}};
+}
+
+// The two axes off axis `axis` (0 = X, 1 = Y, 2 = Z), in HyperFun's order.
+void offAxes(int axis, int& u, int& v) {
+  u = axis == 0 ? 1 : 0;
+  v = axis == 2 ? 1 : 2;
+}
+
+// --- Built-in maths ----------------------------------------------------------------------------
+
+// A function without a tape operation: folded when its arguments are known, else rejected.
+[[noreturn]] void noTapeOp(const LibraryCall& c) {
+  const std::string name(c.function.name);
+  reject(-1, "'" + name + "' of a value that depends on the point is not supported yet: primflow's field tapes have no " +
+                 name);
+}
+template <auto F>
+Real knownOnly(LibraryCall& c) {
+  if (!c.reals[0].is_known) noTapeOp(c);
+  return K(F(c.reals[0].value));
+}
+template <auto F>
+Real knownPair(LibraryCall& c) {
+  if (!c.reals[0].is_known || !c.reals[1].is_known) noTapeOp(c);
+  return K(F(c.reals[0].value, c.reals[1].value));
+}
+double hfRound(double v) {
+  const double ce = std::ceil(v);
+  return ce - v > 0.5 ? ce - 1.0 : ce;
+}
+constexpr auto kAsin = [](double v) { return std::asin(v); };
+constexpr auto kAcos = [](double v) { return std::acos(v); };
+constexpr auto kAtan = [](double v) { return std::atan(v); };
+constexpr auto kAtan2 = [](double y, double x) { return std::atan2(y, x); };
+constexpr auto kSign = [](double v) { return v < 0.0 ? -1.0 : 1.0; };  // HyperFun's sign as its code means it
+constexpr auto kMod = [](double a, double b) { return std::fmod(hfRound(a), hfRound(b)); };
+constexpr auto kCeil = [](double v) { return std::ceil(v); };
+constexpr auto kFloor = [](double v) { return std::floor(v); };
+constexpr auto kInt = [](double v) { return std::trunc(v); };
+constexpr auto kFrac = [](double v) { return v - std::trunc(v); };
+
+template <Real (TapeAlgebra::*Op)(Real)>
+Real unary(LibraryCall& c) { return (c.alg.*Op)(c.reals[0]); }
+template <Real (TapeAlgebra::*Op)(Real, Real)>
+Real binary(LibraryCall& c) { return (c.alg.*Op)(c.reals[0], c.reals[1]); }
+Real fLogd(LibraryCall& c) {
+  const Real v = c.reals[0];
+  return v.is_known ? K(std::log10(v.value)) : c.alg.mul(c.alg.log(v), K(1.0 / std::log(10.0)));
+}
+Real fTan(LibraryCall& c) {
+  const Real v = c.reals[0];
+  return v.is_known ? K(std::tan(v.value)) : c.alg.div(c.alg.sin(v), c.alg.cos(v));
+}
+Real fSinh(LibraryCall& c) {
+  TapeAlgebra& m = c.alg;
+  const Real v = c.reals[0];
+  return v.is_known ? K(std::sinh(v.value)) : m.mul(m.sub(m.exp(v), m.exp(m.neg(v))), K(0.5));
+}
+Real fCosh(LibraryCall& c) {
+  TapeAlgebra& m = c.alg;
+  const Real v = c.reals[0];
+  return v.is_known ? K(std::cosh(v.value)) : m.mul(m.add(m.exp(v), m.exp(m.neg(v))), K(0.5));
+}
+// tanh v = 1 - 2/(exp(2v) + 1): no inf/inf for large |v|.
+Real fTanh(LibraryCall& c) {
+  TapeAlgebra& m = c.alg;
+  const Real v = c.reals[0];
+  return v.is_known ? K(std::tanh(v.value)) : m.sub(K(1.0), m.div(K(2.0), m.add(m.exp(m.mul(K(2.0), v)), K(1.0))));
+}
+
+// --- Primitives --------------------------------------------------------------------------------
+
+Real hfSphere(LibraryCall& c) {
+  TapeAlgebra& m = c.alg;
+  const Offsets o = offsets(c, 0, 1);
+  return m.sub(m.sub(m.sub(m.square(c.reals[2]), m.square(o.d[0])), m.square(o.d[1])), m.square(o.d[2]));
+}
+
+Real hfEllipsoid(LibraryCall& c) {
+  TapeAlgebra& m = c.alg;
+  const Offsets o = offsets(c, 0, 1);
+  Real f = K(1.0);
+  for (int k = 0; k < 3; ++k) f = m.sub(f, m.square(m.div(o.d[k], c.reals[2 + k])));
+  return f;
+}
+
+template <int Axis>
+Real hfCylinder(LibraryCall& c) {
+  TapeAlgebra& m = c.alg;
+  const Offsets o = offsets(c, 0, 1);
+  int u, v;
+  offAxes(Axis, u, v);
+  return m.sub(m.sub(m.square(c.reals[2]), m.square(o.d[u])), m.square(o.d[v]));
+}
+
+template <int Axis>
+Real hfEllCyl(LibraryCall& c) {
+  TapeAlgebra& m = c.alg;
+  const Offsets o = offsets(c, 0, 1);
+  int u, v;
+  offAxes(Axis, u, v);
+  return m.sub(m.sub(K(1.0), m.square(m.div(o.d[u], c.reals[2]))), m.square(m.div(o.d[v], c.reals[3])));
+}
+
+// r0^2 - |d|^2 - R^2 + 2R sqrt(off-axis squares)
+template <int Axis>
+Real hfTorus(LibraryCall& c) {
+  TapeAlgebra& m = c.alg;
+  const Offsets o = offsets(c, 0, 1);
+  int u, v;
+  offAxes(Axis, u, v);
+  const Real R = c.reals[2], r0 = c.reals[3];
+  const Real off = m.add(m.square(o.d[u]), m.square(o.d[v]));
+  const Real d2 = m.add(m.add(m.square(o.d[0]), m.square(o.d[1])), m.square(o.d[2]));
+  return m.add(m.sub(m.sub(m.square(r0), d2), m.square(R)), m.mul(m.mul(K(2.0), R), m.sqrt(off)));
+}
+
+// Axis offset squared minus the scaled off-axis squares: a double cone (radius a, b at height 1).
+template <int Axis, bool Elliptic>
+Real hfCone(LibraryCall& c) {
+  TapeAlgebra& m = c.alg;
+  const Offsets o = offsets(c, 0, 1);
+  int u, v;
+  offAxes(Axis, u, v);
+  const Real a = c.reals[2], b = Elliptic ? c.reals[3] : c.reals[2];
+  return m.sub(m.sub(m.square(o.d[Axis]), m.square(m.div(o.d[u], a))), m.square(m.div(o.d[v], b)));
+}
+
+// Slabs (x - v)(v + d - x) per axis, R-intersected (alpha = 0) as (sx & sy) & sz.
+Real hfBlock(LibraryCall& c) {
+  TapeAlgebra& m = c.alg;
+  Items& x = items(c, 0, 3);
+  Items& vertex = items(c, 1, 3);
+  Real slab[3];
+  for (int k = 0; k < 3; ++k) {
+    const Real d = c.reals[2 + k];
+    if (d.is_known && d.value < 0.0)
+      reject(2 + k, paramLabel(c, 2 + k) + " is negative (HyperFun returns -1111111111111 for such a block)");
+    slab[k] = m.mul(m.sub(x[k], vertex[k]), m.sub(m.add(vertex[k], d), x[k]));
+  }
+  return m.intersect(m.intersect(slab[0], slab[1]), slab[2]);
+}
+
+// 1 - (|X|^(2/s2) + |Y|^(2/s2))^(s2/s1) - |Z|^(2/s1), X = dx/a and so on.
+Real hfSuperEll(LibraryCall& c) {
+  TapeAlgebra& m = c.alg;
+  const Offsets o = offsets(c, 0, 1);
+  for (int k = 2; k <= 6; ++k)
+    if (c.reals[k].is_known && std::fabs(c.reals[k].value) < kEps)
+      reject(k, paramLabel(c, k) + " is within 1e-6 of 0 (HyperFun returns -1111111111111 for such a superellipsoid)");
+  const Real X = m.div(o.d[0], c.reals[2]), Y = m.div(o.d[1], c.reals[3]), Z = m.div(o.d[2], c.reals[4]);
+  const Real s1 = c.reals[5], s2 = c.reals[6];
+  const Real p = m.div(K(2.0), s2);
+  const Real xy = absPower(m, m.add(absPower(m, X, p), absPower(m, Y, p)), m.div(s2, s1));
+  return m.sub(m.sub(K(1.0), xy), absPower(m, Z, m.div(K(2.0), s1)));
+}
+
+Real squaredDistance(TapeAlgebra& m, const Items& x, Real cx, Real cy, Real cz) {
+  return m.add(m.add(m.square(m.sub(x[0], cx)), m.square(m.sub(x[1], cy))), m.square(m.sub(x[2], cz)));
+}
+
+// Sum of b exp(-a r^2), minus T (Blinn).
+Real hfBlobby(LibraryCall& c) {
+  TapeAlgebra& m = c.alg;
+  Items& x = items(c, 0, 3);
+  const size_t n = sameSizes(c, 1, 5);
+  Items &x0 = *c.arrays[1], &y0 = *c.arrays[2], &z0 = *c.arrays[3], &a = *c.arrays[4], &b = *c.arrays[5];
+  Real sum = K(0.0);
+  for (size_t i = 0; i < n; ++i)
+    sum = m.add(sum, m.mul(b[i], m.exp(m.mul(m.neg(a[i]), squaredDistance(m, x, x0[i], y0[i], z0[i])))));
+  return m.sub(sum, c.reals[6]);
+}
+
+// Nishimura's metaballs, with u = r/d: 1 - 3u^2 up to u = 1/3, 1.5(1 - u)^2 up to 1, then 0.
+// Without branches: with w = min(u, 1/3) and v = min(max(u, 1/3), 1), the term is
+// 1.5(1 - v)^2 + 3(1/3 - w)(1/3 + w), which is each piece on its interval (the pieces meet at
+// 2/3 for u = 1/3 and at 0 for u = 1, and the unused piece's part vanishes exactly there).
+Real hfMetaball(LibraryCall& c) {
+  TapeAlgebra& m = c.alg;
+  Items& x = items(c, 0, 3);
+  const size_t n = sameSizes(c, 1, 5);
+  Items &x0 = *c.arrays[1], &y0 = *c.arrays[2], &z0 = *c.arrays[3], &b = *c.arrays[4];
+  const Real third = K(1.0 / 3.0);
+  Real sum = K(0.0);
+  for (size_t i = 0; i < n; ++i) {
+    const double d = knownItem(c, 5, i, "HyperFun skips the balls whose d is not positive");
+    if (!(d > 0.0)) continue;
+    const Real u = m.div(m.sqrt(squaredDistance(m, x, x0[i], y0[i], z0[i])), K(d));
+    const Real w = m.min(u, third);
+    const Real v = m.min(m.max(u, third), K(1.0));
+    const Real outer = m.mul(K(1.5), m.square(m.sub(K(1.0), v)));
+    const Real g = m.add(outer, m.mul(K(3.0), m.mul(m.sub(third, w), m.add(third, w))));
+    sum = m.add(sum, m.mul(b[i], g));
+  }
+  return m.sub(sum, c.reals[6]);
+}
+
+// Wyvill's soft objects: 1 - 22q/9 + 17q^2/9 - 4q^3/9 with q = r^2/d^2 up to r = d, then 0.
+// That polynomial is (1 - q)^2 (1 - 4q/9), which is 0 at q = 1: with q clamped to 1 by min it is
+// the piecewise definition without a branch.
+Real hfSoft(LibraryCall& c) {
+  TapeAlgebra& m = c.alg;
+  Items& x = items(c, 0, 3);
+  const size_t n = sameSizes(c, 1, 4);
+  Items &x0 = *c.arrays[1], &y0 = *c.arrays[2], &z0 = *c.arrays[3];
+  Real sum = K(0.0);
+  for (size_t i = 0; i < n; ++i) {
+    const double d = knownItem(c, 4, i, "HyperFun counts a blob only where r <= d");
+    if (!(d > 0.0)) continue;
+    const Real q = m.min(m.div(squaredDistance(m, x, x0[i], y0[i], z0[i]), K(d * d)), K(1.0));
+    sum = m.add(sum, m.mul(m.square(m.sub(K(1.0), q)), m.sub(K(1.0), m.mul(K(4.0 / 9.0), q))));
+  }
+  return m.sub(sum, c.reals[5]);
+}
+
+// Sum of Cauchy kernels 1/(1 + S^2 r^2)^2 around points, minus T.
+Real hfConvPoint(LibraryCall& c) {
+  TapeAlgebra& m = c.alg;
+  Items& x = items(c, 0, 3);
+  const size_t n = c.arrays[2]->size();
+  Items& vect = items(c, 1, 3 * n);
+  Items& S = *c.arrays[2];
+  Real sum = K(0.0);
+  for (size_t i = 0; i < n; ++i) {
+    const Real r2 = squaredDistance(m, x, vect[3 * i], vect[3 * i + 1], vect[3 * i + 2]);
+    sum = m.add(sum, m.div(K(1.0), m.square(m.add(K(1.0), m.mul(m.square(S[i]), r2)))));
+  }
+  return m.sub(sum, c.reals[3]);
+}
+
+// Gardner's solid noise: a product of three two-term sine series.
+Real hfNoiseG(LibraryCall& c) {
+  TapeAlgebra& m = c.alg;
+  Items& x = items(c, 0, 3);
+  const Real amp = c.reals[1], freq = c.reals[2], phase = c.reals[3];
+  Real a2p[3], s[3];
+  for (int k = 0; k < 3; ++k) {
+    a2p[k] = m.mul(freq, x[k]);
+    s[k] = m.sin(a2p[k]);
+  }
+  const Real a1d = m.div(amp, K(1.17));
+  Real product = K(1.0);
+  for (int k = 0; k < 3; ++k) {
+    const int other = (k + 2) % 3;  // x takes sin(a2 z), y sin(a2 x), z sin(a2 y)
+    const Real second = m.mul(a1d, m.sin(m.add(m.div(a2p[k], K(1.35)), m.mul(phase, s[other]))));
+    product = m.mul(product, m.add(m.mul(amp, s[k]), second));
+  }
+  return product;
+}
+
+// --- Blends ------------------------------------------------------------------------------------
+
+template <bool Union>
+Real hfBlend(LibraryCall& c) {
+  TapeAlgebra& m = c.alg;
+  const Real f1 = c.reals[0], f2 = c.reals[1];
+  const Real set = Union ? m.unite(f1, f2) : m.intersect(f1, f2);
+  const Real den = m.add(m.add(K(1.0), m.square(m.div(f1, c.reals[3]))), m.square(m.div(f2, c.reals[4])));
+  return m.add(set, m.div(c.reals[2], den));
+}
+
+// --- Space mappings: they overwrite their first argument's items and return 1 ------------------
+
+Real hfShift3D(LibraryCall& c) {
+  Items& p = items(c, 0, 3);
+  for (int k = 0; k < 3; ++k) p[k] = c.alg.sub(p[k], c.reals[1 + k]);
+  return K(1.0);
+}
+
+Real hfScale3D(LibraryCall& c) {
+  Items& p = items(c, 0, 3);
+  for (int k = 0; k < 3; ++k) p[k] = c.alg.div(p[k], c.reals[1 + k]);
+  return K(1.0);
+}
+
+Real hfStretch3D(LibraryCall& c) {
+  Items& p = items(c, 0, 3);
+  Items& x0 = items(c, 1, 3);
+  for (int k = 0; k < 3; ++k) p[k] = c.alg.add(x0[k], c.alg.div(c.alg.sub(p[k], x0[k]), c.reals[2 + k]));
+  return K(1.0);
+}
+
+// Rotates (p[u], p[v]) by theta: (u cos + v sin, -u sin + v cos). X turns (y, z), Y (z, x), Z (x, y).
+void rotate(TapeAlgebra& m, Items& p, int axis, Real theta) {
+  const int u = axis == 0 ? 1 : axis == 1 ? 2 : 0;
+  const int v = axis == 0 ? 2 : axis == 1 ? 0 : 1;
+  const Real ct = m.cos(theta), st = m.sin(theta);
+  const Real ru = m.add(m.mul(p[u], ct), m.mul(p[v], st));
+  const Real rv = m.add(m.neg(m.mul(p[u], st)), m.mul(p[v], ct));
+  p[u] = ru;
+  p[v] = rv;
+}
+
+template <int Axis>
+Real hfRotate3D(LibraryCall& c) {
+  rotate(c.alg, items(c, 0, 3), Axis, c.reals[1]);
+  return K(1.0);
+}
+
+// theta = (1 - t) theta1 + t theta2, t = (p - c1)/(c2 - c1) along the axis (not clamped).
+template <int Axis>
+Real hfTwist(LibraryCall& c) {
+  TapeAlgebra& m = c.alg;
+  Items& p = items(c, 0, 3);
+  const Real t = m.div(m.sub(p[Axis], c.reals[1]), m.sub(c.reals[2], c.reals[1]));
+  const Real theta = m.add(m.mul(m.sub(K(1.0), t), c.reals[3]), m.mul(t, c.reals[4]));
+  rotate(m, p, Axis, theta);
+  return K(1.0);
+}
+
+// scale = s1 below c1, s2 above c2, (1 - t) s1 + t s2 between: the same with t clamped to [0, 1].
+// HyperFun replaces a scale within 1e-6 of 0 by 1; with s1 and s2 of one sign and at least 1e-6
+// in magnitude no scale comes near 0, so that case is required rather than branched on.
+template <int Axis>
+Real hfTaper(LibraryCall& c) {
+  TapeAlgebra& m = c.alg;
+  Items& p = items(c, 0, 3);
+  constexpr std::string_view why = "primflow's tapes have no branches";
+  const double c1 = knownArg(c, 1, why), c2 = knownArg(c, 2, why), s1 = knownArg(c, 3, why), s2 = knownArg(c, 4, why);
+  if (!(c2 > c1))
+    reject(2, paramLabel(c, 2) + " must be greater than " + paramLabel(c, 1) + " (a step taper is not supported)");
+  if (!((s1 >= kEps && s2 >= kEps) || (s1 <= -kEps && s2 <= -kEps)))
+    reject(3, "the scales must have one sign and be at least 1e-6 in magnitude (HyperFun replaces a scale near 0 by 1, "
+              "which primflow does not support)");
+  const Real t = m.min(m.max(m.div(m.sub(p[Axis], K(c1)), K(c2 - c1)), K(0.0)), K(1.0));
+  const Real scale = m.add(m.mul(m.sub(K(1.0), t), K(s1)), m.mul(t, K(s2)));
+  int u, v;
+  offAxes(Axis, u, v);
+  p[u] = m.div(p[u], scale);
+  p[v] = m.div(p[v], scale);
+  return K(1.0);
+}
+
+// For each (source, target) triple in turn: p -= w d, d = target - source, with weight w from
+// s = sum_k ((p_k - target_k) / (b_k (1 + |d_k|)))^2: exp(-s), or (1 - rho)^3/(1 + rho) for
+// rho = sqrt(s) <= 1 and 0 beyond -- rho clamped to 1 by min gives that 0 without a branch.
+template <bool Cubic>
+Real hfSpaceMap(LibraryCall& c) {
+  TapeAlgebra& m = c.alg;
+  Items& p = items(c, 0, 3);
+  const size_t n = c.arrays[1]->size();
+  if (n % 3 != 0)
+    reject(1, paramLabel(c, 1) + " must hold 3 items per control point; '" + c.array_names[1] + "' has " +
+                  std::to_string(n));
+  sameSizes(c, 1, 3);
+  Items &source = *c.arrays[1], &target = *c.arrays[2], &b = *c.arrays[3];
+  for (size_t i = 0; i < n; i += 3) {
+    Real d[3], s = K(0.0);
+    for (int k = 0; k < 3; ++k) {
+      d[k] = m.sub(target[i + k], source[i + k]);
+      const Real scaled = m.div(m.sub(p[k], target[i + k]), m.mul(b[i + k], m.add(K(1.0), m.abs(d[k]))));
+      s = m.add(s, m.square(scaled));
+    }
+    Real w;
+    if (Cubic) {
+      const Real rho = m.min(m.sqrt(s), K(1.0));
+      const Real one_minus = m.sub(K(1.0), rho);
+      w = m.div(m.mul(m.square(one_minus), one_minus), m.add(K(1.0), rho));
+    } else {
+      w = m.exp(m.neg(s));
+    }
+    for (int k = 0; k < 3; ++k) p[k] = m.sub(p[k], m.mul(w, d[k]));
+  }
+  return K(1.0);
+}
+
+// Messages for the unsupported functions; '$' stands for the function's name.
+constexpr std::string_view kNeedsAtan =
+    "'$' is not supported yet: its convolution integral needs atan, and primflow's field tapes have no atan";
+constexpr std::string_view kAttribute =
+    "attribute functions are not supported yet: '$' sets the s array's colour or material, and primflow's field "
+    "tapes carry the shape only";
+constexpr std::string_view kSardf =
+    "'$' is not supported yet: primflow has none of HyperFun's SARDF distance functions";
+constexpr std::string_view kNotYet = "'$' is not supported yet";
+constexpr std::string_view kOnlyInR =
+    "'$' is not supported: it calls back into R and exists only in HyperFun's R package";
+constexpr LibraryFunction no(std::string_view name, std::string_view why) { return {name, "", "", nullptr, why}; }
+
+const LibraryFunction kFunctions[] = {
+    // Built-in maths ([HFC] int_global.c, functions 0-22).
+    {"sqrt", "v", "R", unary<&TapeAlgebra::sqrt>, {}}, {"exp", "v", "R", unary<&TapeAlgebra::exp>, {}},
+    {"log", "v", "R", unary<&TapeAlgebra::log>, {}}, {"logd", "v", "R", fLogd, {}},
+    {"sin", "v", "R", unary<&TapeAlgebra::sin>, {}}, {"cos", "v", "R", unary<&TapeAlgebra::cos>, {}},
+    {"tan", "v", "R", fTan, {}}, {"asin", "v", "R", knownOnly<kAsin>, {}}, {"acos", "v", "R", knownOnly<kAcos>, {}},
+    {"atan", "v", "R", knownOnly<kAtan>, {}}, {"abs", "v", "R", unary<&TapeAlgebra::abs>, {}},
+    {"sinh", "v", "R", fSinh, {}}, {"cosh", "v", "R", fCosh, {}}, {"tanh", "v", "R", fTanh, {}},
+    {"sign", "v", "R", knownOnly<kSign>, {}}, {"mod", "a, b", "RR", knownPair<kMod>, {}},
+    {"max", "a, b", "RR", binary<&TapeAlgebra::max>, {}}, {"min", "a, b", "RR", binary<&TapeAlgebra::min>, {}},
+    {"atan2", "y, x", "RR", knownPair<kAtan2>, {}}, {"ceil", "v", "R", knownOnly<kCeil>, {}},
+    {"floor", "v", "R", knownOnly<kFloor>, {}}, {"int", "v", "R", knownOnly<kInt>, {}},
+    {"frac", "v", "R", knownOnly<kFrac>, {}},
+    // Primitives.
+    {"hfSphere", "x, center, R", "AAR", hfSphere, {}},
+    {"hfEllipsoid", "x, center, a, b, c", "AARRR", hfEllipsoid, {}},
+    {"hfCylinderX", "x, center, R", "AAR", hfCylinder<0>, {}},
+    {"hfCylinderY", "x, center, R", "AAR", hfCylinder<1>, {}},
+    {"hfCylinderZ", "x, center, R", "AAR", hfCylinder<2>, {}},
+    {"hfEllCylX", "x, center, a, b", "AARR", hfEllCyl<0>, {}},
+    {"hfEllCylY", "x, center, a, b", "AARR", hfEllCyl<1>, {}},
+    {"hfEllCylZ", "x, center, a, b", "AARR", hfEllCyl<2>, {}},
+    {"hfTorusX", "x, center, R, r0", "AARR", hfTorus<0>, {}},
+    {"hfTorusY", "x, center, R, r0", "AARR", hfTorus<1>, {}},
+    {"hfTorusZ", "x, center, R, r0", "AARR", hfTorus<2>, {}},
+    {"hfBlock", "x, vertex, dx, dy, dz", "AARRR", hfBlock, {}},
+    {"hfConeX", "x, center, R", "AAR", hfCone<0, false>, {}},
+    {"hfConeY", "x, center, R", "AAR", hfCone<1, false>, {}},
+    {"hfConeZ", "x, center, R", "AAR", hfCone<2, false>, {}},
+    {"hfEllConeX", "x, center, a, b", "AARR", hfCone<0, true>, {}},
+    {"hfEllConeY", "x, center, a, b", "AARR", hfCone<1, true>, {}},
+    {"hfEllConeZ", "x, center, a, b", "AARR", hfCone<2, true>, {}},
+    {"hfSuperEll", "x, center, a, b, c, s1, s2", "AARRRRR", hfSuperEll, {}},
+    {"hfBlobby", "x, x0, y0, z0, a, b, T", "AAAAAAR", hfBlobby, {}},
+    {"hfMetaball", "x, x0, y0, z0, b, d, T", "AAAAAAR", hfMetaball, {}},
+    {"hfSoft", "x, x0, y0, z0, d, T", "AAAAAR", hfSoft, {}},
+    {"hfConvPoint", "x, vect, S, T", "AAAR", hfConvPoint, {}},
+    {"hfNoiseG", "x, amp, freq, phase", "ARRR", hfNoiseG, {}},
+    // Blends.
+    {"hfBlendUni", "f1, f2, a0, a1, a2", "RRRRR", hfBlend<true>, {}},
+    {"hfBlendInt", "f1, f2, a0, a1, a2", "RRRRR", hfBlend<false>, {}},
+    // Space mappings.
+    {"hfShift3D", "xt, dx, dy, dz", "ARRR", hfShift3D, {}},
+    {"hfScale3D", "xt, sx, sy, sz", "ARRR", hfScale3D, {}},
+    {"hfStretch3D", "xt, x0, sx, sy, sz", "AARRR", hfStretch3D, {}},
+    {"hfRotate3DX", "xt, theta", "AR", hfRotate3D<0>, {}},
+    {"hfRotate3DY", "xt, theta", "AR", hfRotate3D<1>, {}},
+    {"hfRotate3DZ", "xt, theta", "AR", hfRotate3D<2>, {}},
+    {"hfTwistX", "xt, x1, x2, theta1, theta2", "ARRRR", hfTwist<0>, {}},
+    {"hfTwistY", "xt, y1, y2, theta1, theta2", "ARRRR", hfTwist<1>, {}},
+    {"hfTwistZ", "xt, z1, z2, theta1, theta2", "ARRRR", hfTwist<2>, {}},
+    {"hfTaperX", "xt, x1, x2, s1, s2", "ARRRR", hfTaper<0>, {}},
+    {"hfTaperY", "xt, y1, y2, s1, s2", "ARRRR", hfTaper<1>, {}},
+    {"hfTaperZ", "xt, z1, z2, s1, s2", "ARRRR", hfTaper<2>, {}},
+    {"hfSpaceMapExp", "xt, source, target, b", "AAAA", hfSpaceMap<false>, {}},
+    {"hfSpaceMapCubic", "xt, source, target, b", "AAAA", hfSpaceMap<true>, {}},
+    // Registered in HyperFun but not supported yet.
+    no("hfConvLine", kNeedsAtan), no("hfConvLineR", kNeedsAtan), no("hfConvArc", kNeedsAtan),
+    no("hfConvTriangle", kNeedsAtan), no("hfConvCurve", kNeedsAtan), no("hfConvMesh", kNeedsAtan),
+    no("hfBezierVolume", kNotYet), no("hfDUni", kSardf), no("hfDInt", kSardf), no("hfDSub", kSardf),
+    no("hfDBlendUni", kSardf), no("hfDBlendInt", kSardf), no("hfDConeX", kSardf), no("hfDConeY", kSardf),
+    no("hfDConeZ", kSardf), no("hfDCylinder", kSardf), no("hfDEllipsoid", kSardf), no("hfDTorusX", kSardf),
+    no("hfDTorusY", kSardf), no("hfDTorusZ", kSardf), no("hfSawtooth", kNotYet), no("hfR", kOnlyInR),
+    no("hfA_Wave", kAttribute), no("hfA_CheckerBoard", kAttribute), no("hfA_Union", kAttribute),
+    no("hfA_Crackles", kAttribute), no("hfA_Circles", kAttribute), no("hfA_NoiseG", kAttribute),
+    no("hfA_NoiseP", kAttribute), no("hfA_Turbulence", kAttribute), no("hfA_SetColor", kAttribute),
+    no("hfA_SetAttributes", kAttribute), no("hfA_Lerp", kAttribute), no("hfA_Cerp", kAttribute),
+    no("hfA_Clamp", kAttribute), no("hfA_Floor", kAttribute), no("hfA_Pulse", kAttribute),
+    no("hfA_LookUpTable", kAttribute), no("hfA_SmoothLookUpTable", kAttribute), no("hfA_Step", kAttribute),
+    no("hfA_SmoothStep", kAttribute), no("hfA_Modulo", kAttribute), no("hfA_Spline", kAttribute),
+    no("hfA_RGBToHSV", kAttribute), no("hfA_HSVToRGB", kAttribute),
+};
+
+bool equalsLowercase(std::string_view name, std::string_view lowercase) {
+  if (name.size() != lowercase.size()) return false;
+  for (size_t i = 0; i < name.size(); ++i) {
+    const char c = name[i] >= 'A' && name[i] <= 'Z' ? static_cast<char>(name[i] - 'A' + 'a') : name[i];
+    if (c != lowercase[i]) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+const LibraryFunction* findLibraryFunction(std::string_view lowercase_name) {
+  for (const LibraryFunction& f : kFunctions)
+    if (equalsLowercase(f.name, lowercase_name)) return &f;
+  return nullptr;
+}
+
+}  // namespace pf::field::hyperfun
