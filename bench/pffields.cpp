@@ -4,8 +4,8 @@
 // warm-up, glFinish inside the timed region; accuracy against the reference of issue #8 -- per
 // pixel, dense double-precision marching plus bisection to 1e-12 along the same ray -- at
 // --ref-size (the reference is slow), in world units of depth and in coverage mismatches.
-//   pffields [--models a.vm,b.vm] [--size 512] [--prospero-size 1024] [--ref-size 96]
-//            [--ref-steps 1000] [--frames 5] [--threads 1] [--csv FILE]
+//   pffields [--models a.vm b.hf@x0,y0,z0,x1,y1,z1 ...] [--time 0.5] [--size 512] [--prospero-size 1024] [--ref-size 96]
+//            [--ref-steps 1000] [--frames 5] [--threads 1] [--methods auto ...] [--csv FILE]
 // 2D models (no z): plain per-pixel evaluation (march, 1 step) against interval culling with
 // tape simplification, coverage compared over the whole image. 3D models: interval; march with
 // M = 50, 500, 5000 (seed 004's values); analytic where the field is a polynomial.
@@ -19,13 +19,16 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "compiler/field/fidget_reader.h"
+#include "compiler/field/hyperfun_reader.h"
 #include "field/field_reference.h"
 #include "model/model_file.h"
+#include "raster/field/implicit_field.h"
 #include "raster/field/ray_polynomial.h"
 
 namespace {
@@ -42,8 +45,9 @@ struct Frame {
   std::vector<float> z;  // world z, NaN where nothing
 };
 
-// Draws `model` `frames` + 1 times (the first is the warm-up) into a w x h context.
-Frame render(const pf::model::Model& model, int w, int h, const Run& run, int threads, int frames) {
+// Draws `model` `frames` + 1 times (the first is the warm-up) into a w x h context, a HyperFun
+// model at `time`.
+Frame render(const pf::model::Model& model, int w, int h, const Run& run, int threads, int frames, double time) {
   Frame f;
   f.color.assign(size_t(w) * h * 4, 0);
   const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_THREADS, threads, 0};
@@ -57,6 +61,7 @@ Frame render(const pf::model::Model& model, int w, int h, const Run& run, int th
   v.box_max = model.default_box_max;
   v.method = run.method;
   v.steps = run.param;
+  v.time = time;
   std::vector<double> ms;
   for (int k = 0; k <= frames; ++k) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -126,9 +131,16 @@ Accuracy compare(const std::vector<float>& got, const std::vector<double>& want)
 
 int main(int argc, char** argv) {
   CLI::App app{"pffields: implicit surfaces, time against accuracy per model and method"};
-  std::string models_arg, csv;
+  std::vector<std::string> models;
+  std::string csv;
   int size = 512, prospero_size = 1024, ref_size = 96, ref_steps = 1000, frames = 5, threads = 1;
-  app.add_option("--models", models_arg, "comma-separated .vm files (default: tests/data/models/fidget/*.vm)");
+  double time = 0.5;
+  app.add_option("--models", models,
+                 ".vm / .hf files, each optionally FILE@x0,y0,z0,x1,y1,z1 with its box "
+                 "(default: tests/data/models/fidget/*.vm)");
+  app.add_option("--time", time, "HyperFun models' time x[4]");
+  std::vector<std::string> methods;
+  app.add_option("--methods", methods, "run only these methods (auto analytic interval march sphere; march: 64 steps)");
   app.add_option("--size", size, "3D models' image size (square)")->check(CLI::Range(8, 8192));
   app.add_option("--prospero-size", prospero_size, "2D models' image size (square)")->check(CLI::Range(8, 8192));
   app.add_option("--ref-size", ref_size, "3D accuracy image size")->check(CLI::Range(8, 1024));
@@ -138,19 +150,10 @@ int main(int argc, char** argv) {
   app.add_option("--csv", csv, "append results here");
   CLI11_PARSE(app, argc, argv);
 
-  std::vector<std::string> models;
-  if (models_arg.empty()) {
+  if (models.empty()) {
     for (const auto& e : std::filesystem::directory_iterator(std::string(PF_SOURCE_DIR) + "/tests/data/models/fidget"))
       if (e.path().extension() == ".vm") models.push_back(e.path().string());
     std::sort(models.begin(), models.end());
-  } else {
-    size_t a = 0;
-    while (a <= models_arg.size()) {
-      size_t b = models_arg.find(',', a);
-      if (b == std::string::npos) b = models_arg.size();
-      if (b > a) models.push_back(models_arg.substr(a, b - a));
-      a = b + 1;
-    }
   }
   std::ofstream out;
   if (!csv.empty()) {
@@ -162,21 +165,37 @@ int main(int argc, char** argv) {
   }
   std::printf("%-14s %-9s %7s %6s %10s | %6s %8s %11s %11s\n", "model", "method", "param", "size", "ms", "judged",
               "mismatch", "max depth", "mean depth");
-  for (const std::string& path : models) {
+  for (const std::string& entry : models) {
+    // "FILE" or "FILE@x0,y0,z0,x1,y1,z1" (the model's box).
+    std::string file = entry;
+    std::optional<std::pair<glm::dvec3, glm::dvec3>> box;
+    if (const size_t colon = entry.rfind('@'); colon != std::string::npos) {
+      double v[6];
+      if (std::sscanf(entry.c_str() + colon + 1, "%lf,%lf,%lf,%lf,%lf,%lf", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5]) == 6) {
+        file = entry.substr(0, colon);
+        box = {{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+      }
+    }
     pf::model::Model m;
     try {
-      m = pf::model::loadModel(path);
+      m = pf::model::loadModel(file, time);
     } catch (const pf::model::ModelError& e) {
       std::fprintf(stderr, "%s", e.what());
       return 1;
     }
     pf::DiagnosticLog log;
-    const pf::field::FieldTape tape = *pf::field::readFidgetModel(path, m.text, log);
-    const std::string name = std::filesystem::path(path).stem().string();
+    const pf::field::FieldTape tape = m.format == pf::model::ModelFormat::HyperFun
+                                          ? *pf::field::readHyperFunModel(file, m.text, log, {}, "my_model", time)
+                                          : *pf::field::readFidgetModel(file, m.text, log);
+    const std::string name = std::filesystem::path(file).stem().string();
     // The tanglecube's file suggests --scale 0.222: its surface spans about [-3, 3]^3.
     if (name == "tanglecube") {
       m.default_box_min = glm::dvec3(-3.0);
       m.default_box_max = glm::dvec3(3.0);
+    }
+    if (box) {
+      m.default_box_min = box->first;
+      m.default_box_max = box->second;
     }
     std::vector<Run> runs;
     if (m.two_dimensional) {
@@ -189,12 +208,23 @@ int main(int argc, char** argv) {
       const int degree = pf::field::fieldPolynomialDegree(tape);
       if (degree >= 0 && degree <= 4) runs.insert(runs.begin(), {"analytic", GL_FIELD_METHOD_ANALYTIC_EXT, 0.0f});
     }
+    if (!methods.empty()) {
+      runs.clear();
+      for (const std::string& name : methods) {
+        const auto method = pf::field::parseRootMethod(name);
+        if (!method) {
+          std::fprintf(stderr, "pffields: no method '%s'\n", name.c_str());
+          return 2;
+        }
+        runs.push_back({name, static_cast<int>(*method), *method == pf::field::RootMethod::March ? 64.0f : 0.0f});
+      }
+    }
     const int n = m.two_dimensional ? prospero_size : size;
     const int rn = m.two_dimensional ? prospero_size : ref_size;
     const std::vector<double> want = reference(tape, m, rn, ref_steps, m.two_dimensional);
     for (const Run& run : runs) {
-      const Frame timed = render(m, n, n, run, threads, frames);
-      const Frame judged = rn == n ? timed : render(m, rn, rn, run, threads, 0);
+      const Frame timed = render(m, n, n, run, threads, frames, time);
+      const Frame judged = rn == n ? timed : render(m, rn, rn, run, threads, 0, time);
       const Accuracy a = compare(judged.z, want);
       std::printf("%-14s %-9s %7g %6d %10.2f | %6d %8d %11.3g %11.3g\n", name.c_str(), run.method_name.c_str(),
                   run.param, n, timed.ms, a.judged, a.coverage_mismatches, a.max_depth, a.mean_depth);
