@@ -1,0 +1,69 @@
+// libFuzzer target for the field front ends and evaluators: the first byte picks the format
+// (even: Fidget .vm, odd: HyperFun .hf), the rest is the model's text. A model that compiles is
+// evaluated as floats, intervals (with tape simplification), gradients and ray polynomials at a
+// few points and boxes, and one 8x8 block of rays is cast by every method. Nothing may crash,
+// hang, or trip ASan/UBSan: a bad model is a diagnostic with file:line:col.
+//
+// Build and run locally: as fuzz_compile.cpp says, with --target fuzz_field and the corpus
+// tests/fuzz/corpus/field.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "compiler/field/fidget_reader.h"
+#include "compiler/field/hyperfun_reader.h"
+#include "raster/field/float_evaluator.h"
+#include "raster/field/gradient_evaluator.h"
+#include "raster/field/interval_evaluator.h"
+#include "raster/field/ray_caster.h"
+#include "raster/field/ray_polynomial.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  if (size < 1 || size > 4 * 1024) return 0;
+  const bool hyperfun = data[0] % 2 == 1;
+  std::string text(reinterpret_cast<const char*>(data) + 1, size - 1);
+  pf::DiagnosticLog log;
+  std::optional<pf::field::FieldTape> tape = hyperfun ? pf::field::readHyperFunModel("fuzz.hf", text, log)
+                                                      : pf::field::readFidgetModel("fuzz.vm", text, log);
+  if (!tape) {
+    (void)log.format();
+    return 0;
+  }
+  if (tape->size() > 4000) return 0;  // unrolled loops: compile-time limits are the readers' own test
+  using namespace pf::field;
+  FloatEvaluator fe(*tape);
+  IntervalEvaluator ie(*tape);
+  GradientEvaluator ge(*tape);
+  const float points[][3] = {{0, 0, 0}, {0.5f, -0.25f, 1}, {-3, 2, 7}, {1e-30f, -1e30f, 0}};
+  for (const auto& p : points) {
+    (void)fe.evaluate(p[0], p[1], p[2]);
+    (void)ge.evaluate(p[0], p[1], p[2]);
+    (void)rayPolynomial(*tape, {p[0], p[1], p[2]}, {0.3, -0.2, 1.0});
+  }
+  std::vector<Choice> choices;
+  for (float w : {0.01f, 1.0f, 100.0f}) {
+    (void)ie.evaluate({-w, w}, {-w, 0.5f * w}, {0.0f, w}, &choices);
+    FloatEvaluator simplified(simplify(*tape, choices));
+    (void)simplified.evaluate(0.0f, 0.0f, 0.5f * w);
+  }
+  if (tape->size() > 500) return 0;  // casting 64 rays by five methods: kept to small tapes
+  const ImplicitField field("fuzz", *tape, 2.0f);
+  FieldRays rays;
+  rays.window_to_object = {0.25, 0, 0, 0, 0, 0.25, 0, 0, 0, 0, -2, 0, -1, -1, 1, 1};  // 8x8 pixels over [-1, 1]^2
+  rays.box_min = {-1, -1, -1};
+  rays.box_max = {1, 1, 1};
+  for (int m = 0; m < kRootMethodCount; ++m) {
+    CastRequest req;
+    req.field = &field;
+    req.rays = rays;
+    req.method = static_cast<RootMethod>(m);
+    req.param = m == static_cast<int>(RootMethod::March) ? 16.0f : 0.0f;
+    req.iteration_cap = 256;
+    FieldRayCaster caster;
+    FieldCounters counters;
+    float t[64];
+    caster.castBlock(req, 0, 0, ~uint64_t(0), t, counters);
+  }
+  return 0;
+}
