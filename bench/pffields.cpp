@@ -15,6 +15,7 @@
 #include <primflow/gl.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -29,6 +30,7 @@
 #include "compiler/field/hyperfun_reader.h"
 #include "field/field_reference.h"
 #include "model/model_file.h"
+#include "raster/field/gradient_evaluator.h"
 #include "raster/field/implicit_field.h"
 #include "raster/field/ray_polynomial.h"
 
@@ -106,11 +108,35 @@ std::vector<double> reference(const pf::field::FieldTape& tape, const pf::model:
 struct Accuracy {
   int judged = 0, coverage_mismatches = 0;
   double max_depth = 0, mean_depth = 0;
+  double max_normal_degrees = 0, mean_normal_degrees = 0;  // where both hit the surface itself
 };
 
-Accuracy compare(const std::vector<float>& got, const std::vector<double>& want) {
+// The outward normal -grad f / |grad f| at p, by central differences of the field in double.
+std::array<double, 3> referenceNormal(const pf::field::FieldTape& tape, const std::array<double, 3>& p, double h) {
+  std::vector<double> scratch;
+  std::array<double, 3> g{};
+  for (int k = 0; k < 3; ++k) {
+    std::array<double, 3> a = p, b = p;
+    a[k] += h;
+    b[k] -= h;
+    g[k] = (pf::field::testing::evaluateDouble(tape, a[0], a[1], a[2], &scratch) -
+            pf::field::testing::evaluateDouble(tape, b[0], b[1], b[2], &scratch)) / (2 * h);
+  }
+  const double len = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+  return {-g[0] / len, -g[1] / len, -g[2] / len};
+}
+
+// Per pixel of the n x n --ortho view of the model's box: coverage and depth against the
+// reference; and the angle between the renderer's normal (the derived gradient, in float, at its
+// own hit -- what shading uses) and the reference normal at the reference hit, where both hit the
+// surface itself (not the box's top face, where a ray starts inside the solid).
+Accuracy compare(const std::vector<float>& got, const std::vector<double>& want, const pf::field::FieldTape& tape,
+                 const pf::model::Model& m, int n) {
   Accuracy a;
-  int both = 0;
+  int both = 0, normals = 0;
+  pf::field::GradientEvaluator ge(tape);
+  const glm::dvec3 lo = m.default_box_min, hi = m.default_box_max;
+  const double h = 1e-6 * glm::length(hi - lo);
   for (size_t k = 0; k < want.size(); ++k) {
     ++a.judged;
     const bool g = !std::isnan(got[k]), r = !std::isnan(want[k]);
@@ -123,8 +149,21 @@ Accuracy compare(const std::vector<float>& got, const std::vector<double>& want)
     a.max_depth = std::max(a.max_depth, e);
     a.mean_depth += e;
     ++both;
+    if (m.two_dimensional || want[k] >= hi.z || got[k] >= static_cast<float>(hi.z)) continue;
+    const int i = static_cast<int>(k % n), j = static_cast<int>(k / n);
+    const double x = lo.x + (i + 0.5) * (hi.x - lo.x) / n, y = lo.y + (j + 0.5) * (hi.y - lo.y) / n;
+    const pf::field::FieldGradient gf = ge.evaluate(static_cast<float>(x), static_cast<float>(y), got[k]);
+    const double gl = std::sqrt(double(gf.dx) * gf.dx + double(gf.dy) * gf.dy + double(gf.dz) * gf.dz);
+    const std::array<double, 3> nr = referenceNormal(tape, {x, y, want[k]}, h);
+    if (!(gl > 0) || !std::isfinite(nr[0] + nr[1] + nr[2])) continue;
+    const double c = std::clamp(-(gf.dx * nr[0] + gf.dy * nr[1] + gf.dz * nr[2]) / gl, -1.0, 1.0);
+    const double deg = std::acos(c) * 180.0 / 3.14159265358979323846;
+    a.max_normal_degrees = std::max(a.max_normal_degrees, deg);
+    a.mean_normal_degrees += deg;
+    ++normals;
   }
   if (both) a.mean_depth /= both;
+  if (normals) a.mean_normal_degrees /= normals;
   return a;
 }
 
@@ -162,10 +201,10 @@ int main(int argc, char** argv) {
     out.open(csv, std::ios::app);
     if (fresh)
       out << "model,method,param,size,threads,ms_median,ref_size,judged,coverage_mismatches,max_depth_error,"
-             "mean_depth_error\n";
+             "mean_depth_error,max_normal_degrees,mean_normal_degrees\n";
   }
-  std::printf("%-14s %-9s %7s %6s %10s | %6s %8s %11s %11s\n", "model", "method", "param", "size", "ms", "judged",
-              "mismatch", "max depth", "mean depth");
+  std::printf("%-14s %-9s %7s %6s %10s | %6s %8s %11s %11s %9s %9s\n", "model", "method", "param", "size", "ms",
+              "judged", "mismatch", "max depth", "mean depth", "max N deg", "mean N");
   for (const std::string& entry : models) {
     // "FILE" or "FILE@x0,y0,z0,x1,y1,z1" (the model's box).
     std::string file = entry;
@@ -227,12 +266,14 @@ int main(int argc, char** argv) {
     for (const Run& run : runs) {
       const Frame timed = render(m, n, n, run, threads, frames, time);
       const Frame judged = rn == n ? timed : render(m, rn, rn, run, threads, 0, time);
-      const Accuracy a = compare(judged.z, want);
-      std::printf("%-14s %-9s %7g %6d %10.2f | %6d %8d %11.3g %11.3g\n", name.c_str(), run.method_name.c_str(),
-                  run.param, n, timed.ms, a.judged, a.coverage_mismatches, a.max_depth, a.mean_depth);
+      const Accuracy a = compare(judged.z, want, tape, m, rn);
+      std::printf("%-14s %-9s %7g %6d %10.2f | %6d %8d %11.3g %11.3g %9.3g %9.3g\n", name.c_str(),
+                  run.method_name.c_str(), run.param, n, timed.ms, a.judged, a.coverage_mismatches, a.max_depth,
+                  a.mean_depth, a.max_normal_degrees, a.mean_normal_degrees);
       if (out)
         out << name << ',' << run.method_name << ',' << run.param << ',' << n << ',' << threads << ',' << timed.ms << ','
-            << rn << ',' << a.judged << ',' << a.coverage_mismatches << ',' << a.max_depth << ',' << a.mean_depth << '\n';
+            << rn << ',' << a.judged << ',' << a.coverage_mismatches << ',' << a.max_depth << ',' << a.mean_depth << ','
+            << a.max_normal_degrees << ',' << a.mean_normal_degrees << '\n';
     }
   }
   return 0;

@@ -37,6 +37,12 @@ bool FrameRenderer::setThreads(int threads) {
   return true;
 }
 
+const float* FrameRenderer::depth() const {
+  GLint w = 0, h = 0, bytes = 0;
+  void* data = nullptr;
+  return ctx_ && pfGetDepthBuffer(ctx_, &w, &h, &bytes, &data) ? static_cast<const float*>(data) : nullptr;
+}
+
 int FrameRenderer::threads() const { return ctx_ ? pfGetThreadCount(ctx_) : 0; }
 
 bool FrameRenderer::render(const scene::Scene& scene, int scene_generation, const scene::Camera& camera, int width,

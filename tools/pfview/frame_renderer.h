@@ -35,6 +35,8 @@ class FrameRenderer {
   int width() const { return width_; }
   int height() const { return height_; }
   double milliseconds() const { return milliseconds_; }  // of the last render, glFinish included
+  // The last render's depth buffer (window depth, rows bottom to top), or null.
+  const float* depth() const;
   // Implicit surfaces in the last render: field evaluations per ray (0 without any).
   double fieldEvaluationsPerRay() const { return field_evaluations_per_ray_; }
 

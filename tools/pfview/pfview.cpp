@@ -6,7 +6,8 @@
 // shift + left) pans, the wheel zooms. Keys: R reload the scene file, S save a screenshot,
 // T cycle the thread count, L switch GL polygons between per-vertex and per-pixel lighting,
 // M cycle the root-finding method of implicit surfaces and [ ] halve or double its steps (the
-// overlay shows the method and the field evaluations per ray), Home reset the camera, H help,
+// overlay shows the method, the field evaluations per ray and, for a model, its accuracy against
+// the double-precision reference on a grid of pixels), Home reset the camera, H help,
 // Q or Esc quit. A model (.vm) opens as a scene of one implicit surface.
 // While the camera moves the frame is rendered at a quarter of the window's size, and at full
 // size once it rests (progressive refinement). With --frames N it renders N full-size frames
@@ -28,6 +29,7 @@
 
 #include "model/model_file.h"
 #include "raster/field/implicit_field.h"
+#include "pfview/accuracy_probe.h"
 #include "pfview/frame_renderer.h"
 #include "pfview/orbit_camera.h"
 #include "pfview/window_display.h"
@@ -57,6 +59,9 @@ struct Viewer {
   bool show_help = false;
   int screenshots = 0;
   std::vector<int> keys;  // pressed since the last frame; handled in the loop (they need the renderer)
+  // A model's accuracy against the double-precision reference, measured after each full frame.
+  std::optional<pf::view::AccuracyProbe> probe;
+  std::string accuracy;
 };
 
 // Splits a message into lines for the overlay (and echoes it on stderr).
@@ -80,6 +85,7 @@ void loadScene(Viewer& v) {
       view.box_min = m.default_box_min;
       view.box_max = m.default_box_max;
       next = pf::model::sceneOfModel(m, view);
+      v.probe.emplace(m, view);
     } else {
       next = pf::scene::loadScene(v.scene_path);
     }
@@ -208,6 +214,7 @@ std::vector<std::string> overlay(const Viewer& v, const pf::view::FrameRenderer&
       << " field evaluations per ray";
     lines.push_back(f.str());
   }
+  if (!v.accuracy.empty() && !coarse) lines.push_back(v.accuracy);
   if (!v.status.empty()) lines.push_back(v.status);
   for (const std::string& e : v.errors) lines.push_back(e);
   return lines;
@@ -335,7 +342,12 @@ int main(int argc, char** argv) {
         coarse_shown = true;
         drew = true;
       } else if (v.dirty || coarse_shown) {
-        if (render(fb_w, fb_h)) v.errors.clear();
+        if (render(fb_w, fb_h)) {
+          v.errors.clear();
+          // The accuracy figure of a model's full frame (the probe's rays follow the same camera).
+          if (v.probe && renderer.depth())
+            v.accuracy = v.probe->measure(v.camera->camera(), renderer.width(), renderer.height(), renderer.depth()).text();
+        }
         v.dirty = coarse_shown = false;
         drew = true;
       }
