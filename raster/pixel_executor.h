@@ -38,10 +38,12 @@ struct BlockCounters {
   uint64_t unknown_field_lanes = 0;    // field_hit() / field_gradient() lanes naming no field
 };
 
-// The object-space rays of field_hit() for a state and a staged box (min xyz, max xyz).
-field::FieldRays fieldRaysOf(const RasterState& state, const float box[6]);
-// The method a FieldHit's method operand names (anything else: auto).
-field::RootMethod fieldMethodOf(float method);
+// The context's field with id `id` (1-based, a whole number), or null.
+const field::ImplicitField* fieldById(const RasterState& state, float id);
+// What FieldHit casts: field `f`'s surface along the state's pixel rays inside the staged box
+// (min xyz, max xyz), by the method its operand names (anything else: auto) and its parameter.
+field::CastRequest fieldCastRequest(const RasterState& state, const field::ImplicitField* f, const float box[6],
+                                    float method, float param);
 // Component `axis` of the gradient of the evaluator's field at q: derived, or by central
 // differences (FieldGradient's imm & 4).
 float fieldGradientAt(field::GradientEvaluator& ge, const float q[3], int axis, bool by_differences);

@@ -29,11 +29,9 @@ Mat4 fromFloats(const float* m) {
   return r;
 }
 
-}  // namespace
-
 // Window coordinates to object coordinates: the inverse viewport and depth range, then the
 // inverse projection and the inverse modelview (as unscreen(), eye() and object() compose).
-field::FieldRays fieldRaysOf(const RasterState& s, const float box[6]) {
+field::FieldRays raysOf(const RasterState& s, const float box[6]) {
   Mat4 ndc{};
   ndc[0] = 1.0 / s.vp_scale_x;
   ndc[12] = -static_cast<double>(s.vp_offset_x) / s.vp_scale_x;
@@ -53,10 +51,26 @@ field::FieldRays fieldRaysOf(const RasterState& s, const float box[6]) {
   return rays;
 }
 
-field::RootMethod fieldMethodOf(float method) {
+}  // namespace
+
+const field::ImplicitField* fieldById(const RasterState& state, float id) {
+  const double index = static_cast<double>(id) - 1.0;
+  if (!state.fields || !(index >= 0.0) || index >= static_cast<double>(state.fields->size()) || index != std::floor(index))
+    return nullptr;
+  return (*state.fields)[static_cast<size_t>(index)].get();
+}
+
+field::CastRequest fieldCastRequest(const RasterState& state, const field::ImplicitField* f, const float box[6],
+                                    float method, float param) {
+  field::CastRequest req;
+  req.field = f;
+  req.rays = raysOf(state, box);
   const int m = static_cast<int>(method);
-  return (m >= 0 && m < field::kRootMethodCount && static_cast<float>(m) == method) ? static_cast<field::RootMethod>(m)
-                                                                                     : field::RootMethod::Auto;
+  req.method = (m >= 0 && m < field::kRootMethodCount && static_cast<float>(m) == method) ? static_cast<field::RootMethod>(m)
+                                                                                         : field::RootMethod::Auto;
+  req.param = std::isfinite(param) ? param : 0.0f;
+  req.iteration_cap = state.iteration_cap;
+  return req;
 }
 
 float fieldGradientAt(field::GradientEvaluator& ge, const float q[3], int axis, bool by_differences) {
@@ -75,11 +89,9 @@ float fieldGradientAt(field::GradientEvaluator& ge, const float q[3], int axis, 
 }
 
 const field::ImplicitField* PixelExecutor::lookUpField(const RasterState& state, float id, uint64_t exec) {
-  const double index = static_cast<double>(id) - 1.0;
-  if (state.fields && index >= 0.0 && index < static_cast<double>(state.fields->size()) && index == std::floor(index))
-    return (*state.fields)[static_cast<size_t>(index)].get();
-  counters.unknown_field_lanes += static_cast<uint64_t>(__builtin_popcountll(exec));
-  return nullptr;
+  const field::ImplicitField* f = fieldById(state, id);
+  if (!f) counters.unknown_field_lanes += static_cast<uint64_t>(__builtin_popcountll(exec));
+  return f;
 }
 
 void PixelExecutor::fieldHit(const RasterState& state, int bx, int by, uint64_t exec, float field_id, float method,
@@ -87,12 +99,7 @@ void PixelExecutor::fieldHit(const RasterState& state, int bx, int by, uint64_t 
   std::fill_n(t, kLanes, std::numeric_limits<float>::infinity());
   const field::ImplicitField* f = lookUpField(state, field_id, exec);
   if (!f || !exec) return;
-  field::CastRequest req;
-  req.field = f;
-  req.rays = fieldRaysOf(state, field_box_);
-  req.method = fieldMethodOf(method);
-  req.param = std::isfinite(param) ? param : 0.0f;
-  req.iteration_cap = state.iteration_cap;
+  const field::CastRequest req = fieldCastRequest(state, f, field_box_, method, param);
   const uint64_t capped_before = counters.field.iteration_cap_lanes;
   for (auto& tape : hit_tapes_.tape) tape.reset();
   caster_.castBlock(req, bx, by, exec, t, counters.field, &hit_tapes_);

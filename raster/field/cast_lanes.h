@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "raster/field/field_rays.h"
+#include "raster/field/float_evaluator.h"
 #include "raster/field/ray_caster.h"
 #include "raster/limits.h"
 
@@ -30,6 +31,25 @@ struct CastLanes {
       tapes->box[i] = deciding_box;
     }
   }
+  // f at ray[i].at(t[i]) for the lanes in `set`, in one batch: f[j] for lane index[j], j < the
+  // count returned.
+  int evaluateAt(FloatEvaluator& eval, uint64_t set, const double* t_at, float* f, int* index,
+                 FieldCounters& c) const {
+    float px[kLanes], py[kLanes], pz[kLanes];
+    int n = 0;
+    for (uint64_t p = set; p; p &= p - 1) {
+      const int i = std::countr_zero(p);
+      const Vec3d q = ray[i].at(t_at[i]);
+      px[n] = static_cast<float>(q[0]);
+      py[n] = static_cast<float>(q[1]);
+      pz[n] = static_cast<float>(q[2]);
+      index[n++] = i;
+    }
+    eval.evaluate(px, py, pz, n, f);
+    c.point_evaluations += n;
+    return n;
+  }
+
   // The pending lanes whose span in the box overlaps [ta, tb].
   uint64_t overlapping(double ta, double tb) const {
     uint64_t m = 0;

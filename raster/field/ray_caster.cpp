@@ -136,6 +136,33 @@ Interval evaluateBox(IntervalEvaluator& ie, const Box& b, std::vector<Choice>* c
   return ie.evaluate(b.x, b.y, b.z, choices);
 }
 
+// The interval form's verdict over the rays through a rectangle of pixel centres for t in
+// [ta, tb]: empty (no point of the region in the field's box, or f < 0 throughout), full
+// (f >= 0 throughout) or undecided; with the tape simplified for the region's box.
+struct RegionVerdict {
+  enum Kind { Empty, Full, Undecided } kind = Empty;
+  Box box;
+  std::shared_ptr<const FieldTape> tape;
+};
+
+RegionVerdict judgeRegion(const FieldRays& rays, double x0, double y0, double x1, double y1, double ta, double tb,
+                          const std::shared_ptr<const FieldTape>& tape, FieldCounters& c) {
+  RegionVerdict v;
+  v.box = regionBox(rays, x0, y0, x1, y1, ta, tb);
+  if (v.box.empty) return v;
+  std::vector<Choice> choices;
+  IntervalEvaluator ie(*tape);
+  const Interval f = evaluateBox(ie, v.box, &choices);
+  ++c.interval_evaluations;
+  if (f.allNegative()) {
+    ++c.slabs_culled;
+    return v;
+  }
+  v.kind = f.allNonNegative() ? RegionVerdict::Full : RegionVerdict::Undecided;
+  v.tape = simplifiedTape(tape, choices);
+  return v;
+}
+
 // Whether some coordinate the field reads changes along the rays (checked on the centre ray of
 // the viewport-independent family: ortho rays are all parallel, perspective ones all diverge).
 bool variesAlongRays(const CastRequest& r) {
@@ -214,30 +241,18 @@ const FieldRayCaster::TileSlabs& FieldRayCaster::tileSlabs(const CastRequest& r,
   ts.ty = ty;
   ts.slabs.clear();
   const double x0 = tx + 0.5, y0 = ty + 0.5, x1 = tx + kTileSize - 0.5, y1 = ty + kTileSize - 0.5;
-  std::vector<Choice> choices;
   // Front to back: the recursion visits the near half first.
   auto visit = [&](auto&& self, double ta, double tb, std::shared_ptr<const FieldTape> tape, int depth) -> void {
-    const Box box = regionBox(r.rays, x0, y0, x1, y1, ta, tb);
-    if (box.empty) return;
-    IntervalEvaluator ie(*tape);
-    const Interval f = evaluateBox(ie, box, &choices);
-    ++c.interval_evaluations;
-    if (f.allNegative()) {
-      ++c.slabs_culled;
-      return;
-    }
-    auto simplified = simplifiedTape(tape, choices);
-    if (f.allNonNegative()) {
-      ts.slabs.push_back({ta, tb, true, std::move(simplified), hitBoxOf(box)});
-      return;
-    }
-    if (depth < kMaxTileDepth && worthSplitting(r.rays, *r.field, x0, y0, x1, y1, ta, tb, 4.0)) {
+    RegionVerdict v = judgeRegion(r.rays, x0, y0, x1, y1, ta, tb, tape, c);
+    if (v.kind == RegionVerdict::Empty) return;
+    if (v.kind == RegionVerdict::Undecided && depth < kMaxTileDepth &&
+        worthSplitting(r.rays, *r.field, x0, y0, x1, y1, ta, tb, 4.0)) {
       const double tm = 0.5 * (ta + tb);
-      self(self, ta, tm, simplified, depth + 1);
-      self(self, tm, tb, simplified, depth + 1);
-    } else {
-      ts.slabs.push_back({ta, tb, false, std::move(simplified), hitBoxOf(box)});
+      self(self, ta, tm, v.tape, depth + 1);
+      self(self, tm, tb, v.tape, depth + 1);
+      return;
     }
+    ts.slabs.push_back({ta, tb, v.kind == RegionVerdict::Full, std::move(v.tape), hitBoxOf(v.box)});
   };
   // The field's own tape, not owned (the field outlives the caster's use of it).
   visit(visit, 0.0, 1.0, std::shared_ptr<const FieldTape>(std::shared_ptr<const FieldTape>(), &r.field->tape), 0);
@@ -275,18 +290,11 @@ void FieldRayCaster::regionSlab(const CastRequest& r, int bx, int by, const Lane
   if (!over) return;
   const double x0 = bx + rect.x + 0.5, y0 = by + rect.y + 0.5;
   const double x1 = x0 + rect.size - 1, y1 = y0 + rect.size - 1;
-  const Box box = regionBox(r.rays, x0, y0, x1, y1, ta, tb);
-  if (box.empty) return;
-  std::vector<Choice> choices;
-  IntervalEvaluator ie(*tape);
-  const Interval f = evaluateBox(ie, box, &choices);
-  ++c.interval_evaluations;
-  if (f.allNegative()) {
-    ++c.slabs_culled;
-    return;
-  }
-  auto simplified = simplifiedTape(tape, choices);
-  if (f.allNonNegative()) {
+  const RegionVerdict v = judgeRegion(r.rays, x0, y0, x1, y1, ta, tb, tape, c);
+  if (v.kind == RegionVerdict::Empty) return;
+  const Box& box = v.box;
+  const std::shared_ptr<const FieldTape>& simplified = v.tape;
+  if (v.kind == RegionVerdict::Full) {
     ++c.slabs_filled;
     lanes.deciding_tape = simplified;
     lanes.deciding_box = hitBoxOf(box);
@@ -348,23 +356,10 @@ void FieldRayCaster::regionSlab(const CastRequest& r, int bx, int by, const Lane
 // after bisecting the bracket [t_(k-1), t_k] to the double precision of t.
 void FieldRayCaster::sampleAndBisect(FloatEvaluator& eval, Lanes& lanes, uint64_t which, const double* from,
                                      const double* to, int steps, FieldCounters& c) {
-  float px[kLanes], py[kLanes], pz[kLanes], f[kLanes];
+  float f[kLanes];
   int index[kLanes];
   double lo[kLanes], hi[kLanes];  // bracket: f(lo) < 0 <= f(hi)
-  auto evaluateAt = [&](uint64_t set, const double* ts) {
-    int n = 0;
-    for (uint64_t p = set; p; p &= p - 1) {
-      const int i = std::countr_zero(p);
-      const Vec3d q = lanes.ray[i].at(ts[i]);
-      px[n] = static_cast<float>(q[0]);
-      py[n] = static_cast<float>(q[1]);
-      pz[n] = static_cast<float>(q[2]);
-      index[n++] = i;
-    }
-    eval.evaluate(px, py, pz, n, f);
-    c.point_evaluations += n;
-    return n;
-  };
+  auto evaluateAt = [&](uint64_t set, const double* ts) { return lanes.evaluateAt(eval, set, ts, f, index, c); };
   uint64_t searching = which, bracketed = 0;
   double tk[kLanes];
   for (int k = 0; k <= steps && searching; ++k) {

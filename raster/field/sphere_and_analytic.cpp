@@ -35,17 +35,9 @@ void FieldRayCaster::castSphere(const CastRequest& r, int bx, int by, Lanes& lan
   uint64_t tracing = 0, bracketed = 0;
   // f at each entry: inside there is a hit at once.
   {
-    int n = 0;
-    for (uint64_t p = lanes.pending; p; p &= p - 1) {
-      const int i = std::countr_zero(p);
-      const Vec3d q = lanes.ray[i].at(lanes.ray[i].entry);
-      px[n] = static_cast<float>(q[0]);
-      py[n] = static_cast<float>(q[1]);
-      pz[n] = static_cast<float>(q[2]);
-      index[n++] = i;
-    }
-    eval.evaluate(px, py, pz, n, f);
-    c.point_evaluations += n;
+    double entry[kLanes];
+    for (uint64_t p = lanes.pending; p; p &= p - 1) entry[std::countr_zero(p)] = lanes.ray[std::countr_zero(p)].entry;
+    const int n = lanes.evaluateAt(eval, lanes.pending, entry, f, index, c);
     for (int j = 0; j < n; ++j) {
       const int i = index[j];
       if (f[j] >= 0.0f) {

@@ -49,23 +49,12 @@ class Interpreter {
   ReferencePixel out_;
   float field_box_[6] = {0, 0, 0, 0, 0, 0};  // FieldBox's staging, as the executor's
 
-  const field::ImplicitField* fieldOf(float id) const {
-    const double index = static_cast<double>(id) - 1.0;
-    if (!st_.fields || !(index >= 0.0) || index >= static_cast<double>(st_.fields->size()) || index != std::floor(index))
-      return nullptr;
-    return (*st_.fields)[static_cast<size_t>(index)].get();
-  }
   // The caster for this one pixel, as a lane of its own block: the search of a lane does not
   // depend on the other lanes, so the result must equal the SIMD executor's bit for bit.
   float fieldHit(float id, float method, float param) {
-    const field::ImplicitField* f = fieldOf(id);
+    const field::ImplicitField* f = fieldById(st_, id);
     if (!f) return std::numeric_limits<float>::infinity();
-    field::CastRequest req;
-    req.field = f;
-    req.rays = fieldRaysOf(st_, field_box_);
-    req.method = fieldMethodOf(method);
-    req.param = std::isfinite(param) ? param : 0.0f;
-    req.iteration_cap = st_.iteration_cap;
+    const field::CastRequest req = fieldCastRequest(st_, f, field_box_, method, param);
     const int px = static_cast<int>(std::floor(x_)), py = static_cast<int>(std::floor(y_));
     const int bx = px - ((px % kBlockSize) + kBlockSize) % kBlockSize, by = py - ((py % kBlockSize) + kBlockSize) % kBlockSize;
     const int lane = (py - by) * kBlockSize + (px - bx);
@@ -196,7 +185,7 @@ class Interpreter {
         return {};
       case Op::FieldHit: scalar_[in.dst] = fromF(fieldHit(asF(get(in.a)), asF(get(in.b)), asF(get(in.c)))); return {};
       case Op::FieldGradient: {
-        const field::ImplicitField* f = fieldOf(asF(get(in.d)));
+        const field::ImplicitField* f = fieldById(st_, asF(get(in.d)));
         const float q[3] = {asF(get(in.a)), asF(get(in.b)), asF(get(in.c))};
         if (!f) {
           scalar_[in.dst] = fromF(0.0f);
