@@ -65,9 +65,9 @@ field::CastRequest fieldCastRequest(const RasterState& state, const field::Impli
   field::CastRequest req;
   req.field = f;
   req.rays = raysOf(state, box);
-  const int m = static_cast<int>(method);
-  req.method = (m >= 0 && m < field::kRootMethodCount && static_cast<float>(m) == method) ? static_cast<field::RootMethod>(m)
-                                                                                         : field::RootMethod::Auto;
+  // (Range-checked before the conversion: a float out of int's range does not convert.)
+  const bool valid = method >= 0.0f && method < static_cast<float>(field::kRootMethodCount) && method == std::floor(method);
+  req.method = valid ? static_cast<field::RootMethod>(static_cast<int>(method)) : field::RootMethod::Auto;
   req.param = std::isfinite(param) ? param : 0.0f;
   req.iteration_cap = state.iteration_cap;
   return req;

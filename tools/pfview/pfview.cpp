@@ -113,14 +113,18 @@ std::vector<pf::scene::ParamValue*> implicitParams(pf::scene::Scene& s, const st
   return out;
 }
 
+// A parameter value as a small whole number (0 where it is not one), without converting a float
+// out of int's range.
+int wholeValue(double v) { return v >= 0.0 && v < 1e9 ? static_cast<int>(v) : 0; }
+
 // "implicit: interval, steps 64" for the first implicit object, or "".
 std::string implicitStatus(pf::scene::Scene& s) {
   const auto methods = implicitParams(s, "method");
   if (methods.empty()) return "";
   const auto steps = implicitParams(s, "steps");
   std::string text = "implicit: " +
-                     std::string(pf::field::rootMethodName(pf::field::RootMethod(static_cast<int>(methods[0]->values[0]))));
-  if (!steps.empty()) text += ", steps " + std::to_string(static_cast<int>(steps[0]->values[0]));
+                     std::string(pf::field::rootMethodName(pf::field::RootMethod(wholeValue(methods[0]->values[0]))));
+  if (!steps.empty()) text += ", steps " + std::to_string(wholeValue(steps[0]->values[0]));
   return text;
 }
 
@@ -130,7 +134,7 @@ std::string changeImplicitMethod(pf::scene::Scene& s, int key) {
   const auto steps = implicitParams(s, "steps");
   if (methods.empty()) return "the scene has no implicit surfaces";
   if (key == GLFW_KEY_M) {
-    const int next = (static_cast<int>(methods[0]->values[0]) + 1) % pf::field::kRootMethodCount;
+    const int next = (wholeValue(methods[0]->values[0]) + 1) % pf::field::kRootMethodCount;
     for (auto* p : methods) p->values[0] = next;
   } else {
     for (auto* p : steps) {
