@@ -4,12 +4,13 @@
 file(MAKE_DIRECTORY ${WORK_DIR})
 set(view_png ${WORK_DIR}/pfview.png)
 set(render_png ${WORK_DIR}/pfrender.png)
-file(REMOVE ${view_png} ${render_png})
+file(REMOVE ${view_png} ${render_png} ${WORK_DIR}/Xauthority)
 # Under AddressSanitizer, Mesa's GL driver (dlopen'ed by the window's libGL, unloaded at exit)
 # leaves allocations LeakSanitizer can only attribute to an "unknown module": leak checking is
 # off for pfview's window process (the suite's other programs check primflow's own code).
 execute_process(COMMAND ${CMAKE_COMMAND} -E env ASAN_OPTIONS=detect_leaks=0
-                        ${XVFB_RUN} -a ${PFVIEW} ${SCENE} --size ${SIZE} --frames 3 --screenshot ${view_png}
+                        ${XVFB_RUN} -a -f ${WORK_DIR}/Xauthority ${PFVIEW} ${SCENE} --size ${SIZE} --frames 3
+                        --screenshot ${view_png}
                 RESULT_VARIABLE view_rc OUTPUT_VARIABLE view_out ERROR_VARIABLE view_err)
 if(NOT view_rc EQUAL 0)
   message(FATAL_ERROR "pfview failed (${view_rc}):\n${view_out}${view_err}")
