@@ -64,6 +64,9 @@ struct BadScene {
 TEST(SceneErrors, NameTheFileLineAndKey) {
   const BadScene cases[] = {
       {"{\n\"objects\": [\n", "t.json:3: error: not valid JSON"},
+      // found by fuzz_scene: a number past double's range threw an exception nobody caught
+      {"{\"objects\": [],\n \"camera\": {\"fov\": -0.5e4444446}}",
+       "t.json:2: error: not valid JSON: number overflow parsing '-0.5e4444446'"},
       {"{\"objects\": []}\n", ""},
       {"{}", "t.json:1: error: (the document): a scene needs \"objects\""},
       {"{\"objects\": [],\n \"camra\": {}}", "t.json:2: error: camra: unknown key 'camra'"},

@@ -384,6 +384,20 @@ Scene parseScene(const std::string& text, const std::string& path, bool allow_fi
     const size_t colon = what.find(": ", what.find("parse error"));
     throw SceneError(path + ":" + std::to_string(line) + ": error: not valid JSON: " +
                      (colon != std::string::npos ? what.substr(colon + 2) : what));
+  } catch (const json::out_of_range& e) {
+    // A number past double's range ("number overflow parsing '1e999'"): nlohmann gives no
+    // offset, so find the quoted token in the text for the line.
+    const std::string what = e.what();
+    const size_t open = what.find('\'');
+    const size_t close = open == std::string::npos ? open : what.find('\'', open + 1);
+    long line = 0;
+    if (close != std::string::npos) {
+      const size_t at = text.find(what.substr(open + 1, close - open - 1));
+      if (at != std::string::npos) line = 1 + std::count(text.begin(), text.begin() + static_cast<long>(at), '\n');
+    }
+    const size_t tail = what.find("] ");
+    throw SceneError(path + (line > 0 ? ":" + std::to_string(line) : std::string()) +
+                     ": error: not valid JSON: " + (tail != std::string::npos ? what.substr(tail + 2) : what));
   }
   Reader r(text, path, allow_files);
   Scene s;
