@@ -80,13 +80,15 @@ struct Param {
   std::string name;
 };
 
-enum class UnitKind { Primitive, Interpolator, Function };
+// Field: `field float name(point p, float a, ...)`, an implicit surface's function of its point
+// (compiled to a field tape, compiler/field/field_unit.h, not to programs).
+enum class UnitKind { Primitive, Interpolator, Function, Field };
 
 struct Unit {
   UnitKind kind;
   SourceLoc loc;
   std::string name;
-  Type return_type;  // Function
+  Type return_type;  // Function, Field
   std::vector<Param> params;
   std::vector<StmtPtr> body;
 };

@@ -166,6 +166,7 @@ class Generator {
       case Value::Origin::Const: return makeOperand(OperandKind::Const, constIndex(setup_consts_, setup_, v, x.bits));
       case Value::Origin::Param: return makeOperand(OperandKind::Param, static_cast<uint32_t>(x.index));
       case Value::Origin::Builtin: return kNoOperand;  // never uniform
+      case Value::Origin::FieldPoint: return kNoOperand;  // fields become tapes, not programs
       case Value::Origin::Temp: break;
     }
     auto it = setup_regs_.find(v);

@@ -15,30 +15,88 @@ namespace pf {
 
 namespace {
 const char* unitWord(const Unit& u) { return u.kind == UnitKind::Interpolator ? "interpolator" : "primitive"; }
+
+// The names of the functions an expression or statement calls.
+void calledNames(const Expr& e, std::set<std::string>& out) {
+  if (e.kind == ExprKind::Call) out.insert(e.name);
+  for (const ExprPtr& a : e.args) calledNames(*a, out);
+}
+void calledNames(const Stmt& s, std::set<std::string>& out) {
+  for (const Expr* e : {s.value.get(), s.target.get()})
+    if (e) calledNames(*e, out);
+  for (const ExprPtr& a : s.bound_args) calledNames(*a, out);
+  for (const std::vector<StmtPtr>* body : {&s.body, &s.else_body})
+    for (const StmtPtr& c : *body) calledNames(*c, out);
+  for (const InterpolationCase& k : s.cases)
+    for (const StmtPtr& c : k.body) calledNames(*c, out);
+  for (const Stmt* c : {s.init.get(), s.step.get()})
+    if (c) calledNames(*c, out);
+}
+// The standard library's functions: which file defines each, and what each calls. Built once
+// per process, so that a compilation parses only the library files it calls into.
+struct StandardLibraryIndex {
+  struct Function {
+    int file = 0;
+    std::set<std::string> calls;
+  };
+  std::map<std::string, Function> functions;
+};
+
+const StandardLibraryIndex& standardLibraryIndex() {
+  static const StandardLibraryIndex index = [] {
+    StandardLibraryIndex out;
+    for (int i = 0; i < kStandardLibraryCount; ++i) {
+      DiagnosticLog log;
+      const Program p = parse(log.addSource(kStandardLibrary[i].file_name, kStandardLibrary[i].text), log);
+      for (const Unit& u : p.units) {
+        StandardLibraryIndex::Function& f = out.functions[u.name];
+        f.file = i;
+        for (const StmtPtr& st : u.body) calledNames(*st, f.calls);
+      }
+    }
+    return out;
+  }();
+  return index;
+}
 }  // namespace
 
-bool compileSource(const std::string& filename, const std::string& text, CompiledModule& out,
-                   DiagnosticLog& log, EmitStage emit, std::string* listing, bool optimize_ir,
-                   const PrimitiveTable* callable) {
+bool analyzeSource(const std::string& filename, const std::string& text, DiagnosticLog& log, Program& program,
+                   const std::map<std::string, PrimitiveSignature>& callable, EmitStage emit, std::string* listing) {
   const SourceFile& file = log.addSource(filename, text);
-  Program program = parse(file, log);
+  program = parse(file, log);
   if (log.hasErrors()) return false;
-  // The standard library's functions come first; a user's function of the same name is an
-  // error that names it as the library's.
-  std::set<std::string> library_names;
-  for (int i = 0; i < kStandardLibraryCount; ++i) {
-    const SourceFile& lib = log.addSource(std::string("<stdlib>/") + kStandardLibrary[i].file_name, kStandardLibrary[i].text);
-    Program p = parse(lib, log);
-    for (Unit& u : p.units) {
-      library_names.insert(u.name);
-      program.units.insert(program.units.begin(), std::move(u));
-    }
-  }
+  // The standard library's functions come first, only those the source calls (directly or
+  // through each other): the rest would cost parsing and analysis on every compilation (every
+  // context compiles its built-in primitives) and change nothing. A user's function of a library
+  // function's name is an error that names it as the library's.
+  const StandardLibraryIndex& index = standardLibraryIndex();
   for (const Unit& u : program.units)
-    if (u.loc.file == &file && library_names.count(u.name)) {
+    if (index.functions.count(u.name)) {
       log.error(u.loc, "'" + u.name + "' is a function of the standard library (choose another name)");
       return false;
     }
+  std::set<std::string> called, pending;
+  for (const Unit& u : program.units)
+    for (const StmtPtr& st : u.body) calledNames(*st, pending);
+  while (!pending.empty()) {
+    const std::string n = *pending.begin();
+    pending.erase(pending.begin());
+    auto it = index.functions.find(n);
+    if (it == index.functions.end() || !called.insert(n).second) continue;
+    pending.insert(it->second.calls.begin(), it->second.calls.end());
+  }
+  std::vector<Unit> units;
+  for (int i = 0; i < kStandardLibraryCount; ++i) {
+    bool needed = false;
+    for (const std::string& n : called) needed = needed || index.functions.at(n).file == i;
+    if (!needed) continue;
+    const SourceFile& lib = log.addSource(std::string("<stdlib>/") + kStandardLibrary[i].file_name, kStandardLibrary[i].text);
+    Program p = parse(lib, log);
+    for (Unit& u : p.units)
+      if (called.count(u.name)) units.push_back(std::move(u));
+  }
+  for (Unit& u : program.units) units.push_back(std::move(u));
+  program.units = std::move(units);
   if (log.hasErrors()) return false;
   if (emit == EmitStage::Ast && listing) {
     // The listing shows the source's own units, not the standard library's.
@@ -48,18 +106,26 @@ bool compileSource(const std::string& filename, const std::string& text, Compile
     program.units = std::move(library.units);
     for (Unit& u : own.units) program.units.push_back(std::move(u));
   }
+  return analyze(program, log, callable);
+}
+
+bool compileSource(const std::string& filename, const std::string& text, CompiledModule& out,
+                   DiagnosticLog& log, EmitStage emit, std::string* listing, bool optimize_ir,
+                   const PrimitiveTable* callable) {
   std::map<std::string, PrimitiveSignature> signatures;
   PrimitiveTable primitives;  // what the primitive being compiled may call
   if (callable) {
     primitives = *callable;
     for (const auto& [name, p] : *callable) signatures[name] = p->signature;
   }
-  if (!analyze(program, log, signatures)) return false;
+  Program program;
+  if (!analyzeSource(filename, text, log, program, signatures, emit, listing)) return false;
   std::map<std::string, const Unit*> functions;
   for (const Unit& u : program.units)
     if (u.kind == UnitKind::Function) functions[u.name] = &u;
   for (const Unit& u : program.units) {
-    if (u.kind == UnitKind::Function) continue;  // inlined where called
+    // Functions are inlined where called; fields become tapes (compileFieldUnit), not programs.
+    if (u.kind == UnitKind::Function || u.kind == UnitKind::Field) continue;
     IrFunction ir;
     if (!lowerPrimitive(u, functions, primitives, ir, log)) return false;
     std::vector<std::string> reasons;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "compiler/ast.h"
 #include "compiler/codegen.h"
 #include "compiler/diagnostics.h"
 #include "compiler/ir.h"
@@ -66,6 +67,14 @@ enum class EmitStage { None, Ast, Ir, Setup, Pixel, Explain };
 // `optimize` = false skips the passes of passes.h (pfc -O0), for comparison and debugging.
 // `callable`: primitives compiled before (the context's) that this source's primitives may
 // call, besides the ones it defines itself.
+// The front end that primitives and fields share: parses `text`, adds the standard library's
+// functions and analyzes the program (types, uniform / varying). `callable`: the signatures of
+// primitives compiled before that the source may call. `listing` receives the AST for
+// EmitStage::Ast.
+bool analyzeSource(const std::string& filename, const std::string& text, DiagnosticLog& log, Program& program,
+                   const std::map<std::string, PrimitiveSignature>& callable, EmitStage emit = EmitStage::None,
+                   std::string* listing = nullptr);
+
 bool compileSource(const std::string& filename, const std::string& text, CompiledModule& out,
                    DiagnosticLog& log, EmitStage emit = EmitStage::None,
                    std::string* listing = nullptr, bool optimize = true,

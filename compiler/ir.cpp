@@ -21,6 +21,7 @@ std::string irValueName(const IrFunction& f, int v) {
     }
     case Value::Origin::Param: return "param[" + std::to_string(x.index) + "]";
     case Value::Origin::Builtin: return x.index == 0 ? "X" : x.index == 1 ? "Y" : "Z";
+    case Value::Origin::FieldPoint: return x.index == 0 ? "p.x" : x.index == 1 ? "p.y" : "p.z";
     case Value::Origin::Temp: break;
   }
   return std::string(x.varying ? "v%" : "u%") + std::to_string(v);

@@ -22,9 +22,10 @@ enum class ValueClass : uint8_t { F32, I32, Bool, Interp };
 struct Value {
   ValueClass cls = ValueClass::F32;
   bool varying = false;
-  enum class Origin : uint8_t { Temp, Const, Param, Builtin } origin = Origin::Temp;
+  // FieldPoint: a component of a field unit's point (index 0, 1, 2: x, y, z), never in programs.
+  enum class Origin : uint8_t { Temp, Const, Param, Builtin, FieldPoint } origin = Origin::Temp;
   uint32_t bits = 0;   // Const: the 32-bit pattern
-  int index = -1;      // Param: slot in the parameter block; Builtin: kRegX / kRegY / kRegZ
+  int index = -1;      // Param: slot in the parameter block; Builtin: its register; FieldPoint: axis
 };
 
 struct IrInst {

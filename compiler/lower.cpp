@@ -193,6 +193,49 @@ class Lowerer {
     return !log_.hasErrors();
   }
 
+  // A field unit (docs/language.md, "Fields"): its point p is three FieldPoint values (w = 1),
+  // its other parameters are the parameter block's slots, and its body is inlined as a
+  // function's. The field's value leaves through ShadeOut, which keeps it alive through the
+  // passes. The pixel built-ins are bound as in a primitive, for the functions a field calls:
+  // the field tape translation (compiler/field/field_unit.cpp) rejects any use of them.
+  bool runField(const Unit& u) {
+    f_.name = u.name;
+    scopes_.emplace_back();
+    bindBuiltin("X", kRegX, false);
+    bindBuiltin("Y", kRegY, false);
+    bindBuiltin("Z", kRegZ, false);
+    bindBuiltin("P", kRegP, false, Type::of(BaseType::Point));
+    bindBuiltin("N", kRegN, false, Type::of(BaseType::Normal));
+    blocks_.push_back(&f_.body);
+    zero_interp_ = emit(Op::XLoadVertexAt, ValueClass::Interp, false, constI(-1));
+    std::vector<Binding> args(u.params.size());
+    args[0].type = Type::of(BaseType::Point);
+    for (int k = 0; k < 3; ++k) {
+      Value v;
+      v.cls = ValueClass::F32;
+      v.varying = true;
+      v.origin = Value::Origin::FieldPoint;
+      v.index = k;
+      args[0].comps.push_back(newValue(v));
+    }
+    args[0].comps.push_back(constF(1.0f));
+    for (size_t i = 1; i < u.params.size(); ++i) {
+      ParamInfo info;
+      info.name = u.params[i].name;
+      info.type = u.params[i].type;
+      info.per_sequence_point = false;
+      info.offset = f_.param_floats;
+      info.components = 1;
+      args[i].type = u.params[i].type;
+      args[i].comps.push_back(paramValue(f_.param_floats++, ValueClass::F32));
+      f_.params.push_back(info);
+    }
+    Binding value = inlineFunction(u, args, u.loc);
+    if (log_.hasErrors()) return false;
+    emitEffect(Op::ShadeOut, value.comps[0], -1, -1, -1, 0, u.loc);
+    return true;
+  }
+
  private:
   IrFunction& f_;
   DiagnosticLog& log_;
@@ -587,10 +630,15 @@ class Lowerer {
   Binding callFunction(const Expr& e, const Unit& fn) {
     std::vector<Binding> args;
     for (const ExprPtr& a : e.args) args.push_back(expr(*a));
+    return inlineFunction(fn, args, e.loc);
+  }
+
+  // The body of function (or field) `fn` inlined with `args` as its parameters' values.
+  Binding inlineFunction(const Unit& fn, const std::vector<Binding>& args, SourceLoc call_loc) {
     Binding result;
     result.type = fn.return_type;
     if (fn.return_type.base == BaseType::InterpData) {
-      log_.error(e.loc, "functions cannot return interpolator_data in this version of the language");
+      log_.error(call_loc, "functions cannot return interpolator_data in this version of the language");
       return result;
     }
     // The function sees the built-ins (scope 0) and its own parameters, nothing of the caller.
@@ -627,13 +675,13 @@ class Lowerer {
     std::vector<std::string> names = {"$result"};
     for (const StmtPtr& st : fn.body) assignedNames(*st, names);
     LoopSpec spec;
-    spec.loc = e.loc;
+    spec.loc = call_loc;
     spec.function = true;
     spec.carried_bindings = visibleBindings(names);
     spec.body = [&] {
       if (!scoped(fn.body)) {  // sema makes every path return; stay safe regardless
-        carryCopies(e.loc);
-        emitEffect(Op::Break, -1, -1, -1, -1, 1, e.loc);
+        carryCopies(call_loc);
+        emitEffect(Op::Break, -1, -1, -1, -1, 1, call_loc);
       }
     };
     lowerLoop(spec);
@@ -1239,6 +1287,13 @@ bool lowerPrimitive(const Unit& unit, const std::map<std::string, const Unit*>& 
                     const PrimitiveTable& primitives, IrFunction& out, DiagnosticLog& log) {
   Lowerer l(out, log, functions, primitives);
   return l.run(unit);
+}
+
+bool lowerField(const Unit& unit, const std::map<std::string, const Unit*>& functions, IrFunction& out,
+                DiagnosticLog& log) {
+  const PrimitiveTable none;
+  Lowerer l(out, log, functions, none);
+  return l.runField(unit);
 }
 
 }  // namespace pf

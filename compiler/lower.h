@@ -19,4 +19,9 @@ using PrimitiveTable = std::map<std::string, std::shared_ptr<const CompiledPrimi
 bool lowerPrimitive(const Unit& unit, const std::map<std::string, const Unit*>& functions,
                     const PrimitiveTable& primitives, IrFunction& out, DiagnosticLog& log);
 
+// Lowers a field unit: its value is the operand of the one ShadeOut at the end of the body,
+// its point the FieldPoint values, its other parameters the parameter block's slots.
+bool lowerField(const Unit& unit, const std::map<std::string, const Unit*>& functions, IrFunction& out,
+                DiagnosticLog& log);
+
 }  // namespace pf

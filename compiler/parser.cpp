@@ -21,10 +21,12 @@ class Parser {
       try {
         if (at(Tok::KwPrimitive) || at(Tok::KwInterpolator)) {
           p.units.push_back(unit());
+        } else if (atFieldUnit()) {
+          p.units.push_back(field());
         } else if (isTypeToken(cur().kind)) {
           p.units.push_back(function());
         } else {
-          error(cur().loc, "expected 'primitive', 'interpolator' or a function at top level, found " + describe(cur()));
+          error(cur().loc, "expected 'primitive', 'interpolator', 'field' or a function at top level, found " + describe(cur()));
           skipToUnit();
         }
       } catch (const Sync&) {
@@ -75,13 +77,12 @@ class Parser {
     return take();
   }
   bool atUnitStart() const {
-    return at(Tok::KwPrimitive) || at(Tok::KwInterpolator) || (isTypeToken(cur().kind) && next().kind == Tok::Ident);
+    return at(Tok::KwPrimitive) || at(Tok::KwInterpolator) || atFieldUnit() ||
+           (isTypeToken(cur().kind) && next().kind == Tok::Ident);
   }
   void skipToUnit() {
     if (!atUnitStart()) take();
-    while (!at(Tok::End) && !at(Tok::KwPrimitive) && !at(Tok::KwInterpolator) &&
-           !(isTypeToken(cur().kind) && next().kind == Tok::Ident))
-      take();
+    while (!at(Tok::End) && !atUnitStart()) take();
   }
   // After an error inside a block: skip past the next ';' or to a '}' at this level.
   void skipStatement() {
@@ -224,6 +225,19 @@ class Parser {
     }
     expect(Tok::RParen, "to close the parameter list");
     u.body = block();
+    return u;
+  }
+
+  // `field` is a keyword only where a unit starts (`field` then a type): elsewhere it stays an
+  // identifier, as the implicit primitive's parameter `field` is.
+  bool atFieldUnit() const { return at(Tok::Ident) && cur().text == "field" && isTypeToken(next().kind); }
+
+  // field float name(point p, float a, ...) { ... }: a function with the unit's kind.
+  Unit field() {
+    const SourceLoc loc = take().loc;
+    Unit u = function();
+    u.kind = UnitKind::Field;
+    u.loc = loc;
     return u;
   }
 

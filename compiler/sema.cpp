@@ -77,15 +77,21 @@ class Analyzer {
     // Built-in pixel variables: visible in every primitive, whether or not the parameter list
     // names them (the paper's primitives list them as parameters; both forms are accepted).
     // Functions may read them; only a primitive writes Z.
-    declareBuiltin("X", false);
-    declareBuiltin("Y", false);
-    declareBuiltin("Z", u.kind == UnitKind::Primitive);
-    // P: the surface point (eye space) a primitive sets for its shared interpolators, which read it.
-    declareBuiltin("P", u.kind == UnitKind::Primitive, Type::of(BaseType::Point));
-    // N: the surface normal (eye space); a primitive that sets it is lit per pixel.
-    declareBuiltin("N", u.kind == UnitKind::Primitive, Type::of(BaseType::Normal));
+    // A field sees none of them: it is a function of its point alone.
+    builtin_count_ = 0;
+    if (u.kind != UnitKind::Field) {
+      declareBuiltin("X", false);
+      declareBuiltin("Y", false);
+      declareBuiltin("Z", u.kind == UnitKind::Primitive);
+      // P: the surface point (eye space) a primitive sets for its shared interpolators, which read it.
+      declareBuiltin("P", u.kind == UnitKind::Primitive, Type::of(BaseType::Point));
+      // N: the surface normal (eye space); a primitive that sets it is lit per pixel.
+      declareBuiltin("N", u.kind == UnitKind::Primitive, Type::of(BaseType::Normal));
+    }
     if (u.kind == UnitKind::Function) {
       functionParams(u);
+    } else if (u.kind == UnitKind::Field) {
+      fieldParams(u);
     } else {
       unitParams(u);
     }
@@ -104,8 +110,9 @@ class Analyzer {
     scoped(u.body);
     if (!return_seen_in_interp_ && u.kind == UnitKind::Interpolator)
       err(u.loc, "interpolator '" + u.name + "' never reaches interpolator_return(value)");
-    if (u.kind == UnitKind::Function && !alwaysReturns(u.body))
-      err(u.loc, "function '" + u.name + "' can reach its end without returning a " + typeName(u.return_type));
+    if ((u.kind == UnitKind::Function || u.kind == UnitKind::Field) && !alwaysReturns(u.body))
+      err(u.loc, std::string(u.kind == UnitKind::Field ? "field '" : "function '") + u.name +
+                     "' can reach its end without returning a " + typeName(u.return_type));
   }
 
  private:
@@ -118,6 +125,39 @@ class Analyzer {
       if (p.qualifier != Qualifier::None)
         err(p.loc, "function parameters take no qualifier: they are copies of the arguments, uniform or varying as the call decides");
       declareParam(p, true);
+    }
+  }
+
+  // A field: `field float name(point p, float a, ...)`. p is the point the field is evaluated
+  // at, varying like a pixel's position; the other parameters are numbers fixed when the field
+  // is compiled (pfglCompileFieldParamsEXT's values), so uniform.
+  void fieldParams(Unit& u) {
+    if (u.return_type != Type::of(BaseType::Float))
+      err(u.loc, "field '" + u.name + "' must return float (its value: >= 0 inside, < 0 outside), not " + typeName(u.return_type));
+    if (u.params.empty() || u.params[0].type != Type::of(BaseType::Point)) {
+      err(u.params.empty() ? u.loc : u.params[0].loc,
+          "a field's first parameter is the point it is evaluated at: declare it 'point p'");
+    }
+    std::set<std::string> seen;
+    for (size_t i = 0; i < u.params.size(); ++i) {
+      Param& p = u.params[i];
+      if (!seen.insert(p.name).second) err(p.loc, "parameter '" + p.name + "' is declared twice");
+      if (p.qualifier != Qualifier::None && !(i > 0 && p.qualifier == Qualifier::Uniform))
+        err(p.loc, "a field's parameters take no qualifier: the point is varying, the others uniform numbers");
+      if (i > 0 && p.type != Type::of(BaseType::Float))
+        err(p.loc, "a field's parameters after its point are numbers set when it is compiled: declare '" + p.name +
+                       "' as float, not " + typeName(p.type));
+      Var v;
+      v.name = p.name;
+      v.type = p.type;
+      v.loc = p.loc;
+      v.is_param = true;
+      v.writable = true;
+      if (i == 0) {
+        v.varying = true;
+        v.why = "it depends on the field's point '" + p.name + "'";
+      }
+      declare(v);
     }
   }
 
@@ -553,7 +593,11 @@ class Analyzer {
       case ExprKind::Name: {
         int vi = lookup(e.name);
         if (vi < 0) {
-          err(e.loc, "'" + e.name + "' is not declared");
+          const bool pixel_builtin = e.name == "X" || e.name == "Y" || e.name == "Z" || e.name == "P" || e.name == "N";
+          if (unit_->kind == UnitKind::Field && pixel_builtin)
+            err(e.loc, "'" + e.name + "' is a pixel's built-in, which a field does not see: a field is a function of its point alone");
+          else
+            err(e.loc, "'" + e.name + "' is not declared");
           return;
         }
         e.type = vars_[vi].type;

@@ -76,6 +76,7 @@ class Interpreter {
         if (val.index == static_cast<int>(kRegY)) return fromF(y_);
         if (val.index == static_cast<int>(kRegZ)) return fromF(z_);
         return fromF(val.index == static_cast<int>(kRegP) + 3 ? 1.0f : 0.0f);  // P (0, 0, 0, 1), N 0
+      case Value::Origin::FieldPoint: return 0;  // only in fields, which this does not run
       case Value::Origin::Temp: break;
     }
     return scalar_[v];

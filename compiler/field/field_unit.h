@@ -1,0 +1,37 @@
+// Field units of the primitive language -> field tapes.
+//
+// `field float name(point p, float a, ...) { ... }` (docs/language.md, "Fields") is compiled by
+// the language's own front end, lowering and passes, and its optimized IR is then run
+// symbolically: everything that depends only on constants and the field's parameters is
+// computed at compile time (so `if`, loops and function calls are unrolled), and what depends
+// on the point p becomes instructions of a FieldTape -- the form every implicit-surface
+// evaluator runs (raster/field/). That is how the interval, gradient and ray-polynomial forms
+// of the issue are derived from a field: they are the tape's evaluators.
+//
+// A field's point-dependent part may use only what a tape can evaluate soundly: + - * /, min,
+// max, abs, sqrt, exp, log, sin, cos, tan (sin / cos), pow (constant integer exponents as
+// products; otherwise exp(y log x)). A branch, a comparison or floor/ceil/sign/mod/atan/asin/
+// acos/noise of a point-dependent value is a compile error that names the line.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "compiler/diagnostics.h"
+#include "compiler/field/field_tape.h"
+
+namespace pf::field {
+
+// How far a field's compile-time loops may unroll, and how long its tape may grow.
+constexpr long kMaxFieldLoopIterations = 1'000'000;
+constexpr size_t kMaxFieldTapeSize = 1u << 20;
+
+// Compiles field `name` of language source `text` (named `filename` in diagnostics) to a tape;
+// an empty `name` takes the source's only field. `params` give the values of the field's
+// parameters after its point, in order. nullopt with errors (file:line:col, caret) in `log`.
+std::optional<FieldTape> compileFieldUnit(const std::string& filename, const std::string& text,
+                                          const std::string& name, const std::vector<float>& params,
+                                          DiagnosticLog& log);
+
+}  // namespace pf::field

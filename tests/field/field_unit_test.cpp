@@ -1,0 +1,155 @@
+// Field units of the language (compiler/field/field_unit.h): fields written in the language
+// compile to tapes whose values are the formulas' (checked in double at random points against
+// the formulas written here in C++), compile-time control flow unrolls, and everything a tape
+// cannot hold is an error that names the line.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "compiler/field/field_unit.h"
+#include "field/field_reference.h"
+
+namespace pf::field {
+namespace {
+
+FieldTape compileOk(const std::string& source, const std::vector<float>& params = {}, const std::string& name = "") {
+  DiagnosticLog log;
+  auto tape = compileFieldUnit("f.pfl", source, name, params, log);
+  EXPECT_TRUE(tape) << log.format();
+  return tape ? *tape : FieldTape{};
+}
+
+std::string compileError(const std::string& source, const std::vector<float>& params = {}, const std::string& name = "") {
+  DiagnosticLog log;
+  auto tape = compileFieldUnit("f.pfl", source, name, params, log);
+  EXPECT_FALSE(tape);
+  return log.format();
+}
+
+size_t countOps(const FieldTape& t, FieldOp op) {
+  size_t n = 0;
+  for (const FieldInstr& in : t.instrs) n += in.op == op;
+  return n;
+}
+
+// Compares a tape with a double formula at random points of [-2, 2]^3.
+template <class Formula>
+void expectMatches(const FieldTape& tape, Formula formula, double tolerance = 1e-5) {
+  ASSERT_FALSE(tape.instrs.empty());
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-2.0, 2.0);
+  for (int i = 0; i < 2000; ++i) {
+    const double x = static_cast<float>(u(rng)), y = static_cast<float>(u(rng)), z = static_cast<float>(u(rng));
+    const double want = formula(x, y, z);
+    const double got = testing::evaluateDouble(tape, x, y, z);
+    ASSERT_NEAR(got, want, tolerance * (1.0 + std::fabs(want))) << "at (" << x << ", " << y << ", " << z << ")";
+  }
+}
+
+TEST(FieldUnit, LoopsAndCallsUnrollIntoTheFormula) {
+  // Three spheres of radius r along x, unioned with max; a function and a loop on constants.
+  const FieldTape t = compileOk(R"(
+float sphere_at(point p, point c, float r) {
+    vector d = vector(p.x - c.x, p.y - c.y, p.z - c.z);
+    return r * r - dot(d, d);
+}
+field float beads(point p, float r) {
+    float f = -1.0e9;
+    for (float i = -1.0; i <= 1.0; i += 1.0) {
+        f = max(f, sphere_at(p, point(i, 0.0, 0.0), r));
+    }
+    return f;
+}
+)", {0.6f});
+  expectMatches(t, [](double x, double y, double z) {
+    double f = -1e9;
+    for (double c = -1; c <= 1; c += 1) f = std::max(f, 0.36 - ((x - c) * (x - c) + y * y + z * z));
+    return f;
+  }, 1e-6);
+  EXPECT_EQ(countOps(t, FieldOp::Max), 3u);  // unrolled: max(max(max(-1e9, s0), s1), s2)
+}
+
+TEST(FieldUnit, BranchesOnParametersAreDecidedWhenCompiled) {
+  const std::string source = R"(
+field float pick(point p, float which) {
+    if (which > 0.5) {
+        return 1.0 - length(p);
+    }
+    return 1.0 - max(abs(p.x), max(abs(p.y), abs(p.z)));
+}
+)";
+  expectMatches(compileOk(source, {1.0f}), [](double x, double y, double z) { return 1 - std::sqrt(x * x + y * y + z * z); });
+  expectMatches(compileOk(source, {0.0f}), [](double x, double y, double z) {
+    return 1 - std::max(std::fabs(x), std::max(std::fabs(y), std::fabs(z)));
+  });
+}
+
+TEST(FieldUnit, PowTanAndTheOtherTapeOperations) {
+  const FieldTape t = compileOk(R"(
+field float mixed(point p) {
+    float a = pow(p.x, 3.0) - pow(p.y, -2.0);
+    float b = pow(abs(p.z) + 1.0, 0.5) * exp(-p.x * p.x) + log(p.y * p.y + 1.0);
+    return a + b + tan(p.z * 0.3) - sin(p.x) * cos(p.y) / (1.0 + sqrt(abs(p.z)));
+}
+)");
+  expectMatches(t, [](double x, double y, double z) {
+    const double a = x * x * x - 1.0 / (y * y);
+    const double b = std::pow(std::fabs(z) + 1.0, 0.5) * std::exp(-x * x) + std::log(y * y + 1.0);
+    return a + b + std::tan(z * 0.3) - std::sin(x) * std::cos(y) / (1.0 + std::sqrt(std::fabs(z)));
+  }, 2e-5);
+  EXPECT_EQ(countOps(t, FieldOp::Exp), 2u);  // exp(-x^2), and pow(., 0.5) as exp(0.5 log .)
+}
+
+TEST(FieldUnit, ChoosesTheFieldByName) {
+  const std::string source = "field float a(point p) { return p.x; }\nfield float b(point p) { return p.y; }\n";
+  expectMatches(compileOk(source, {}, "b"), [](double, double y, double) { return y; }, 0.0);
+  EXPECT_NE(compileError(source).find("f.pfl:1:1: error: the source defines several fields ('a', 'b'): name the one"),
+            std::string::npos);
+  EXPECT_NE(compileError(source, {}, "c").find("no field named 'c' (its fields: 'a', 'b')"), std::string::npos);
+  EXPECT_NE(compileError("float g(float x) { return x; }\n").find("the source defines no field"), std::string::npos);
+}
+
+TEST(FieldUnit, FieldIsStillAnIdentifierOutsideUnitHeads) {
+  // The implicit primitive has a parameter named `field`; a variable may be named so too.
+  const FieldTape t = compileOk("field float f(point p) { float field = p.z * 2.0; return field; }\n");
+  expectMatches(t, [](double, double, double z) { return 2 * z; }, 0.0);
+}
+
+struct BadField {
+  const char* source;
+  std::vector<float> params;
+  const char* expected;
+};
+
+TEST(FieldUnit, WhatATapeCannotHoldIsAnErrorAtItsLine) {
+  const BadField cases[] = {
+      {"field float f(point p) {\n  if (p.x > 0.0) { return 1.0; }\n  return -1.0;\n}\n", {},
+       "f.pfl:2:3: error: this 'if' condition depends on the field's point"},
+      {"field float f(point p) {\n  return p.x > 0.0 ? 1.0 : p.y;\n}\n", {}, "f.pfl:2:20: error: this choice (?:) depends on the field's point"},
+      {"field float f(point p) {\n  return floor(p.x);\n}\n", {}, "f.pfl:2:10: error: 'floor (and fract, mod)' of a value that depends on the field's point has no tape form"},
+      {"field float f(point p) {\n  return atan2(p.x, p.y);\n}\n", {}, "error: 'atan2' of a value that depends on the field's point"},
+      {"field float f(point p) {\n  return noise(p);\n}\n", {}, "error: 'noise' of a value"},
+      {"field float f(point p) {\n  float s = 0.0;\n  while (s < p.x) { s += 1.0; }\n  return s;\n}\n", {},
+       "f.pfl:3:3: error: this loop's condition depends on the field's point"},
+      {"field float f(point p) {\n  float s = 0.0;\n  while (true) { s += 1.0; }\n  return s;\n}\n", {},
+       "f.pfl:3:3: error: field 'f' runs its loops more than 1000000 times while it is compiled"},
+      {"field float f(point p) {\n  return X;\n}\n", {}, "f.pfl:2:10: error: 'X' is a pixel's built-in, which a field does not see"},
+      {"float g(float a) { return a + X; }\nfield float f(point p) {\n  return g(p.x);\n}\n", {},
+       "error: this reads a pixel's built-in (X, Y, Z, P or N) through a function"},
+      {"field float f(float x) { return x; }\n", {}, "f.pfl:1:21: error: a field's first parameter is the point"},
+      {"field vector f(point p) { return vector(p.x, 0.0, 0.0); }\n", {}, "error: field 'f' must return float"},
+      {"field float f(point p, int n) { return p.x; }\n", {}, "error: a field's parameters after its point are numbers"},
+      {"field float f(point p, float r) { return r - p.x; }\n", {}, "f.pfl:1:1: error: field 'f' takes 1 parameter value after its point; 0 given"},
+      {"field float f(point p) { float a = p.x; }\n", {}, "error: field 'f' can reach its end without returning a float"},
+      {"field float f(point p) { bound(0.0, 0.0, 1.0, 1.0); return p.x; }\n", {}, "'bound' is only allowed in a primitive"},
+      {"field float f(point p) { return field_hit(0.0, p, p, 0, 0.0); }\n", {}, "error: field_hit() is only available in a primitive"},
+  };
+  for (const BadField& c : cases) {
+    const std::string log = compileError(c.source, c.params);
+    EXPECT_NE(log.find(c.expected), std::string::npos) << c.source << "\n--- gave:\n" << log;
+  }
+}
+
+}  // namespace
+}  // namespace pf::field
