@@ -26,8 +26,7 @@
 #include <thread>
 #include <vector>
 
-#include "compiler/field/fidget_reader.h"
-#include "compiler/field/hyperfun_reader.h"
+#include "compiler/field/field_source.h"
 #include "field/field_reference.h"
 #include "model/model_file.h"
 #include "raster/field/gradient_evaluator.h"
@@ -224,9 +223,8 @@ int main(int argc, char** argv) {
       return 1;
     }
     pf::DiagnosticLog log;
-    const pf::field::FieldTape tape = m.format == pf::model::ModelFormat::HyperFun
-                                          ? *pf::field::readHyperFunModel(file, m.text, log, {}, "my_model", time)
-                                          : *pf::field::readFidgetModel(file, m.text, log);
+    const pf::field::FieldTape tape = *pf::field::compileFieldSource(
+        m.format, file, m.text, {}, m.format == pf::field::FieldFormat::HyperFun ? time : 0.0, log);
     const std::string name = std::filesystem::path(file).stem().string();
     // The tanglecube's file suggests --scale 0.222: its surface spans about [-3, 3]^3.
     if (name == "tanglecube") {

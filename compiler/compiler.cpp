@@ -122,7 +122,7 @@ bool compileSource(const std::string& filename, const std::string& text, Compile
   if (!analyzeSource(filename, text, log, program, signatures, emit, listing)) return false;
   std::map<std::string, const Unit*> functions;
   for (const Unit& u : program.units)
-    if (u.kind == UnitKind::Function) functions[u.name] = &u;
+    if (u.kind == UnitKind::Function || u.kind == UnitKind::Field) functions[u.name] = &u;
   for (const Unit& u : program.units) {
     // Functions are inlined where called; fields become tapes (compileFieldUnit), not programs.
     if (u.kind == UnitKind::Function || u.kind == UnitKind::Field) continue;

@@ -901,7 +901,8 @@ bool analyze(Program& program, DiagnosticLog& log, const std::map<std::string, P
   std::set<std::string> names;
   for (Unit& u : program.units) {
     if (!names.insert(u.name).second) log.error(u.loc, "'" + u.name + "' is defined twice");
-    if (u.kind != UnitKind::Function) continue;
+    // A field is callable as a function too: another field (or a primitive) may evaluate it.
+    if (u.kind != UnitKind::Function && u.kind != UnitKind::Field) continue;
     if (isBuiltinName(u.name)) log.error(u.loc, "'" + u.name + "' is the name of a built-in function");
     functions.units[u.name] = &u;
   }

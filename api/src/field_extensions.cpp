@@ -6,8 +6,7 @@
 #include <primflow/gl.h>
 
 #include "api/src/context_state.h"
-#include "compiler/field/fidget_reader.h"
-#include "compiler/field/hyperfun_reader.h"
+#include "compiler/field/field_source.h"
 
 using pf::currentContext;
 
@@ -21,20 +20,23 @@ GLuint pfglCompileFieldParamsEXT(GLenum format, const GLchar* name, const GLchar
     ctx->setError(GL_INVALID_OPERATION);
     return 0;
   }
-  if (format != GL_FIELD_FIDGET_EXT && format != GL_FIELD_HYPERFUN_EXT) {
+  if (format != GL_FIELD_FIDGET_EXT && format != GL_FIELD_HYPERFUN_EXT && format != GL_FIELD_LANGUAGE_EXT) {
     ctx->setError(GL_INVALID_ENUM);
     return 0;
   }
   if (!source || !name || !(lipschitz >= 0.0f) || !std::isfinite(lipschitz) || !std::isfinite(time) || count < 0 ||
-      (count > 0 && !params) || (format == GL_FIELD_FIDGET_EXT && (time != 0.0 || count != 0))) {
+      (count > 0 && !params) || (format == GL_FIELD_FIDGET_EXT && (time != 0.0 || count != 0)) ||
+      (format == GL_FIELD_LANGUAGE_EXT && time != 0.0)) {
     ctx->setError(GL_INVALID_VALUE);
     return 0;
   }
   pf::DiagnosticLog log;
+  using pf::field::FieldFormat;
+  const FieldFormat f = format == GL_FIELD_FIDGET_EXT     ? FieldFormat::Fidget
+                        : format == GL_FIELD_HYPERFUN_EXT ? FieldFormat::HyperFun
+                                                          : FieldFormat::Language;
   std::optional<pf::field::FieldTape> tape =
-      format == GL_FIELD_FIDGET_EXT
-          ? pf::field::readFidgetModel(name, source, log)
-          : pf::field::readHyperFunModel(name, source, log, std::vector<double>(params, params + count), "my_model", time);
+      pf::field::compileFieldSource(f, name, source, std::vector<double>(params, params + count), time, log);
   if (!tape) {
     ctx->field_failed_log = log.format();
     return 0;

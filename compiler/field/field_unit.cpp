@@ -269,6 +269,7 @@ std::optional<FieldTape> compileFieldUnit(const std::string& filename, const std
     field = fields.begin()->second;
   } else {
     auto it = fields.find(name);
+    if (it == fields.end() && fields.size() == 1) it = fields.begin();  // a source of one field
     if (it == fields.end()) {
       log.error(start, "the source defines no field named '" + name + "'" +
                            (names.empty() ? std::string() : " (its fields: " + names + ")"));
@@ -284,7 +285,7 @@ std::optional<FieldTape> compileFieldUnit(const std::string& filename, const std
   }
   std::map<std::string, const Unit*> functions;
   for (const Unit& u : program.units)
-    if (u.kind == UnitKind::Function) functions[u.name] = &u;
+    if (u.kind == UnitKind::Function || u.kind == UnitKind::Field) functions[u.name] = &u;
   IrFunction ir;
   if (!lowerField(*field, functions, ir, log)) return std::nullopt;
   optimize(ir);

@@ -28,7 +28,7 @@ constexpr long kMaxFieldLoopIterations = 1'000'000;
 constexpr size_t kMaxFieldTapeSize = 1u << 20;
 
 // Compiles field `name` of language source `text` (named `filename` in diagnostics) to a tape;
-// an empty `name` takes the source's only field. `params` give the values of the field's
+// a source with one field compiles that one whatever `name` says (an empty name included). `params` give the values of the field's
 // parameters after its point, in order. nullopt with errors (file:line:col, caret) in `log`.
 std::optional<FieldTape> compileFieldUnit(const std::string& filename, const std::string& text,
                                           const std::string& name, const std::vector<float>& params,

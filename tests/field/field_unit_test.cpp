@@ -110,6 +110,16 @@ TEST(FieldUnit, ChoosesTheFieldByName) {
   EXPECT_NE(compileError("float g(float x) { return x; }\n").find("the source defines no field"), std::string::npos);
 }
 
+TEST(FieldUnit, FieldsCallFieldsWithTheirParameters) {
+  const std::string source = R"(
+field float ball(point p, float r) { return r - length(p); }
+field float pair(point p) { return max(ball(hfShift3D(p, 0.5, 0.0, 0.0), 0.4), ball(p, 0.2)); }
+)";
+  expectMatches(compileOk(source, {}, "pair"), [](double x, double y, double z) {
+    return std::max(0.4 - std::sqrt((x - 0.5) * (x - 0.5) + y * y + z * z), 0.2 - std::sqrt(x * x + y * y + z * z));
+  });
+}
+
 TEST(FieldUnit, FieldIsStillAnIdentifierOutsideUnitHeads) {
   // The implicit primitive has a parameter named `field`; a variable may be named so too.
   const FieldTape t = compileOk("field float f(point p) { float field = p.z * 2.0; return field; }\n");

@@ -102,7 +102,7 @@ TEST(Model, HyperFunModelsReadTheTime) {
                                     "  my_model = hfSphere(p, c, 0.5 + x[4]);\n}\n");
   for (double time : {0.0, 0.25}) {
     const pf::model::Model m = pf::model::loadModel(path, time);
-    EXPECT_EQ(m.format, pf::model::ModelFormat::HyperFun);
+    EXPECT_EQ(m.format, pf::field::FieldFormat::HyperFun);
     const int n = 32;
     pf::test::GlContext gl(n, n);
     pf::model::ModelView v;
@@ -128,6 +128,41 @@ TEST(Model, HyperFunModelsReadTheTime) {
       }
     EXPECT_GT(hits, 100);
   }
+}
+
+// A language field file (.pfl) holding two fields: the one named as the file is drawn -- a torus
+// around z (HyperFun's library, a quartic: the analytic method), --ortho depth against the formula.
+TEST(Model, LanguageFieldsAreDrawnByTheirFileName) {
+  const std::string path = writeTemp(
+      "pf_model_ring.pfl",
+      "field float other(point p) { return 1.0 - length(p); }\n"
+      "field float pf_model_ring(point p) { return hfTorusZ(p, point(0.0, 0.0, 0.0), 0.6, 0.3); }\n");
+  const pf::model::Model m = pf::model::loadModel(path);
+  EXPECT_EQ(m.format, pf::field::FieldFormat::Language);
+  EXPECT_EQ(m.default_box_max, glm::dvec3(2.0));
+  const int n = 40;
+  pf::test::GlContext gl(n, n);
+  pf::model::ModelView v;
+  v.width = v.height = n;
+  v.ortho = true;
+  v.box_min = glm::dvec3(-1.0);
+  v.box_max = glm::dvec3(1.0);
+  pf::model::drawModel(m, v);
+  const std::vector<float> z = pf::model::worldDepth(m, v, depthOf(gl));
+  int hits = 0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double x = -1 + (i + 0.5) * 2.0 / n, y = -1 + (j + 0.5) * 2.0 / n;
+      const double ring = std::sqrt(x * x + y * y) - 0.6, h2 = 0.09 - ring * ring;
+      if (std::fabs(h2) < 1e-3) continue;
+      const float got = z[size_t(j) * n + i];
+      ASSERT_EQ(!std::isnan(got), h2 > 0) << i << ", " << j;
+      if (h2 > 0) {
+        EXPECT_NEAR(got, std::sqrt(h2), 5e-6);
+        ++hits;
+      }
+    }
+  EXPECT_GT(hits, 300);
 }
 
 TEST(Model, PfmIsLittleEndianBottomToTop) {
@@ -163,6 +198,9 @@ TEST(Model, BadModelsAreReportedWithFileLineAndColumn) {
                                           "  my_model = r;\n}\n"))
                 .find("pf_model.hf:2:6: error: condition depends on the point x"),
             std::string::npos);
+  const std::string bad_pfl = writeTemp("pf_bad_field.pfl", "field float f(point p) {\n  return p.x > 0.0 ? 1.0 : -1.0;\n}\n");
+  EXPECT_NE(error(bad_pfl).find("pf_bad_field.pfl:2:20: error: this choice (?:) depends on the field's point"),
+            std::string::npos) << error(bad_pfl);
 }
 
 }  // namespace

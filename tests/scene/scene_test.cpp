@@ -78,13 +78,19 @@ TEST(SceneErrors, NameTheFileLineAndKey) {
       {"{\"fields\": {\"f\": {\"fidget\": \"x var-x\\ny sqrt x x\\n\"}}, \"objects\": []}",
        "f:2:10: error: 'sqrt' takes 1 argument, found 2"},
       {"{\"fields\": {\"f\": {\"fidget\": \"x var-x\", \"file\": \"f.vm\"}}, \"objects\": []}",
-       "t.json:1: error: fields.f: a field has exactly one of \"file\", \"fidget\" or \"hyperfun\""},
+       "t.json:1: error: fields.f: a field has exactly one of \"file\", \"fidget\", \"hyperfun\" or \"language\""},
       {"{\"fields\": {\"f\": {\"file\": \"f.obj\"}}, \"objects\": []}",
-       "t.json:1: error: fields.f.file: 'f.obj': fields are read from Fidget .vm or HyperFun .hf files"},
+       "t.json:1: error: fields.f.file: 'f.obj': fields are read from Fidget .vm, HyperFun .hf or language .pfl files"},
       {"{\"fields\": {\"f\": {\"hyperfun\": \"my_model(x[3], a[1]) {\\n my_model = hfFoo(x);\\n}\"}}, \"objects\": []}",
        "f:2:13: error: unknown function 'hffoo'"},
       {"{\"fields\": {\"f\": {\"fidget\": \"x var-x\", \"time\": 1}}, \"objects\": []}",
-       "t.json:1: error: fields.f: \"time\" and \"params\" are for HyperFun models"},
+       "t.json:1: error: fields.f: \"time\" and \"params\" are for HyperFun and language fields"},
+      {"{\"fields\": {\"ball\": {\"language\": \"field float ball(point p, float r) {\\n  return r - length(p);\\n}\", \"time\": 1}},"
+       " \"objects\": []}",
+       "t.json:1: error: fields.ball: \"time\" is HyperFun's x[4]: a language field takes its values through \"params\""},
+      {"{\"fields\": {\"ball\": {\"language\": \"field float ball(point p, float r) {\\n  return r - X;\\n}\", \"params\": [1]}},"
+       " \"objects\": []}",
+       "ball:2:14: error: 'X' is a pixel's built-in, which a field does not see"},
       {"{\"fields\": {\"f\": {\"hyperfun\": \"my_model(x[3], a[1]) { my_model = a[1]; }\", \"params\": [1, 2]}},"
        " \"objects\": []}",
        "f:1:16: error: 2 parameters given, but 'my_model' has a[1]"},

@@ -86,36 +86,70 @@ void drawImplicit(GLuint field, float method, float steps) {
   pfglEnd();
 }
 
+// Draws `field` with `method` and checks coverage and window depth against the double sphere.
+void expectSphereImage(const pf::test::GlContext& gl, GLuint field, float method) {
+  loadMatrices();
+  pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  pfglEnable(GL_DEPTH_TEST);
+  pfglColor3f(0.2f, 0.8f, 0.4f);
+  drawImplicit(field, method, method == 3.0f ? 128.0f : 0.0f);
+  pfglFinish();
+  ASSERT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  const float* depth = gl.depth();
+  int judged = 0, hits = 0;
+  double max_err = 0;
+  for (int y = 0; y < kN; ++y)
+    for (int x = 0; x < kN; ++x) {
+      const double want = sphereDepth(x, y);
+      if (want == -2) continue;
+      ++judged;
+      const bool drawn = gl.at(x, y)[1] != 0;
+      ASSERT_EQ(drawn, want >= 0) << "pixel " << x << ", " << y;
+      if (!drawn) continue;
+      ++hits;
+      max_err = std::max(max_err, std::fabs(depth[y * kN + x] - want));
+    }
+  std::printf("implicit method %g: %d judged, %d hits, max window-depth error %.3g\n", method, judged, hits, max_err);
+  EXPECT_GT(hits, 400);
+  EXPECT_LT(max_err, 2e-6);
+}
+
 TEST(Implicit, EveryMethodMatchesRayCastsInDouble) {
   for (float method : {0.0f, 1.0f, 2.0f, 3.0f, 4.0f}) {
     SCOPED_TRACE(method);
     pf::test::GlContext gl(kN, kN);
-    const GLuint field = compileSphere();
-    loadMatrices();
-    pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    pfglEnable(GL_DEPTH_TEST);
-    pfglColor3f(0.2f, 0.8f, 0.4f);
-    drawImplicit(field, method, method == 3.0f ? 128.0f : 0.0f);
-    pfglFinish();
-    ASSERT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
-    const float* depth = gl.depth();
-    int judged = 0, hits = 0;
-    double max_err = 0;
-    for (int y = 0; y < kN; ++y)
-      for (int x = 0; x < kN; ++x) {
-        const double want = sphereDepth(x, y);
-        if (want == -2) continue;
-        ++judged;
-        const bool drawn = gl.at(x, y)[1] != 0;
-        ASSERT_EQ(drawn, want >= 0) << "pixel " << x << ", " << y;
-        if (!drawn) continue;
-        ++hits;
-        max_err = std::max(max_err, std::fabs(depth[y * kN + x] - want));
-      }
-    std::printf("implicit method %g: %d judged, %d hits, max window-depth error %.3g\n", method, judged, hits, max_err);
-    EXPECT_GT(hits, 400);
-    EXPECT_LT(max_err, 2e-6);
+    expectSphereImage(gl, compileSphere(), method);
   }
+}
+
+// The same sphere as a field unit of the language whose radius is its parameter (HyperFun's
+// library: hfSphere), drawn by the polynomial (auto) and the interval method.
+TEST(Implicit, LanguageFieldsTakeTheirParameters) {
+  const char* source =
+      "field float other(point p) { return p.x; }\n"
+      "field float ball(point p, float r) { return hfSphere(p, point(0.0, 0.0, 0.0), r); }\n";
+  for (float method : {0.0f, 2.0f}) {
+    SCOPED_TRACE(method);
+    pf::test::GlContext gl(kN, kN);
+    const GLdouble radius = kRadius;
+    const GLuint field = pfglCompileFieldParamsEXT(GL_FIELD_LANGUAGE_EXT, "ball", source, 0.0f, 0.0, 1, &radius);
+    ASSERT_NE(field, 0u);
+    expectSphereImage(gl, field, method);
+  }
+  pf::test::GlContext gl(8, 8);
+  char log[1024];
+  EXPECT_EQ(pfglCompileFieldParamsEXT(GL_FIELD_LANGUAGE_EXT, "ball", source, 0.0f, 0.0, 0, nullptr), 0u);
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  pfglGetFieldLogEXT(0, sizeof log, nullptr, log);
+  EXPECT_NE(std::string(log).find("ball:2:1: error: field 'ball' takes 1 parameter value after its point; 0 given"),
+            std::string::npos) << log;
+  EXPECT_EQ(pfglCompileFieldEXT(GL_FIELD_LANGUAGE_EXT, "f", "field float f(point p) {\n  return floor(p.x);\n}\n", 0.0f), 0u);
+  pfglGetFieldLogEXT(0, sizeof log, nullptr, log);
+  EXPECT_NE(std::string(log).find("f:2:10: error: 'floor (and fract, mod)' of a value that depends on the field's point"),
+            std::string::npos) << log;
+  const GLdouble one = 1.0;  // a language field has no time
+  EXPECT_EQ(pfglCompileFieldParamsEXT(GL_FIELD_LANGUAGE_EXT, "ball", source, 0.0f, 0.5, 1, &one), 0u);
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_INVALID_VALUE));
 }
 
 // The plane x = 0 of object space as a GL quad, red, through the sphere (green): each pixel

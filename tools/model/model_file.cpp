@@ -11,15 +11,10 @@
 #include <limits>
 #include <sstream>
 
-#include "compiler/field/fidget_reader.h"
-#include "compiler/field/hyperfun_reader.h"
 
 namespace pf::model {
 
-bool isModelPath(const std::string& path) {
-  const std::string ext = std::filesystem::path(path).extension().string();
-  return ext == ".vm" || ext == ".hf";
-}
+bool isModelPath(const std::string& path) { return field::fieldFormatOfPath(path).has_value(); }
 
 Model loadModel(const std::string& path, double time) {
   std::ifstream in(path, std::ios::binary);
@@ -31,22 +26,26 @@ Model loadModel(const std::string& path, double time) {
   m.text = ss.str();
   // Checked here, before any drawing, so that a bad file is reported with its line.
   DiagnosticLog log;
-  std::optional<field::FieldTape> tape;
-  if (std::filesystem::path(path).extension() == ".hf") {
-    m.format = ModelFormat::HyperFun;
-    m.default_box_min = glm::dvec3(-10.0);  // HyperFun's polygonizer's default box
-    m.default_box_max = glm::dvec3(10.0);
-    tape = field::readHyperFunModel(path, m.text, log, {}, "my_model", time);
-  } else {
-    tape = field::readFidgetModel(path, m.text, log);
+  m.format = field::fieldFormatOfPath(path).value_or(field::FieldFormat::Fidget);
+  if (m.format != field::FieldFormat::Fidget) {
+    // HyperFun's polygonizer's default box; a language field's, a little past the unit cube.
+    const double half = m.format == field::FieldFormat::HyperFun ? 10.0 : 2.0;
+    m.default_box_min = glm::dvec3(-half);
+    m.default_box_max = glm::dvec3(half);
   }
+  const std::optional<field::FieldTape> tape = field::compileFieldSource(m.format, path, m.text, {}, time, log);
   if (!tape) throw ModelError(log.format());
   m.two_dimensional = !tape->usesZ();
   return m;
 }
 
 GLenum fieldFormatOf(const Model& m) {
-  return m.format == ModelFormat::HyperFun ? GL_FIELD_HYPERFUN_EXT : GL_FIELD_FIDGET_EXT;
+  switch (m.format) {
+    case field::FieldFormat::HyperFun: return GL_FIELD_HYPERFUN_EXT;
+    case field::FieldFormat::Language: return GL_FIELD_LANGUAGE_EXT;
+    case field::FieldFormat::Fidget: break;
+  }
+  return GL_FIELD_FIDGET_EXT;
 }
 
 namespace {
@@ -91,7 +90,7 @@ void loadMatrix(GLenum mode, const glm::dmat4& m) {
 
 void drawModel(const Model& model, const ModelView& view) {
   const GLuint field = pfglCompileFieldParamsEXT(fieldFormatOf(model), model.path.c_str(), model.text.c_str(), 0.0f,
-                                                 model.format == ModelFormat::HyperFun ? view.time : 0.0, 0, nullptr);
+                                                 model.format == field::FieldFormat::HyperFun ? view.time : 0.0, 0, nullptr);
   if (field == 0) {
     char log[4096];
     pfglGetFieldLogEXT(0, sizeof log, nullptr, log);
@@ -146,7 +145,8 @@ scene::Scene sceneOfModel(const Model& model, const ModelView& view) {
   s.height = view.height;
   s.background = {0.0, 0.0, 0.0, 1.0};
   const std::string name = std::filesystem::path(model.path).stem().string();
-  s.fields.push_back({name, model.path, model.text, {}, model.format == ModelFormat::HyperFun, view.time, {}});
+  s.fields.push_back({name, model.path, model.text, {}, model.format,
+                      model.format == field::FieldFormat::HyperFun ? view.time : 0.0, {}});
   const glm::dvec3 lo = view.box_min, hi = view.box_max, centre = 0.5 * (lo + hi);
   const double radius = 0.5 * glm::length(hi - lo);
   scene::Camera& c = s.camera;

@@ -1,4 +1,5 @@
-// Models as pfrender and pfview open them: a Fidget .vm or HyperFun .hf file, compiled into the
+// Models as pfrender and pfview open them: a Fidget .vm, HyperFun .hf or language .pfl file (its
+// one `field` unit, or the one named as the file), compiled into the
 // current context as a field (pfglCompileFieldEXT) and drawn through the public API as an
 // `implicit` instance, with the camera the model command line describes (issue #8's contract):
 // HyperFun models are read as docs/hyperfun.md says, at the view's time (x[4]).
@@ -17,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "compiler/field/field_source.h"
 #include "scene/scene.h"
 
 namespace pf::model {
@@ -27,20 +29,19 @@ struct ModelError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-enum class ModelFormat { Fidget, HyperFun };
-
 struct Model {
   std::string path;
-  ModelFormat format = ModelFormat::Fidget;
+  field::FieldFormat format = field::FieldFormat::Fidget;
   std::string text;
   bool two_dimensional = false;  // reads no z: drawn as a coverage image
-  glm::dvec3 default_box_min{-1.0}, default_box_max{1.0};  // [-1, 1]^3 (.vm), [-10, 10]^3 (.hf)
+  // [-1, 1]^3 (.vm), [-10, 10]^3 (.hf, HyperFun's polygonizer's), [-2, 2]^3 (.pfl)
+  glm::dvec3 default_box_min{-1.0}, default_box_max{1.0};
 };
 
-// Whether pfrender treats `path` as a model (by its extension: .vm, .hf).
+// Whether pfrender treats `path` as a model (by its extension: .vm, .hf, .pfl).
 bool isModelPath(const std::string& path);
 
-// GL_FIELD_FIDGET_EXT or GL_FIELD_HYPERFUN_EXT.
+// GL_FIELD_FIDGET_EXT, GL_FIELD_HYPERFUN_EXT or GL_FIELD_LANGUAGE_EXT.
 GLenum fieldFormatOf(const struct Model& m);
 
 // Reads and checks a model file (throws ModelError), a HyperFun one at `time`.

@@ -6,8 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "compiler/field/fidget_reader.h"
-#include "compiler/field/hyperfun_reader.h"
+#include "compiler/field/field_source.h"
 #include "field/field_reference.h"
 
 namespace pf::view {
@@ -22,10 +21,8 @@ std::string AccuracyFigure::text() const {
 AccuracyProbe::AccuracyProbe(const model::Model& model, const model::ModelView& view)
     : box_min_(view.box_min), box_max_(view.box_max) {
   DiagnosticLog log;
-  const std::optional<field::FieldTape> tape =
-      model.format == model::ModelFormat::HyperFun
-          ? field::readHyperFunModel(model.path, model.text, log, {}, "my_model", view.time)
-          : field::readFidgetModel(model.path, model.text, log);
+  const std::optional<field::FieldTape> tape = field::compileFieldSource(
+      model.format, model.path, model.text, {}, model.format == field::FieldFormat::HyperFun ? view.time : 0.0, log);
   if (!tape) throw model::ModelError(log.format());
   tape_ = *tape;
 }

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "compiler/field/field_source.h"
+
 namespace pf::scene {
 
 // A bad scene: the message names the file, the line and the key ("FILE:LINE: error: KEY: ...").
@@ -58,9 +60,9 @@ struct FieldSource {
   std::string file;  // as named in messages (the file, or the scene's key for inline text)
   std::string text;
   Origin origin;
-  bool hyperfun = false;       // a HyperFun model (else Fidget)
+  field::FieldFormat format = field::FieldFormat::Fidget;
   double time = 0.0;           // HyperFun: x[4]
-  std::vector<double> params;  // HyperFun: a[1], a[2], ...
+  std::vector<double> params;  // HyperFun: a[1], a[2], ...; a language field's parameters after p
 };
 
 struct Material {

@@ -15,8 +15,7 @@
 #include "scene/obj_mesh.h"
 #include "scene/scene.h"
 
-#include "compiler/field/fidget_reader.h"
-#include "compiler/field/hyperfun_reader.h"
+#include "compiler/field/field_source.h"
 
 namespace pf::scene {
 
@@ -335,38 +334,47 @@ Object readObject(const Reader& r, const json& j, const std::string& p, const Sc
 
 }  // namespace
 
-// "fields": name -> {"file": "model.vm" or "model.hf"}, {"fidget": "inline .vm text"} or
-// {"hyperfun": "inline .hf text"}, with "time" and "params" for HyperFun models. Each is read
-// and checked now, so that a bad model is reported with its own file, line and column.
+// "fields": name -> {"file": "model.vm", "model.hf" or "model.pfl"}, or inline text as
+// {"fidget": ...}, {"hyperfun": ...} or {"language": ...}; "time" (HyperFun's x[4]) and "params"
+// (HyperFun's a[], a language field's parameters after its point). A language source's field is
+// the unit named as the scene's field, or its only one. Each is read and checked now, so that a
+// bad model is reported with its own file, line and column.
 void readFields(const Reader& r, const json& j, Scene& s) {
-  if (!j.is_object()) r.fail("/fields", "expected an object: name -> {\"file\": ...}, {\"fidget\": ...} or {\"hyperfun\": ...}");
+  using field::FieldFormat;
+  const char* const shape = "name -> {\"file\": ...}, {\"fidget\": ...}, {\"hyperfun\": ...} or {\"language\": ...}";
+  if (!j.is_object()) r.fail("/fields", std::string("expected an object: ") + shape);
   for (const auto& [name, f] : j.items()) {
     const std::string p = "/fields/" + pointerToken(name);
-    r.onlyKeys(f, p, {"file", "fidget", "hyperfun", "time", "params"});
-    if (f.contains("file") + f.contains("fidget") + f.contains("hyperfun") != 1)
-      r.fail(p, "a field has exactly one of \"file\", \"fidget\" or \"hyperfun\" (inline text)");
-    FieldSource src{name, name, {}, r.origin(p), false, 0.0, {}};
+    r.onlyKeys(f, p, {"file", "fidget", "hyperfun", "language", "time", "params"});
+    if (f.contains("file") + f.contains("fidget") + f.contains("hyperfun") + f.contains("language") != 1)
+      r.fail(p, "a field has exactly one of \"file\", \"fidget\", \"hyperfun\" or \"language\" (inline text)");
+    FieldSource src{name, name, {}, r.origin(p), FieldFormat::Fidget, 0.0, {}};
     if (f.contains("file")) {
       src.file = r.relativePath(r.string(f["file"], p + "/file"), p + "/file");
-      const std::string ext = std::filesystem::path(src.file).extension().string();
-      if (ext != ".vm" && ext != ".hf")
-        r.fail(p + "/file", "'" + src.file + "': fields are read from Fidget .vm or HyperFun .hf files");
-      src.hyperfun = ext == ".hf";
+      const std::optional<FieldFormat> format = field::fieldFormatOfPath(src.file);
+      if (!format)
+        r.fail(p + "/file", "'" + src.file + "': fields are read from Fidget .vm, HyperFun .hf or language .pfl files");
+      src.format = *format;
       bool ok = false;
       src.text = readFile(src.file, ok);
       if (!ok) r.fail(p + "/file", "cannot read '" + src.file + "'");
     } else {
-      src.hyperfun = f.contains("hyperfun");
-      src.text = r.string(f[src.hyperfun ? "hyperfun" : "fidget"], p + (src.hyperfun ? "/hyperfun" : "/fidget"));
+      const char* key = f.contains("fidget") ? "fidget" : f.contains("hyperfun") ? "hyperfun" : "language";
+      src.format = f.contains("fidget") ? FieldFormat::Fidget : f.contains("hyperfun") ? FieldFormat::HyperFun : FieldFormat::Language;
+      src.text = r.string(f[key], p + "/" + key);
     }
-    if (!src.hyperfun && (f.contains("time") || f.contains("params")))
-      r.fail(p, "\"time\" and \"params\" are for HyperFun models; Fidget models have neither");
+    if (src.format == FieldFormat::Fidget && (f.contains("time") || f.contains("params")))
+      r.fail(p, "\"time\" and \"params\" are for HyperFun and language fields; Fidget models have neither");
+    if (src.format == FieldFormat::Language && f.contains("time"))
+      r.fail(p, "\"time\" is HyperFun's x[4]: a language field takes its values through \"params\"");
     if (f.contains("time")) src.time = r.number(f["time"], p + "/time");
     if (f.contains("params")) src.params = r.numbers(f["params"], p + "/params", 1, 1000);
     DiagnosticLog log;
-    const bool ok = src.hyperfun ? field::readHyperFunModel(src.file, src.text, log, src.params, "my_model", src.time).has_value()
-                                 : field::readFidgetModel(src.file, src.text, log).has_value();
-    if (!ok) throw SceneError(log.format());
+    // A language field is chosen by the scene's name for it, as drawing (the API) does; the
+    // diagnostics name the file.
+    const std::string unit = std::filesystem::path(name).stem().string();
+    if (!field::compileFieldSource(src.format, src.file, src.text, src.params, src.time, log, unit))
+      throw SceneError(log.format());
     s.fields.push_back(std::move(src));
   }
 }

@@ -197,10 +197,14 @@ void pfglSequencePointEXT(void);
  *     flipped on reading.
  *   GL_FIELD_HYPERFUN_EXT -- a HyperFun model (.hf, docs/hyperfun.md); the object named
  *     "my_model", else the file's first.
+ *   GL_FIELD_LANGUAGE_EXT -- a `field` unit of the primitive language (.pfl, docs/language.md,
+ *     "Fields"; HyperFun's library is in it, docs/field_library.md): the unit named `name`
+ *     (a path's directories and extension left out), or the source's only field unit.
  * An unknown format: GL_INVALID_ENUM; NULL source or name: GL_INVALID_VALUE; inside glBegin /
  * glEnd: GL_INVALID_OPERATION. Fields live as long as the context. */
 #define GL_FIELD_FIDGET_EXT 0x31030
 #define GL_FIELD_HYPERFUN_EXT 0x31031
+#define GL_FIELD_LANGUAGE_EXT 0x31032
 /* The `method` parameter of the implicit primitive: how it finds the surface along a ray. */
 #define GL_FIELD_METHOD_AUTO_EXT 0     /* analytic if polynomial (degree <= 4), sphere if Lipschitz, else interval */
 #define GL_FIELD_METHOD_ANALYTIC_EXT 1 /* the ray polynomial's first root */
@@ -210,8 +214,10 @@ void pfglSequencePointEXT(void);
 GLuint pfglCompileFieldEXT(GLenum format, const GLchar *name, const GLchar *source, GLfloat lipschitz);
 /* pfglCompileFieldEXT with the model's parameters: for GL_FIELD_HYPERFUN_EXT, `time` is x[4] and
  * params[0 .. count-1] are a[1 .. count] (the rest of a[] is 0; more than a[] holds: the
- * compilation fails, with the message in the log). Fidget models have neither: time must be 0
- * and count 0 (else GL_INVALID_VALUE). count < 0, or count > 0 with NULL params: GL_INVALID_VALUE. */
+ * compilation fails, with the message in the log). For GL_FIELD_LANGUAGE_EXT, params are the
+ * values of the field's parameters after its point, in order (exactly as many as it declares,
+ * else the compilation fails, with the message in the log); time must be 0. Fidget models have
+ * neither: time must be 0 and count 0 (else GL_INVALID_VALUE). count < 0, or count > 0 with NULL params: GL_INVALID_VALUE. */
 GLuint pfglCompileFieldParamsEXT(GLenum format, const GLchar *name, const GLchar *source, GLfloat lipschitz,
                                  GLdouble time, GLsizei count, const GLdouble *params);
 /* As pfglGetCompileLogEXT, for fields: field 0 is the last failed compilation. */

@@ -1,0 +1,34 @@
+// Field sources by format (see field_source.h).
+#include "compiler/field/field_source.h"
+
+#include <filesystem>
+
+#include "compiler/field/fidget_reader.h"
+#include "compiler/field/field_unit.h"
+#include "compiler/field/hyperfun_reader.h"
+
+namespace pf::field {
+
+std::optional<FieldFormat> fieldFormatOfPath(const std::string& path) {
+  const std::string ext = std::filesystem::path(path).extension().string();
+  if (ext == ".vm") return FieldFormat::Fidget;
+  if (ext == ".hf") return FieldFormat::HyperFun;
+  if (ext == ".pfl") return FieldFormat::Language;
+  return std::nullopt;
+}
+
+std::optional<FieldTape> compileFieldSource(FieldFormat format, const std::string& name, const std::string& text,
+                                            const std::vector<double>& params, double time, DiagnosticLog& log,
+                                            const std::string& unit) {
+  switch (format) {
+    case FieldFormat::Fidget: return readFidgetModel(name, text, log);
+    case FieldFormat::HyperFun: return readHyperFunModel(name, text, log, params, "my_model", time);
+    case FieldFormat::Language: {
+      const std::vector<float> values(params.begin(), params.end());
+      return compileFieldUnit(name, text, unit.empty() ? std::filesystem::path(name).stem().string() : unit, values, log);
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace pf::field
