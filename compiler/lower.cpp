@@ -929,6 +929,12 @@ class Lowerer {
     }
     bool ints = result.base == BaseType::Int;
     size_t n = std::max(a.comps.size(), b.comps.size());
+    // point +/- vector: x, y, z move, w is the point's.
+    int point_w = -1;
+    if (result.base == BaseType::Point && std::min(a.comps.size(), b.comps.size()) == 3) {
+      point_w = (a.comps.size() == 4 ? a : b).comps[3];
+      n = 3;
+    }
     for (size_t k = 0; k < n; ++k) {
       int x = a.comps[a.comps.size() == 1 ? 0 : k];
       int y = b.comps[b.comps.size() == 1 ? 0 : k];
@@ -950,6 +956,7 @@ class Lowerer {
       }
       out.comps.push_back(emit(o, ints ? ValueClass::I32 : ValueClass::F32, false, x, y));
     }
+    if (point_w >= 0) out.comps.push_back(point_w);
     return out;
   }
 

@@ -758,6 +758,12 @@ class Analyzer {
     }
     if (op == "%") return bad();
     if (isAggregate(a) && a == b) return a;
+    // A point moved by a vector (or normal) is a point, its w unchanged.
+    const auto isDirection = [](const Type& t) {
+      return t == Type::of(BaseType::Vector) || t == Type::of(BaseType::Normal);
+    };
+    if (a == Type::of(BaseType::Point) && isDirection(b) && (op == "+" || op == "-")) return a;
+    if (isDirection(a) && b == Type::of(BaseType::Point) && op == "+") return b;
     if (isAggregate(a) && isNumericScalar(b) && (op == "*" || op == "/")) return a;
     if (isNumericScalar(a) && isAggregate(b) && op == "*") return b;
     if (isInterp(a) && isInterp(b) && (op == "+" || op == "-")) return a;

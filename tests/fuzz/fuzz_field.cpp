@@ -1,5 +1,6 @@
 // libFuzzer target for the field front ends and evaluators: the first byte picks the format
-// (even: Fidget .vm, odd: HyperFun .hf), the rest is the model's text. A model that compiles is
+// (modulo 3: Fidget .vm, HyperFun .hf, a language field unit -- '0', '1', '2' in the corpus), the
+// rest is the model's text. A model that compiles is
 // evaluated as floats, intervals (with tape simplification), gradients and ray polynomials at a
 // few points and boxes, and one 8x8 block of rays is cast by every method. Nothing may crash,
 // hang, or trip ASan/UBSan: a bad model is a diagnostic with file:line:col.
@@ -11,8 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "compiler/field/fidget_reader.h"
-#include "compiler/field/hyperfun_reader.h"
+#include "compiler/field/field_source.h"
 #include "raster/field/float_evaluator.h"
 #include "raster/field/gradient_evaluator.h"
 #include "raster/field/interval_evaluator.h"
@@ -21,11 +21,11 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size < 1 || size > 4 * 1024) return 0;
-  const bool hyperfun = data[0] % 2 == 1;
+  using pf::field::FieldFormat;
+  const FieldFormat format = data[0] % 3 == 0 ? FieldFormat::Fidget : data[0] % 3 == 1 ? FieldFormat::HyperFun : FieldFormat::Language;
   std::string text(reinterpret_cast<const char*>(data) + 1, size - 1);
   pf::DiagnosticLog log;
-  std::optional<pf::field::FieldTape> tape = hyperfun ? pf::field::readHyperFunModel("fuzz.hf", text, log)
-                                                      : pf::field::readFidgetModel("fuzz.vm", text, log);
+  std::optional<pf::field::FieldTape> tape = pf::field::compileFieldSource(format, "fuzz", text, {}, 0.0, log);
   if (!tape) {
     (void)log.format();
     return 0;

@@ -65,6 +65,17 @@ TEST(Builtins, ComponentwiseOverVectorsAndColours) {
                 });
 }
 
+// A point plus or minus a vector (or normal) is the moved point; w stays the point's.
+TEST(Builtins, PointsMoveByVectors) {
+  expectPerLane("  point q = point(X, Y, 1.0, 2.0) + vector(1.0, Y, 3.0) - normal(0.5, 0.0, X);\n"
+                "  point r = vector(X, 0.0, 0.0) + point(0.0, 1.0, 0.0);",
+                "q.x + q.y * 10.0 + q.z * 100.0 + q.w * 1000.0 + r.x * 10000.0 + r.w * 100000.0",
+                [](float x, float y) {
+                  return (x + 0.5f) + (2 * y) * 10.0f + (4.0f - x) * 100.0f + 2000.0f + x * 10000.0f + 100000.0f;
+                },
+                1e-6f);
+}
+
 TEST(Builtins, VectorOperations) {
   expectPerLane("  vector a = vector(X, Y, 1.0); vector b = vector(2.0, -1.0, Y);",
                 "dot(a, b) + length(cross(a, b)) + distance(point(X, Y, 0.0), point(0.0, 0.0, 0.0))",
