@@ -29,6 +29,7 @@
 #include "compiler/field/field_source.h"
 #include "field/field_reference.h"
 #include "model/model_file.h"
+#include "raster/field/csg_tree.h"
 #include "raster/field/gradient_evaluator.h"
 #include "raster/field/implicit_field.h"
 #include "raster/field/ray_polynomial.h"
@@ -245,7 +246,9 @@ int main(int argc, char** argv) {
       // M = 5000 (seed 004's finest) only where a frame of it takes seconds, not minutes.
       if (tape.size() < 100) runs.push_back({"march", GL_FIELD_METHOD_MARCH_EXT, 5000.0f});
       const int degree = pf::field::fieldPolynomialDegree(tape);
-      if (degree >= 0 && degree <= 4) runs.insert(runs.begin(), {"analytic", GL_FIELD_METHOD_ANALYTIC_EXT, 0.0f});
+      // Analytic where the field is one polynomial, or a CSG tree of them (csg_tree.h).
+      if ((degree >= 0 && degree <= 4) || pf::field::csgTreeOf(tape))
+        runs.insert(runs.begin(), {"analytic", GL_FIELD_METHOD_ANALYTIC_EXT, 0.0f});
     }
     if (!methods.empty()) {
       runs.clear();

@@ -22,6 +22,8 @@ std::optional<RootMethod> parseRootMethod(std::string_view name) {
 
 ImplicitField::ImplicitField(std::string n, FieldTape t, float l) : name(std::move(n)), tape(std::move(t)), lipschitz(l) {
   polynomial_degree = fieldPolynomialDegree(tape);
+  if (polynomial_degree < 0 || polynomial_degree > 4)
+    if (auto tree = csgTreeOf(tape)) csg = std::make_shared<const CsgTree>(std::move(*tree));
   for (const FieldInstr& in : tape.instrs) {
     if (in.op == FieldOp::X) reads[0] = true;
     if (in.op == FieldOp::Y) reads[1] = true;
@@ -32,6 +34,9 @@ ImplicitField::ImplicitField(std::string n, FieldTape t, float l) : name(std::mo
 RootMethod resolveMethod(const ImplicitField& field, RootMethod requested) {
   if (requested != RootMethod::Auto) return requested;
   if (field.polynomial_degree >= 0 && field.polynomial_degree <= 4) return RootMethod::Analytic;
+  // (A field that does not read z is a 2D model, constant along the model views' rays: the
+  // interval method decides whole blocks from one evaluation, far cheaper than solving leaves.)
+  if (field.csg && field.csg->leaf_count <= kAutoCsgLeaves && field.reads[2]) return RootMethod::Analytic;
   if (field.lipschitz > 0.0f) return RootMethod::Sphere;
   return RootMethod::Interval;
 }

@@ -45,8 +45,11 @@ double refine(const std::array<double, 5>& c, int degree, double a, double b, do
   return t;
 }
 
-// Sorted roots of p in [lo, hi] (each at most once), by splitting at the derivative's roots.
+}  // namespace
+
+// Splitting at the derivative's roots, found the same way: each piece is monotone.
 std::vector<double> rootsIn(const std::array<double, 5>& c, int degree, double lo, double hi) {
+  if (!(hi >= lo)) return {};
   while (degree > 0 && c[degree] == 0.0) --degree;
   std::vector<double> roots;
   if (degree == 0) return roots;
@@ -71,8 +74,6 @@ std::vector<double> rootsIn(const std::array<double, 5>& c, int degree, double l
   if (std::fabs(fh) <= evaluationError(c, degree, hi) && (roots.empty() || roots.back() != hi)) roots.push_back(hi);
   return roots;
 }
-
-}  // namespace
 
 std::optional<double> firstRootIn(const std::array<double, 5>& c, int degree, double lo, double hi) {
   if (!(hi >= lo)) return std::nullopt;

@@ -8,11 +8,15 @@
 
 #include <array>
 #include <optional>
+#include <vector>
 
 namespace pf::field {
 
 // The smallest t in [lo, hi] where p(t) = 0 (or p changes sign), for p = sum c[k] t^k, degree
 // <= 4. nullopt where p has no root there.
 std::optional<double> firstRootIn(const std::array<double, 5>& c, int degree, double lo, double hi);
+
+// Every such t in [lo, hi], sorted, each once (a touching root included).
+std::vector<double> rootsIn(const std::array<double, 5>& c, int degree, double lo, double hi);
 
 }  // namespace pf::field

@@ -38,17 +38,24 @@ double RayPolynomial::evaluate(double t) const {
   return v;
 }
 
-std::optional<RayPolynomial> rayPolynomial(const FieldTape& tape, const std::array<double, 3>& origin,
-                                           const std::array<double, 3>& direction) {
-  std::vector<Poly> v(tape.instrs.size());
+bool rayPolynomials(const FieldTape& tape, const std::array<double, 3>& origin, const std::array<double, 3>& direction,
+                    std::vector<RayPolynomial>& v, std::vector<uint8_t>& valid, bool stop_at_invalid) {
+  v.resize(tape.instrs.size());
+  valid.assign(tape.instrs.size(), 1);
   for (size_t i = 0; i < tape.instrs.size(); ++i) {
     const FieldInstr& in = tape.instrs[i];
+    const int arity = fieldOpArity(in.op);
+    if ((arity >= 1 && !valid[in.a]) || (arity == 2 && !valid[in.b])) {
+      valid[i] = 0;
+      continue;
+    }
     const Poly& a = v[in.a];
     const Poly& b = v[in.b];
     Poly r;
+    bool ok = true;
     // Operations without a polynomial meaning apply only to constants.
-    auto onConstant = [&](double value) -> bool {
-      if (a.degree != 0 || (fieldOpArity(in.op) == 2 && b.degree != 0)) return false;
+    auto onConstant = [&](double value) {
+      if (a.degree != 0 || (arity == 2 && b.degree != 0)) return false;
       r = constantPoly(value);
       return true;
     };
@@ -65,16 +72,10 @@ std::optional<RayPolynomial> rayPolynomial(const FieldTape& tape, const std::arr
         r = a;
         for (double& c : r.c) c = -c;
         break;
-      case FieldOp::Square: {
-        auto m = multiply(a, a);
-        if (!m) return std::nullopt;
-        r = *m;
-        break;
-      }
-      case FieldOp::Mul: {
-        auto m = multiply(a, b);
-        if (!m) return std::nullopt;
-        r = *m;
+      case FieldOp::Square: case FieldOp::Mul: {
+        auto m = multiply(a, in.op == FieldOp::Square ? a : b);
+        ok = m.has_value();
+        if (ok) r = *m;
         break;
       }
       case FieldOp::Add: case FieldOp::Sub:
@@ -82,26 +83,41 @@ std::optional<RayPolynomial> rayPolynomial(const FieldTape& tape, const std::arr
         trim(r);
         break;
       case FieldOp::Div:
-        if (b.degree != 0 || b.c[0] == 0.0) return std::nullopt;
-        for (int k = 0; k <= 4; ++k) r.c[k] = a.c[k] / b.c[0];
-        trim(r);
+        ok = b.degree == 0 && b.c[0] != 0.0;
+        if (ok) {
+          for (int k = 0; k <= 4; ++k) r.c[k] = a.c[k] / b.c[0];
+          trim(r);
+        }
         break;
-      case FieldOp::Abs: if (!onConstant(std::fabs(a.c[0]))) return std::nullopt; break;
-      case FieldOp::Sqrt: if (!onConstant(std::sqrt(a.c[0]))) return std::nullopt; break;
-      case FieldOp::Exp: if (!onConstant(std::exp(a.c[0]))) return std::nullopt; break;
-      case FieldOp::Log: if (!onConstant(std::log(a.c[0]))) return std::nullopt; break;
-      case FieldOp::Sin: if (!onConstant(std::sin(a.c[0]))) return std::nullopt; break;
-      case FieldOp::Cos: if (!onConstant(std::cos(a.c[0]))) return std::nullopt; break;
-      case FieldOp::Min: if (!onConstant(std::min(a.c[0], b.c[0]))) return std::nullopt; break;
-      case FieldOp::Max: if (!onConstant(std::max(a.c[0], b.c[0]))) return std::nullopt; break;
+      case FieldOp::Abs: ok = onConstant(std::fabs(a.c[0])); break;
+      case FieldOp::Sqrt: ok = onConstant(std::sqrt(a.c[0])); break;
+      case FieldOp::Exp: ok = onConstant(std::exp(a.c[0])); break;
+      case FieldOp::Log: ok = onConstant(std::log(a.c[0])); break;
+      case FieldOp::Sin: ok = onConstant(std::sin(a.c[0])); break;
+      case FieldOp::Cos: ok = onConstant(std::cos(a.c[0])); break;
+      case FieldOp::Min: ok = onConstant(std::min(a.c[0], b.c[0])); break;
+      case FieldOp::Max: ok = onConstant(std::max(a.c[0], b.c[0])); break;
+    }
+    if (!ok) {
+      if (stop_at_invalid) return false;
+      valid[i] = 0;
+      continue;
     }
     v[i] = r;
   }
+  return true;
+}
+
+std::optional<RayPolynomial> rayPolynomial(const FieldTape& tape, const std::array<double, 3>& origin,
+                                           const std::array<double, 3>& direction) {
   if (tape.instrs.empty()) return std::nullopt;
+  thread_local std::vector<Poly> v;  // reused per thread: a ray costs no allocation
+  thread_local std::vector<uint8_t> valid;
+  if (!rayPolynomials(tape, origin, direction, v, valid, true) || !valid[tape.result]) return std::nullopt;
   return v[tape.result];
 }
 
-int fieldPolynomialDegree(const FieldTape& tape) {
+std::vector<int> polynomialDegrees(const FieldTape& tape) {
   std::vector<int> degree(tape.instrs.size(), 0);  // -1: not a polynomial
   for (size_t i = 0; i < tape.instrs.size(); ++i) {
     const FieldInstr& in = tape.instrs[i];
@@ -122,7 +138,11 @@ int fieldPolynomialDegree(const FieldTape& tape) {
     }
     degree[i] = d;
   }
-  return tape.instrs.empty() ? -1 : degree[tape.result];
+  return degree;
+}
+
+int fieldPolynomialDegree(const FieldTape& tape) {
+  return tape.instrs.empty() ? -1 : polynomialDegrees(tape)[tape.result];
 }
 
 }  // namespace pf::field

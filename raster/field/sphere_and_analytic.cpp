@@ -106,15 +106,23 @@ void FieldRayCaster::castSphere(const CastRequest& r, int bx, int by, Lanes& lan
   // Lanes that left the box stay pending with t = +inf: a miss.
 }
 
-// Per lane in double: the ray polynomial's first root in the lane's span. Lanes whose field is
-// not polynomial along the ray go to the interval method.
+// Per lane in double: the ray polynomial's first root in the lane's span, or for a CSG tree of
+// polynomial leaves the first hit among the leaves' roots. Lanes whose field is neither go to
+// the interval method.
 void FieldRayCaster::castAnalytic(const CastRequest& r, int bx, int by, Lanes& lanes, FieldCounters& c) {
   uint64_t fallback = 0;
   for (uint64_t p = lanes.pending; p; p &= p - 1) {
     const int i = std::countr_zero(p);
     const PixelRay& ray = lanes.ray[i];
-    const auto poly = rayPolynomial(r.field->tape, ray.origin, ray.direction);
     ++c.point_evaluations;
+    if (r.field->csg) {
+      bool solved = false;
+      const auto t = r.field->csg->firstHit(ray.origin, ray.direction, ray.entry, ray.exit, solved);
+      if (!solved) fallback |= uint64_t(1) << i;
+      else if (t) lanes.hit(i, *t);
+      continue;
+    }
+    const auto poly = rayPolynomial(r.field->tape, ray.origin, ray.direction);
     if (!poly) {
       fallback |= uint64_t(1) << i;
       continue;
