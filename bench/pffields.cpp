@@ -30,6 +30,7 @@
 #include "field/field_reference.h"
 #include "model/model_file.h"
 #include "raster/field/csg_tree.h"
+#include "raster/field/float_evaluator.h"
 #include "raster/field/gradient_evaluator.h"
 #include "raster/field/implicit_field.h"
 #include "raster/field/ray_polynomial.h"
@@ -188,7 +189,19 @@ int main(int argc, char** argv) {
   app.add_option("--frames", frames, "timed frames after one warm-up")->check(CLI::Range(1, 1000));
   app.add_option("--threads", threads, "rasterizer threads")->check(CLI::Range(1, 256));
   app.add_option("--csv", csv, "append results here");
+  std::vector<std::string> simd;
+  app.add_option("--simd", simd,
+                 "run each method on these instruction sets of the float loops, in turn (default: the best; "
+                 "names as the float_evaluator reports them, e.g. AVX3 AVX2 SSE4 SCALAR)");
   CLI11_PARSE(app, argc, argv);
+  if (simd.empty()) simd.push_back(pf::field::floatSlotsTarget());
+  for (const std::string& t : simd)
+    if (!pf::field::useFloatSlotsTarget(t)) {
+      std::fprintf(stderr, "pffields: no instruction set '%s' here (this machine:", t.c_str());
+      for (const std::string& have : pf::field::floatSlotsTargets()) std::fprintf(stderr, " %s", have.c_str());
+      std::fprintf(stderr, ")\n");
+      return 2;
+    }
 
   if (models.empty()) {
     for (const auto& e : std::filesystem::directory_iterator(std::string(PF_SOURCE_DIR) + "/tests/data/models/fidget"))
@@ -201,10 +214,10 @@ int main(int argc, char** argv) {
     out.open(csv, std::ios::app);
     if (fresh)
       out << "model,method,param,size,threads,ms_median,ref_size,judged,coverage_mismatches,max_depth_error,"
-             "mean_depth_error,max_normal_degrees,mean_normal_degrees\n";
+             "mean_depth_error,max_normal_degrees,mean_normal_degrees,simd\n";
   }
-  std::printf("%-14s %-9s %7s %6s %10s | %6s %8s %11s %11s %9s %9s\n", "model", "method", "param", "size", "ms",
-              "judged", "mismatch", "max depth", "mean depth", "max N deg", "mean N");
+  std::printf("%-14s %-9s %7s %6s %6s %10s | %6s %8s %11s %11s %9s %9s\n", "model", "method", "param", "simd", "size",
+              "ms", "judged", "mismatch", "max depth", "mean depth", "max N deg", "mean N");
   for (const std::string& entry : models) {
     // "FILE" or "FILE@x0,y0,z0,x1,y1,z1" (the model's box).
     std::string file = entry;
@@ -264,18 +277,20 @@ int main(int argc, char** argv) {
     const int n = m.two_dimensional ? prospero_size : size;
     const int rn = m.two_dimensional ? prospero_size : ref_size;
     const std::vector<double> want = reference(tape, m, rn, ref_steps, m.two_dimensional);
-    for (const Run& run : runs) {
-      const Frame timed = render(m, n, n, run, threads, frames, time);
-      const Frame judged = rn == n ? timed : render(m, rn, rn, run, threads, 0, time);
-      const Accuracy a = compare(judged.z, want, tape, m, rn);
-      std::printf("%-14s %-9s %7g %6d %10.2f | %6d %8d %11.3g %11.3g %9.3g %9.3g\n", name.c_str(),
-                  run.method_name.c_str(), run.param, n, timed.ms, a.judged, a.coverage_mismatches, a.max_depth,
-                  a.mean_depth, a.max_normal_degrees, a.mean_normal_degrees);
-      if (out)
-        out << name << ',' << run.method_name << ',' << run.param << ',' << n << ',' << threads << ',' << timed.ms << ','
-            << rn << ',' << a.judged << ',' << a.coverage_mismatches << ',' << a.max_depth << ',' << a.mean_depth << ','
-            << a.max_normal_degrees << ',' << a.mean_normal_degrees << '\n';
-    }
+    for (const Run& run : runs)
+      for (const std::string& target : simd) {
+        pf::field::useFloatSlotsTarget(target);
+        const Frame timed = render(m, n, n, run, threads, frames, time);
+        const Frame judged = rn == n ? timed : render(m, rn, rn, run, threads, 0, time);
+        const Accuracy a = compare(judged.z, want, tape, m, rn);
+        std::printf("%-14s %-9s %7g %6s %6d %10.2f | %6d %8d %11.3g %11.3g %9.3g %9.3g\n", name.c_str(),
+                    run.method_name.c_str(), run.param, target.c_str(), n, timed.ms, a.judged, a.coverage_mismatches,
+                    a.max_depth, a.mean_depth, a.max_normal_degrees, a.mean_normal_degrees);
+        if (out)
+          out << name << ',' << run.method_name << ',' << run.param << ',' << n << ',' << threads << ',' << timed.ms
+              << ',' << rn << ',' << a.judged << ',' << a.coverage_mismatches << ',' << a.max_depth << ','
+              << a.mean_depth << ',' << a.max_normal_degrees << ',' << a.mean_normal_degrees << ',' << target << '\n';
+      }
   }
   return 0;
 }

@@ -97,6 +97,7 @@ class PixelExecutor {
     uint64_t lanes = 0;
     float q[3][kLanes];  // the points
     float g[3][kLanes];
+    std::vector<std::pair<const field::FieldTape*, uint64_t>> groups;  // scratch: lanes per tape
   } gradient_cache_;
 
   std::unique_ptr<PixelExecutor> shared_;  // runs shared interpolators (their own registers)

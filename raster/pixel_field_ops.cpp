@@ -1,6 +1,7 @@
 // The pixel executor's implicit-surface instructions: FieldHit runs the field ray caster over
 // the block (raster/field/ray_caster.h), FieldGradient the gradient form. The rays are the
 // pixels' own, rebuilt in double from the state the language's object_ray_near()/_far() read.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -129,27 +130,48 @@ void PixelExecutor::fieldGradient(const RasterState& state, uint64_t exec, float
     // A lane whose point lies in the box of the short tape that found its hit runs that tape:
     // it equals the field there, gradient included (the same side of every min and max).
     const bool hits_usable = hit_serial_ == run_serial_ && hit_field_ == f && !by_differences;
-    const field::FieldTape* short_tape = nullptr;
-    std::unique_ptr<field::GradientEvaluator> short_eval;
+    // Lanes grouped by the tape they run (nullptr: the whole field), each group one batch.
+    std::vector<std::pair<const field::FieldTape*, uint64_t>>& groups = gc.groups;
+    groups.clear();
     for (uint64_t m = exec; m; m &= m - 1) {
       const int i = __builtin_ctzll(m);
       float q[3];
       for (int k = 0; k < 3; ++k) gc.q[k][i] = q[k] = p_wide[k] ? p[k][i] : p[k][0];
-      field::GradientEvaluator* ge = full.get();
-      if (hits_usable && (hit_lanes_ >> i & 1) && hit_tapes_.tape[i] && hit_tapes_.box[i].contains(q)) {
-        if (hit_tapes_.tape[i].get() != short_tape) {
-          short_tape = hit_tapes_.tape[i].get();
-          short_eval = std::make_unique<field::GradientEvaluator>(*short_tape);
-        }
-        ge = short_eval.get();
-      }
+      const field::FieldTape* tape = nullptr;
+      if (hits_usable && (hit_lanes_ >> i & 1) && hit_tapes_.tape[i] && hit_tapes_.box[i].contains(q))
+        tape = hit_tapes_.tape[i].get();
+      auto g = std::find_if(groups.begin(), groups.end(), [&](const auto& e) { return e.first == tape; });
+      if (g == groups.end()) g = groups.insert(groups.end(), {tape, 0});
+      g->second |= uint64_t(1) << i;
+    }
+    for (const auto& [tape, lanes] : groups) {
+      std::unique_ptr<field::GradientEvaluator> short_eval;
+      if (tape) short_eval = std::make_unique<field::GradientEvaluator>(*tape);
+      field::GradientEvaluator& ge = tape ? *short_eval : *full;
       if (by_differences) {
-        for (int k = 0; k < 3; ++k) gc.g[k][i] = fieldGradientAt(*ge, q, k, true);
-      } else {
-        const field::FieldGradient g = ge->evaluate(q[0], q[1], q[2]);
-        gc.g[0][i] = g.dx;
-        gc.g[1][i] = g.dy;
-        gc.g[2][i] = g.dz;
+        for (uint64_t m = lanes; m; m &= m - 1) {
+          const int i = __builtin_ctzll(m);
+          const float q[3] = {gc.q[0][i], gc.q[1][i], gc.q[2][i]};
+          for (int k = 0; k < 3; ++k) gc.g[k][i] = fieldGradientAt(ge, q, k, true);
+        }
+        continue;
+      }
+      float xs[kLanes], ys[kLanes], zs[kLanes];
+      field::FieldGradient g[kLanes];
+      int n = 0;
+      for (uint64_t m = lanes; m; m &= m - 1, ++n) {
+        const int i = __builtin_ctzll(m);
+        xs[n] = gc.q[0][i];
+        ys[n] = gc.q[1][i];
+        zs[n] = gc.q[2][i];
+      }
+      ge.evaluate(xs, ys, zs, n, g);
+      n = 0;
+      for (uint64_t m = lanes; m; m &= m - 1, ++n) {
+        const int i = __builtin_ctzll(m);
+        gc.g[0][i] = g[n].dx;
+        gc.g[1][i] = g[n].dy;
+        gc.g[2][i] = g[n].dz;
       }
     }
     gc.field = f;
