@@ -1,6 +1,8 @@
 // pfc: the primitive-language compiler on the command line.
-//   pfc FILE.pfl [--emit=ast|ir|setup|pixel]
+//   pfc FILE.pfl [--emit=ast|ir|setup|pixel|tape] [--field NAME --params V...]
 // Diagnostics go to stderr as file:line:col: error: message, with the line and a caret.
+// Field units are compiled to tapes too (docs/language.md, "Fields"): those without parameters
+// always, one with parameters when --field names it and --params gives their values.
 // Exit status: 0 compiled, 1 compile error or unreadable file, 2 bad command line.
 #include <CLI/CLI.hpp>
 
@@ -10,6 +12,8 @@
 
 #include "compiler/builtin_primitives.h"
 #include "compiler/compiler.h"
+#include "compiler/field/field_unit.h"
+#include "compiler/parser.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"pfc: compile primflow primitive-language source (.pfl)"};
@@ -17,8 +21,13 @@ int main(int argc, char** argv) {
   std::string emit = "none";
   app.add_option("file", file, "source file (.pfl)")->required();
   bool explain = false;
-  app.add_option("--emit", emit, "print a stage: ast, ir, setup (per-instance program), pixel (per-block program)")
-      ->check(CLI::IsMember({"none", "ast", "ir", "setup", "pixel"}));
+  app.add_option("--emit", emit,
+                 "print a stage: ast, ir, setup (per-instance program), pixel (per-block program), tape (fields)")
+      ->check(CLI::IsMember({"none", "ast", "ir", "setup", "pixel", "tape"}));
+  std::string field_name;
+  std::vector<float> params;
+  app.add_option("--field", field_name, "the field unit --params are for");
+  app.add_option("--params", params, "values of that field's parameters after its point")->needs("--field");
   app.add_flag("--explain", explain, "print why each optimization fired (folding, CSE, copies, dead code)");
   bool no_opt = false;
   app.add_flag("--no-optimize", no_opt, "skip the optimization passes (for comparison and debugging)");
@@ -47,5 +56,25 @@ int main(int argc, char** argv) {
   std::cerr << log.format();
   if (!ok) return 1;
   std::cout << listing;
+  // The field units, as tapes: what a point-dependent branch or an unsupported operation stops.
+  pf::DiagnosticLog units_log;
+  const pf::Program program = pf::parse(units_log.addSource(file, ss.str()), units_log);
+  bool named_found = field_name.empty();
+  for (const pf::Unit& u : program.units) {
+    if (u.kind != pf::UnitKind::Field) continue;
+    const bool named = u.name == field_name;
+    named_found = named_found || named;
+    if (u.params.size() > 1 && !named) continue;  // its parameters' values are not known here
+    pf::DiagnosticLog field_log;
+    const auto tape = pf::field::compileFieldUnit(file, ss.str(), u.name, named ? params : std::vector<float>{}, field_log);
+    std::cerr << field_log.format();
+    if (!tape) return 1;
+    if (emit == "tape")
+      std::cout << "field " << u.name << ": tape of " << tape->size() << " instructions\n" << tape->print();
+  }
+  if (!named_found) {
+    std::cerr << "pfc: " << file << " has no field named '" << field_name << "'\n";
+    return 1;
+  }
   return 0;
 }
