@@ -11,7 +11,7 @@ int fieldOpArity(FieldOp op) {
   switch (op) {
     case FieldOp::X: case FieldOp::Y: case FieldOp::Z: case FieldOp::Const: return 0;
     case FieldOp::Neg: case FieldOp::Abs: case FieldOp::Square: case FieldOp::Sqrt:
-    case FieldOp::Exp: case FieldOp::Log: case FieldOp::Sin: case FieldOp::Cos: return 1;
+    case FieldOp::Exp: case FieldOp::Log: case FieldOp::Sin: case FieldOp::Cos: case FieldOp::Atan: return 1;
     default: return 2;
   }
 }
@@ -30,6 +30,7 @@ std::string_view fieldOpName(FieldOp op) {
     case FieldOp::Log: return "ln";
     case FieldOp::Sin: return "sin";
     case FieldOp::Cos: return "cos";
+    case FieldOp::Atan: return "atan";
     case FieldOp::Add: return "add";
     case FieldOp::Sub: return "sub";
     case FieldOp::Mul: return "mul";

@@ -23,6 +23,7 @@ namespace pf::field {
 enum class FieldOp : uint8_t {
   X, Y, Z, Const,                               // leaves
   Neg, Abs, Square, Sqrt, Exp, Log, Sin, Cos,   // unary
+  Atan,                                         // unary (after the others: Fidget has no atan)
   Add, Sub, Mul, Div, Min, Max,                 // binary
 };
 

@@ -31,10 +31,6 @@ const char* sourceName(Op op) {
     case Op::FFloor: return "floor (and fract, mod)";
     case Op::FCeil: return "ceil";
     case Op::FSign: return "sign";
-    case Op::FAsin: return "asin";
-    case Op::FAcos: return "acos";
-    case Op::FAtan: return "atan";
-    case Op::FAtan2: return "atan2";
     case Op::FNoise: return "noise";
     case Op::F2I: return "conversion to int";
     default: return nullptr;
@@ -204,6 +200,26 @@ class TapeTranslator {
       case Op::FLog: unary(FieldOp::Log); return {};
       case Op::FSin: unary(FieldOp::Sin); return {};
       case Op::FCos: unary(FieldOp::Cos); return {};
+      case Op::FAtan: unary(FieldOp::Atan); return {};
+      case Op::FAsin: case Op::FAcos: {
+        // asin v = atan(v / sqrt(1 - v^2)); acos v = pi/2 - asin v (as the HyperFun reader does).
+        const uint32_t v = node(in.a, loc);
+        const uint32_t root = builder_.unary(FieldOp::Sqrt, builder_.binary(FieldOp::Sub, builder_.constant(1.0f),
+                                                                             builder_.unary(FieldOp::Square, v)));
+        const uint32_t asin = builder_.unary(FieldOp::Atan, builder_.binary(FieldOp::Div, v, root));
+        setNode(in.dst, in.op == Op::FAsin ? asin : builder_.binary(FieldOp::Sub, builder_.constant(1.5707963705062866f), asin), loc);
+        return {};
+      }
+      case Op::FAtan2: {
+        // atan2(y, x) = 2 atan(y / (sqrt(x^2 + y^2) + x)): C's value except on the negative x
+        // axis itself (0/0 there: NaN, a set of no area).
+        const uint32_t y = node(in.a, loc), x = node(in.b, loc);
+        const uint32_t r = builder_.unary(FieldOp::Sqrt, builder_.binary(FieldOp::Add, builder_.unary(FieldOp::Square, x),
+                                                                          builder_.unary(FieldOp::Square, y)));
+        const uint32_t half = builder_.unary(FieldOp::Atan, builder_.binary(FieldOp::Div, y, builder_.binary(FieldOp::Add, r, x)));
+        setNode(in.dst, builder_.binary(FieldOp::Mul, builder_.constant(2.0f), half), loc);
+        return {};
+      }
       case Op::FTan: {
         const uint32_t x = node(in.a, loc);
         setNode(in.dst, builder_.binary(FieldOp::Div, builder_.unary(FieldOp::Sin, x), builder_.unary(FieldOp::Cos, x)), loc);

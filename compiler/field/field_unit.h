@@ -9,9 +9,10 @@
 // of the issue are derived from a field: they are the tape's evaluators.
 //
 // A field's point-dependent part may use only what a tape can evaluate soundly: + - * /, min,
-// max, abs, sqrt, exp, log, sin, cos, tan (sin / cos), pow (constant integer exponents as
-// products; otherwise exp(y log x)). A branch, a comparison or floor/ceil/sign/mod/atan/asin/
-// acos/noise of a point-dependent value is a compile error that names the line.
+// max, abs, sqrt, exp, log, sin, cos, atan, and what is built from them: tan (sin / cos), asin,
+// acos and atan2 (through atan), pow (constant integer exponents as products; otherwise
+// exp(y log x)). A branch, a comparison or floor/ceil/sign/mod/noise of a point-dependent value
+// is a compile error that names the line.
 #pragma once
 
 #include <optional>

@@ -172,10 +172,6 @@ double hfRound(double v) {
   const double ce = std::ceil(v);
   return ce - v > 0.5 ? ce - 1.0 : ce;
 }
-constexpr auto kAsin = [](double v) { return std::asin(v); };
-constexpr auto kAcos = [](double v) { return std::acos(v); };
-constexpr auto kAtan = [](double v) { return std::atan(v); };
-constexpr auto kAtan2 = [](double y, double x) { return std::atan2(y, x); };
 constexpr auto kSign = [](double v) { return v < 0.0 ? -1.0 : 1.0; };  // HyperFun's sign as its code means it
 constexpr auto kMod = [](double a, double b) { return std::fmod(hfRound(a), hfRound(b)); };
 constexpr auto kCeil = [](double v) { return std::ceil(v); };
@@ -190,6 +186,27 @@ Real binary(LibraryCall& c) { return (c.alg.*Op)(c.reals[0], c.reals[1]); }
 Real fLogd(LibraryCall& c) {
   const Real v = c.reals[0];
   return v.is_known ? K(std::log10(v.value)) : c.alg.mul(c.alg.log(v), K(1.0 / std::log(10.0)));
+}
+// The inverse trigonometric functions through the tape's atan (as the language's fields do,
+// compiler/field/field_unit.cpp): asin v = atan(v / sqrt(1 - v^2)), acos v = pi/2 - asin v, and
+// atan2(y, x) = 2 atan(y / (sqrt(x^2 + y^2) + x)) -- C's values except on atan2's cut, the
+// negative x axis itself, where the quotient is 0/0 (NaN; a set of no area).
+Real fAtan(LibraryCall& c) { return c.alg.atan(c.reals[0]); }
+Real fAsin(LibraryCall& c) {
+  TapeAlgebra& m = c.alg;
+  const Real v = c.reals[0];
+  return v.is_known ? K(std::asin(v.value)) : m.atan(m.div(v, m.sqrt(m.sub(K(1.0), m.square(v)))));
+}
+Real fAcos(LibraryCall& c) {
+  const Real v = c.reals[0];
+  return v.is_known ? K(std::acos(v.value)) : c.alg.sub(K(std::acos(0.0)), fAsin(c));
+}
+Real fAtan2(LibraryCall& c) {
+  TapeAlgebra& m = c.alg;
+  const Real y = c.reals[0], x = c.reals[1];
+  if (y.is_known && x.is_known) return K(std::atan2(y.value, x.value));
+  const Real r = m.sqrt(m.add(m.square(x), m.square(y)));
+  return m.mul(K(2.0), m.atan(m.div(y, m.add(r, x))));
 }
 Real fTan(LibraryCall& c) {
   const Real v = c.reals[0];
@@ -509,8 +526,8 @@ Real hfSpaceMap(LibraryCall& c) {
 }
 
 // Messages for the unsupported functions; '$' stands for the function's name.
-constexpr std::string_view kNeedsAtan =
-    "'$' is not supported yet: its convolution integral needs atan, and primflow's field tapes have no atan";
+constexpr std::string_view kConvolution =
+    "'$' is not supported yet: its convolution integral (HyperFun's closed form with arctan terms) is not implemented";
 constexpr std::string_view kAttribute =
     "attribute functions are not supported yet: '$' sets the s array's colour or material, and primflow's field "
     "tapes carry the shape only";
@@ -526,12 +543,12 @@ const LibraryFunction kFunctions[] = {
     {"sqrt", "v", "R", unary<&TapeAlgebra::sqrt>, {}}, {"exp", "v", "R", unary<&TapeAlgebra::exp>, {}},
     {"log", "v", "R", unary<&TapeAlgebra::log>, {}}, {"logd", "v", "R", fLogd, {}},
     {"sin", "v", "R", unary<&TapeAlgebra::sin>, {}}, {"cos", "v", "R", unary<&TapeAlgebra::cos>, {}},
-    {"tan", "v", "R", fTan, {}}, {"asin", "v", "R", knownOnly<kAsin>, {}}, {"acos", "v", "R", knownOnly<kAcos>, {}},
-    {"atan", "v", "R", knownOnly<kAtan>, {}}, {"abs", "v", "R", unary<&TapeAlgebra::abs>, {}},
+    {"tan", "v", "R", fTan, {}}, {"asin", "v", "R", fAsin, {}}, {"acos", "v", "R", fAcos, {}},
+    {"atan", "v", "R", fAtan, {}}, {"abs", "v", "R", unary<&TapeAlgebra::abs>, {}},
     {"sinh", "v", "R", fSinh, {}}, {"cosh", "v", "R", fCosh, {}}, {"tanh", "v", "R", fTanh, {}},
     {"sign", "v", "R", knownOnly<kSign>, {}}, {"mod", "a, b", "RR", knownPair<kMod>, {}},
     {"max", "a, b", "RR", binary<&TapeAlgebra::max>, {}}, {"min", "a, b", "RR", binary<&TapeAlgebra::min>, {}},
-    {"atan2", "y, x", "RR", knownPair<kAtan2>, {}}, {"ceil", "v", "R", knownOnly<kCeil>, {}},
+    {"atan2", "y, x", "RR", fAtan2, {}}, {"ceil", "v", "R", knownOnly<kCeil>, {}},
     {"floor", "v", "R", knownOnly<kFloor>, {}}, {"int", "v", "R", knownOnly<kInt>, {}},
     {"frac", "v", "R", knownOnly<kFrac>, {}},
     // Primitives.
@@ -578,8 +595,8 @@ const LibraryFunction kFunctions[] = {
     {"hfSpaceMapExp", "xt, source, target, b", "AAAA", hfSpaceMap<false>, {}},
     {"hfSpaceMapCubic", "xt, source, target, b", "AAAA", hfSpaceMap<true>, {}},
     // Registered in HyperFun but not supported yet.
-    no("hfConvLine", kNeedsAtan), no("hfConvLineR", kNeedsAtan), no("hfConvArc", kNeedsAtan),
-    no("hfConvTriangle", kNeedsAtan), no("hfConvCurve", kNeedsAtan), no("hfConvMesh", kNeedsAtan),
+    no("hfConvLine", kConvolution), no("hfConvLineR", kConvolution), no("hfConvArc", kConvolution),
+    no("hfConvTriangle", kConvolution), no("hfConvCurve", kConvolution), no("hfConvMesh", kConvolution),
     no("hfBezierVolume", kNotYet), no("hfDUni", kSardf), no("hfDInt", kSardf), no("hfDSub", kSardf),
     no("hfDBlendUni", kSardf), no("hfDBlendInt", kSardf), no("hfDConeX", kSardf), no("hfDConeY", kSardf),
     no("hfDConeZ", kSardf), no("hfDCylinder", kSardf), no("hfDEllipsoid", kSardf), no("hfDTorusX", kSardf),

@@ -57,6 +57,7 @@ class TapeAlgebra {
   Real log(Real a) { return a.is_known ? Real::known(std::log(a.value)) : emit(FieldOp::Log, a); }
   Real sin(Real a) { return a.is_known ? Real::known(std::sin(a.value)) : emit(FieldOp::Sin, a); }
   Real cos(Real a) { return a.is_known ? Real::known(std::cos(a.value)) : emit(FieldOp::Cos, a); }
+  Real atan(Real a) { return a.is_known ? Real::known(std::atan(a.value)) : emit(FieldOp::Atan, a); }
 
   // HyperFun's a^b: an exponent within 1e-6 above an integer n multiplies (a negative base is
   // fine; a negative n takes the reciprocal); any other exponent is exp(b*log(a)).

@@ -78,6 +78,12 @@ Interval intervalLog(Interval a) {
   return outwardLibm(std::log(static_cast<double>(a.lo)), std::log(static_cast<double>(a.hi)));
 }
 
+// atan is increasing; a NaN-able operand (the whole line) stays NaN-able.
+Interval intervalAtan(Interval a) {
+  if (a.isWhole() || std::isnan(a.lo) || std::isnan(a.hi)) return Interval::whole();
+  return outwardLibm(std::atan(static_cast<double>(a.lo)), std::atan(static_cast<double>(a.hi)));
+}
+
 // sin over [lo, hi] reaches +1 where lo <= pi/2 + 2k pi <= hi, and -1 at -pi/2 + 2k pi.
 static Interval periodicRange(Interval a, double phase_max, double (*fn)(double)) {
   if (!std::isfinite(a.lo) || !std::isfinite(a.hi)) return Interval::whole();

@@ -54,6 +54,7 @@ Interval intervalExp(Interval a);
 Interval intervalLog(Interval a);
 Interval intervalSin(Interval a);
 Interval intervalCos(Interval a);
+Interval intervalAtan(Interval a);
 Interval intervalAdd(Interval a, Interval b);
 Interval intervalSub(Interval a, Interval b);
 Interval intervalMul(Interval a, Interval b);

@@ -42,10 +42,12 @@ float cExp(float v) { return std::exp(v); }
 float cLog(float v) { return std::log(v); }
 float cSin(float v) { return std::sin(v); }
 float cCos(float v) { return std::cos(v); }
+float cAtan(float v) { return std::atan(v); }
 // Highway's valid ranges (hwy/contrib/math/math-inl.h), NaN outside all of them.
 bool expRange(float v) { return v <= 104.0f; }
 bool logRange(float v) { return v > 0.0f && v <= 3.4028235e38f; }
 bool trigRange(float v) { return std::fabs(v) <= 39000.0f; }
+bool atanRange(float v) { return v == v; }
 
 template <class D>
 void RunFloatSlotsWith(D d, const FloatSlotInstr* code, size_t count, float* base, const float* x, const float* y,
@@ -92,6 +94,7 @@ void RunFloatSlotsWith(D d, const FloatSlotInstr* code, size_t count, float* bas
                                     : fixLanes(d, hn::CallCos(d, va), ok, va, cCos, trigRange);
           break;
         }
+        case FieldOp::Atan: r = fixLanes(d, hn::CallAtan(d, va), hn::Not(hn::IsNaN(va)), va, cAtan, atanRange); break;
         case FieldOp::Add: r = hn::Add(va, hn::LoadU(d, b + j)); break;
         case FieldOp::Sub: r = hn::Sub(va, hn::LoadU(d, b + j)); break;
         case FieldOp::Mul: r = hn::Mul(va, hn::LoadU(d, b + j)); break;
@@ -177,6 +180,10 @@ void RunGradientSlotsWith(D d, const FloatSlotInstr* code, size_t count, float* 
             f = in.op == FieldOp::Sin ? c : hn::Neg(s);
             break;
           }
+          case FieldOp::Atan:
+            r = fixLanes(d, hn::CallAtan(d, av), hn::Not(hn::IsNaN(av)), av, cAtan, atanRange);
+            f = hn::Div(one, hn::Add(one, hn::Mul(av, av)));
+            break;
           default: unary = false; break;
         }
         if (unary) {

@@ -101,6 +101,18 @@ field float mixed(point p) {
   EXPECT_EQ(countOps(t, FieldOp::Exp), 2u);  // exp(-x^2), and pow(., 0.5) as exp(0.5 log .)
 }
 
+TEST(FieldUnit, InverseTrigonometryThroughAtan) {
+  const FieldTape t = compileOk(R"(
+field float angles(point p) {
+    return atan(p.x) + 0.5 * atan2(p.y, p.z) - asin(p.x * 0.4) + acos(p.y * 0.45);
+}
+)");
+  expectMatches(t, [](double x, double y, double z) {
+    return std::atan(x) + 0.5 * std::atan2(y, z) - std::asin(x * 0.4) + std::acos(y * 0.45);
+  }, 2e-5);
+  EXPECT_GT(countOps(t, FieldOp::Atan), 2u);
+}
+
 TEST(FieldUnit, ChoosesTheFieldByName) {
   const std::string source = "field float a(point p) { return p.x; }\nfield float b(point p) { return p.y; }\n";
   expectMatches(compileOk(source, {}, "b"), [](double, double y, double) { return y; }, 0.0);
@@ -138,7 +150,7 @@ TEST(FieldUnit, WhatATapeCannotHoldIsAnErrorAtItsLine) {
        "f.pfl:2:3: error: this 'if' condition depends on the field's point"},
       {"field float f(point p) {\n  return p.x > 0.0 ? 1.0 : p.y;\n}\n", {}, "f.pfl:2:20: error: this choice (?:) depends on the field's point"},
       {"field float f(point p) {\n  return floor(p.x);\n}\n", {}, "f.pfl:2:10: error: 'floor (and fract, mod)' of a value that depends on the field's point has no tape form"},
-      {"field float f(point p) {\n  return atan2(p.x, p.y);\n}\n", {}, "error: 'atan2' of a value that depends on the field's point"},
+      {"field float f(point p) {\n  return sign(p.x);\n}\n", {}, "error: 'sign' of a value that depends on the field's point"},
       {"field float f(point p) {\n  return noise(p);\n}\n", {}, "error: 'noise' of a value"},
       {"field float f(point p) {\n  float s = 0.0;\n  while (s < p.x) { s += 1.0; }\n  return s;\n}\n", {},
        "f.pfl:3:3: error: this loop's condition depends on the field's point"},

@@ -540,14 +540,16 @@ TEST(HyperFun, LibraryCallErrorsArePrecise) {
             "m.hf:4:24: error: 'center' (argument 2 of 'hfSphere') must be an array of 3 items; 'c' has 2");
   expectHas(compileError(model("array c[3];\nc[1] = 1;\nmy_model = hfSphere(x, c, 1);")),
             "m.hf:4:24: error: 'c[2]' is not assigned");
-  expectHas(compileError(model("my_model = atan2(x[2], x[1]);")),
-            "m.hf:2:12: error: 'atan2' of a value that depends on the point is not supported yet: primflow's "
-            "field tapes have no atan2");
+  // atan and what is built from it work on the point (the tape has atan).
+  expectField(model("my_model = atan2(x[2], x[1]) + atan(x[3]) - asin(x[1] * 0.3) + acos(x[2] * 0.3);"),
+              [](double x, double y, double z) {
+                return std::atan2(y, x) + std::atan(z) - std::asin(x * 0.3) + std::acos(y * 0.3);
+              });
   expectHas(compileError(model("my_model = sign(x[1]);")),
             "m.hf:2:12: error: 'sign' of a value that depends on the point is not supported yet");
   expectHas(compileError(model("my_model = floor(x[1]);")), "m.hf:2:12: error: 'floor' of a value");
   expectHas(compileError(model("array e[3];\ne = [0, 0, 0];\nmy_model = hfConvLine(x, e, e, e, 1);")),
-            "m.hf:4:12: error: 'hfConvLine' is not supported yet: its convolution integral needs atan");
+            "m.hf:4:12: error: 'hfConvLine' is not supported yet: its convolution integral");
   expectHas(compileError(model("my_model = hfA_Wave(1, 2, 3, 4);")),
             "m.hf:2:12: error: attribute functions are not supported yet: 'hfA_Wave'");
   expectHas(compileError(model("my_model = hfDUni(x[1], x[2], 1, 1);")),
