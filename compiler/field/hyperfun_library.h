@@ -62,6 +62,7 @@ class TapeAlgebra {
   // HyperFun's a^b: an exponent within 1e-6 above an integer n multiplies (a negative base is
   // fine; a negative n takes the reciprocal); any other exponent is exp(b*log(a)).
   Real pow(Real a, Real b);
+  Real integerPower(Real a, uint64_t n);  // a^n by squaring (a^0 = 1)
   // The R-functions of HyperFun's set operators with alpha = 0.
   Real unite(Real a, Real b);      // a | b = a + b + sqrt(a^2 + b^2)
   Real intersect(Real a, Real b);  // a & b = a + b - sqrt(a^2 + b^2), and a @ b
