@@ -147,7 +147,12 @@ void stmts(const std::vector<StmtPtr>& body, int depth, std::string& out) {
 std::string printAst(const Program& p) {
   std::string out;
   for (const Unit& u : p.units) {
-    out += (u.kind == UnitKind::Primitive ? "primitive " : "interpolator ") + u.name + "\n";
+    switch (u.kind) {
+      case UnitKind::Primitive: out += "primitive " + u.name + "\n"; break;
+      case UnitKind::Interpolator: out += "interpolator " + u.name + "\n"; break;
+      case UnitKind::Function: out += "function " + typeName(u.return_type) + " " + u.name + "\n"; break;
+      case UnitKind::Field: out += "field " + typeName(u.return_type) + " " + u.name + "\n"; break;
+    }
     for (const Param& prm : u.params) out += "  param " + qual(prm.qualifier) + typeName(prm.type) + " " + prm.name + "\n";
     stmts(u.body, 1, out);
   }

@@ -1,5 +1,6 @@
-// The float meaning of each field operation, shared by constant folding (FieldTapeBuilder) and
-// the float evaluator, so that a folded constant equals what evaluation would have computed.
+// The float meaning of each field operation: constant folding (FieldTapeBuilder) uses it, and the
+// float evaluator's SIMD loops compute the same -- exactly for + - * / sqrt abs neg min max, within
+// a few ULP for exp, log, sin, cos, atan (Highway's vector versions, raster/field/slot_loops_simd.cpp).
 //
 // min and max ignore a NaN operand (as C's fmin/fmax): a field that is NaN somewhere (sqrt of a
 // negative, 0/0) then still has a defined union or intersection, and the interval evaluator,

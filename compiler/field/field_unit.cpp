@@ -22,6 +22,10 @@ struct Symbol {
   bool known = false;
   uint32_t bits = 0;
   uint32_t node = kNoNode;
+  // A point-dependent value a tape cannot hold (floor of p, ...): the index of its error, raised
+  // only where the value is used -- the unchosen arm of a ?: that the IR computed regardless is
+  // no error.
+  int poison = -1;
   static constexpr uint32_t kNoNode = 0xffffffffu;
 };
 
@@ -46,6 +50,7 @@ class TapeTranslator {
       : f_(f), params_(params), log_(log), env_(f.values.size()) {}
 
   std::optional<FieldTape> run(SourceLoc field_loc) {
+    field_loc_ = field_loc;
     try {
       block(f_.body);
     } catch (const Stop&) {
@@ -72,11 +77,17 @@ class TapeTranslator {
   std::vector<Symbol> env_;  // by IR value id (merge values are overwritten as the run goes)
   uint32_t result_ = Symbol::kNoNode;
   long iterations_ = 0;
+  SourceLoc field_loc_;
+  std::vector<std::pair<SourceLoc, std::string>> poisons_;  // Symbol::poison -> its error
 
   [[noreturn]] void fail(SourceLoc loc, const std::string& message) {
     log_.error(loc, message);
+    // An error inside an inlined function (the standard library's, say) names the field too.
+    if (loc.file != field_loc_.file && field_loc_.file)
+      log_.note(field_loc_, "in field '" + f_.name + "', through the functions it calls");
     throw Stop{};
   }
+  [[noreturn]] void failPoisoned(const Symbol& s) { fail(poisons_[static_cast<size_t>(s.poison)].first, poisons_[static_cast<size_t>(s.poison)].second); }
 
   Symbol get(int v, SourceLoc loc) {
     if (v < 0) return {true, 0};
@@ -96,6 +107,7 @@ class TapeTranslator {
   // The tape value of a float operand.
   uint32_t node(int v, SourceLoc loc) {
     const Symbol s = get(v, loc);
+    if (s.poison >= 0) failPoisoned(s);
     if (s.known) return builder_.constant(asF(s.bits));
     if (s.node == Symbol::kNoNode) fail(loc, "a field's value cannot come from a point-dependent int or bool");
     return s.node;
@@ -105,6 +117,7 @@ class TapeTranslator {
 
   // A condition that must be decided at compile time.
   bool decide(int cond, SourceLoc loc, const char* what) {
+    if (const Symbol s = get(cond, loc); s.poison >= 0) failPoisoned(s);
     if (!knownValue(cond, loc))
       fail(loc, std::string(what) + " depends on the field's point: a field's branches must be decided when it is "
                                     "compiled (write a point-dependent choice with min, max or abs)");
@@ -149,10 +162,10 @@ class TapeTranslator {
   }
 
   // x^n for an integer n, by squaring.
-  uint32_t integerPower(uint32_t x, long n) {
+  uint32_t integerPower(uint32_t x, long long n) {
     if (n == 0) return builder_.constant(1.0f);
     const bool reciprocal = n < 0;
-    unsigned long m = static_cast<unsigned long>(std::labs(n));
+    unsigned long long m = static_cast<unsigned long long>(n < 0 ? -n : n);
     uint32_t result = Symbol::kNoNode, square = x;
     while (m) {
       if (m & 1) result = result == Symbol::kNoNode ? square : builder_.binary(FieldOp::Mul, result, square);
@@ -178,6 +191,12 @@ class TapeTranslator {
     const bool pure = static_cast<int>(in.op) < static_cast<int>(Op::Mov) && in.op != Op::CrossSign;
     if (!pure)
       fail(loc, std::string("'") + opName(in.op) + "' is not available in a field: a field is a pure function of its point");
+    // An operand that is already an error makes this value one too (raised where it is used).
+    for (int v : {in.a, in.b, in.c})
+      if (const Symbol s = get(v, loc); s.poison >= 0) {
+        set(in.dst, s);
+        return {};
+      }
     const bool known = knownValue(in.a, loc) && knownValue(in.b, loc) && knownValue(in.c, loc);
     if (known) {
       const auto bits = [&](int v) { return get(v, loc).bits; };
@@ -231,8 +250,8 @@ class TapeTranslator {
         // non-integer powers of negative numbers).
         if (knownValue(in.b, loc)) {
           const float y = asF(get(in.b, loc).bits);
-          if (y == std::floor(y) && std::fabs(y) <= 1024.0f) {
-            setNode(in.dst, integerPower(node(in.a, loc), static_cast<long>(y)), loc);
+          if (y == std::floor(y) && std::fabs(y) < 4.0e9f) {  // as the HyperFun reader's ^
+            setNode(in.dst, integerPower(node(in.a, loc), static_cast<long long>(y)), loc);
             return {};
           }
         }
@@ -247,9 +266,11 @@ class TapeTranslator {
       default: break;
     }
     const char* name = sourceName(in.op);
-    fail(loc, std::string("'") + (name ? name : opName(in.op)) +
-                  "' of a value that depends on the field's point has no tape form: a field's point-dependent part "
-                  "uses + - * / min max abs sqrt exp log sin cos tan pow");
+    poisons_.push_back({loc, std::string("'") + (name ? name : opName(in.op)) +
+                                 "' of a value that depends on the field's point has no tape form: a field's "
+                                 "point-dependent part uses + - * / min max abs sqrt exp log sin cos atan pow"});
+    set(in.dst, {false, 0, Symbol::kNoNode, static_cast<int>(poisons_.size()) - 1});
+    return {};
   }
 };
 

@@ -11,8 +11,9 @@
 // A field's point-dependent part may use only what a tape can evaluate soundly: + - * /, min,
 // max, abs, sqrt, exp, log, sin, cos, atan, and what is built from them: tan (sin / cos), asin,
 // acos and atan2 (through atan), pow (constant integer exponents as products; otherwise
-// exp(y log x)). A branch, a comparison or floor/ceil/sign/mod/noise of a point-dependent value
-// is a compile error that names the line.
+// exp(y log x)). A branch on a point-dependent value (if, loop condition, ?:), and floor/ceil/
+// sign/mod/noise of one, are compile errors that name the line (comparisons are fine until
+// something branches on them; an unsupported value is an error only where it is used).
 #pragma once
 
 #include <optional>

@@ -13,6 +13,8 @@ namespace {
 
 constexpr int kMaxDepth = 1000;  // deeper trees are left to the other methods
 
+double nanIgnoringMin(double a, double b) { return (a < b || b != b) ? a : b; }
+
 class TreeBuilder {
  public:
   TreeBuilder(const FieldTape& tape, size_t max_leaves)
@@ -68,13 +70,30 @@ class TreeBuilder {
     const auto p = squareOf(sum.a), q = squareOf(sum.b);
     return p && q && ((*p == a && *q == b) || (*p == b && *q == a));
   }
-  // k * sqrt(B) with B polynomial: (k, B); k = 1 for a bare sqrt.
+  // Whether v >= 0 wherever it is defined, by its form: squares, |.|, non-negative constants,
+  // and sums and non-negative multiples of those (the torus's off-axis distance is one).
+  bool provablyNonNegative(uint32_t v, int depth = 0) const {
+    if (depth > 64) return false;
+    const FieldInstr& i = at(v);
+    switch (i.op) {
+      case FieldOp::Square: case FieldOp::Abs: return true;
+      case FieldOp::Const: return i.value >= 0.0f;
+      case FieldOp::Add: return provablyNonNegative(i.a, depth + 1) && provablyNonNegative(i.b, depth + 1);
+      case FieldOp::Mul:
+        return i.a == i.b || (provablyNonNegative(i.a, depth + 1) && provablyNonNegative(i.b, depth + 1));
+      default: return false;
+    }
+  }
+  // k * sqrt(B) with B polynomial and never negative: (k, B); k = 1 for a bare sqrt. (Where B
+  // could be negative the field is NaN there -- outside for every sampling method -- which no
+  // min/max of polynomials reproduces: no tree then.)
   std::optional<std::pair<double, uint32_t>> scaledRoot(uint32_t v) const {
     const FieldInstr& i = at(v);
-    if (i.op == FieldOp::Sqrt && isPolynomial(i.a)) return std::make_pair(1.0, i.a);
+    const auto rootable = [&](uint32_t b) { return isPolynomial(b) && provablyNonNegative(b); };
+    if (i.op == FieldOp::Sqrt && rootable(i.a)) return std::make_pair(1.0, i.a);
     if (i.op != FieldOp::Mul) return std::nullopt;
     for (auto [k, r] : {std::make_pair(i.a, i.b), std::make_pair(i.b, i.a)}) {
-      if (at(k).op != FieldOp::Const || at(r).op != FieldOp::Sqrt || !isPolynomial(at(r).a)) continue;
+      if (at(k).op != FieldOp::Const || at(r).op != FieldOp::Sqrt || !rootable(at(r).a)) continue;
       return std::make_pair(static_cast<double>(at(k).value), at(r).a);
     }
     return std::nullopt;
@@ -185,8 +204,9 @@ double CsgTree::combine(const std::vector<RayPolynomial>& polys, double t) const
     const CsgNode& c = nodes[n];
     switch (c.kind) {
       case CsgNode::Kind::Leaf: value[n] = polys[c.value].evaluate(t); break;
-      case CsgNode::Kind::And: value[n] = std::min(value[c.a], value[c.b]); break;
-      case CsgNode::Kind::Or: value[n] = std::max(value[c.a], value[c.b]); break;
+      // NaN-ignoring, as the field's min and max (field_scalar.h).
+      case CsgNode::Kind::And: value[n] = nanIgnoringMin(value[c.a], value[c.b]); break;
+      case CsgNode::Kind::Or: value[n] = -nanIgnoringMin(-value[c.a], -value[c.b]); break;
       case CsgNode::Kind::Not: value[n] = -value[c.a]; break;
     }
   }
@@ -196,7 +216,7 @@ double CsgTree::combine(const std::vector<RayPolynomial>& polys, double t) const
 std::optional<double> CsgTree::firstHit(const std::array<double, 3>& origin, const std::array<double, 3>& direction,
                                         double entry, double exit, bool& solved) const {
   solved = false;
-  thread_local std::vector<RayPolynomial> polys;  // reused: a ray costs no allocation
+  thread_local std::vector<RayPolynomial> polys;  // reused per thread (rootsIn still allocates)
   thread_local std::vector<uint8_t> valid;
   thread_local std::vector<double> roots;
   rayPolynomials(tape, origin, direction, polys, valid);

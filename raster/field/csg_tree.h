@@ -7,8 +7,11 @@
 //   a + b +- sqrt(a^2 + b^2)  (HyperFun's | &)  -> a OR b, a AND b (the R0 functions have the
 //   a - b - sqrt(a^2 + b^2)   (HyperFun's \)       sign of max / min of their arguments)
 //   -a, c * a (constant c)                      -> NOT a, a or NOT a by c's sign
-//   A + k sqrt(B)  (A, B polynomial, k > 0)     -> A OR (k^2 B - A^2)   (the torus: HyperFun's
-//   A - k sqrt(B)                               -> A AND (A^2 - k^2 B)   hfTorus is of this form)
+//   A + k sqrt(B)  (A, B polynomial, k > 0,     -> A OR (k^2 B - A^2)   (the torus: HyperFun's
+//   A - k sqrt(B)   B >= 0 by its form)         -> A AND (A^2 - k^2 B)   hfTorus is of this form)
+// (B must be a sum of squares or the like: where B < 0 the field is NaN, outside for every
+// method, and no combination of polynomials says so.) NaN leaves are ignored by AND / OR as the
+// field's own min / max ignore NaN.
 // where AND / OR / NOT are min / max / negation of the values. The combination g(t) of the leaves'
 // ray polynomials has the field's sign everywhere along the ray, and changes sign only where a
 // leaf is zero: so the first surface point is among the leaves' roots -- found in double by

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -93,6 +94,26 @@ void expectHitsMatch(const FieldTape& tape, double tolerance = 1e-7) {
   }
   EXPECT_LE(mismatches, 2);
   EXPECT_GT(hits, 60);
+}
+
+// sqrt(B) with a B that can be negative: the field is NaN (outside) there, which no min/max of
+// polynomials says -- no tree, so `auto` and `analytic` do not draw a floor where B < 0.
+TEST(CsgTree, RootsOfPossiblyNegativeValuesAreNotLeaves) {
+  const FieldTape cap = language("field float cap(point p) { return sqrt(1.0 - p.x * p.x - p.y * p.y) - p.z; }");
+  EXPECT_FALSE(csgTreeOf(cap));
+  EXPECT_NE(resolveMethod(ImplicitField("cap", cap), RootMethod::Auto), RootMethod::Analytic);
+}
+
+// A NaN leaf (a folded 0/0) is ignored by AND / OR, as the field's min and max ignore it.
+TEST(CsgTree, NaNLeavesAreIgnoredAsTheFieldIgnoresThem) {
+  FieldTapeBuilder b;
+  const uint32_t x = b.x(), z = b.z();
+  const uint32_t disk = b.binary(FieldOp::Sub, b.constant(1.0f),
+                                 b.binary(FieldOp::Add, b.unary(FieldOp::Square, x), b.unary(FieldOp::Square, z)));
+  const uint32_t slab = b.binary(FieldOp::Sub, b.constant(0.5f), b.unary(FieldOp::Square, z));
+  const uint32_t nan = b.constant(std::numeric_limits<float>::quiet_NaN());
+  const FieldTape t = b.finish(b.binary(FieldOp::Max, b.binary(FieldOp::Min, nan, disk), slab));
+  expectHitsMatch(t);
 }
 
 TEST(CsgTree, RFunctionTreesHitWhereTheReferenceDoes) { expectHitsMatch(hyperfun(kTwoBallsMinusRod)); }

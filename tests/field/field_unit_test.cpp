@@ -113,6 +113,25 @@ field float angles(point p) {
   EXPECT_GT(countOps(t, FieldOp::Atan), 2u);
 }
 
+// The IR computes both arms of ?:; an arm a tape cannot hold is an error only when it is chosen.
+TEST(FieldUnit, UnsupportedValuesAreErrorsWhereUsed) {
+  const std::string source = "field float f(point p, float k) {\n  float a = k > 0.0 ? floor(p.x) : p.x;\n  return a;\n}\n";
+  expectMatches(compileOk(source, {-1.0f}), [](double x, double, double) { return x; }, 0.0);
+  EXPECT_NE(compileError(source, {1.0f}).find("f.pfl:2:23: error: 'floor (and fract, mod)' of a value that depends"),
+            std::string::npos) << compileError(source, {1.0f});
+  // An error inside a library function also names the field that called it.
+  const std::string in_library = compileError("field float g(point p) {\n  return hfSign(p.x);\n}\n");
+  EXPECT_NE(in_library.find("<stdlib>/hyperfun.pfl:"), std::string::npos) << in_library;
+  EXPECT_NE(in_library.find("f.pfl:1:1: note: in field 'g', through the functions it calls"), std::string::npos) << in_library;
+}
+
+// A whole exponent is products however large (as HyperFun's ^), so negative bases keep their sign.
+TEST(FieldUnit, LargeWholePowersAreProducts) {
+  const FieldTape t = compileOk("field float f(point p) { return pow(p.x * 0.999, 3001.0) + 0.0 * p.y; }");
+  EXPECT_EQ(countOps(t, FieldOp::Log), 0u);
+  EXPECT_LT(testing::evaluateDouble(t, -1.0, 0.0, 0.0), 0.0);
+}
+
 TEST(FieldUnit, ChoosesTheFieldByName) {
   const std::string source = "field float a(point p) { return p.x; }\nfield float b(point p) { return p.y; }\n";
   expectMatches(compileOk(source, {}, "b"), [](double, double y, double) { return y; }, 0.0);

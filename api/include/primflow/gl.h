@@ -206,8 +206,8 @@ void pfglSequencePointEXT(void);
 #define GL_FIELD_HYPERFUN_EXT 0x31031
 #define GL_FIELD_LANGUAGE_EXT 0x31032
 /* The `method` parameter of the implicit primitive: how it finds the surface along a ray. */
-#define GL_FIELD_METHOD_AUTO_EXT 0     /* analytic if polynomial (degree <= 4), sphere if Lipschitz, else interval */
-#define GL_FIELD_METHOD_ANALYTIC_EXT 1 /* the ray polynomial's first root */
+#define GL_FIELD_METHOD_AUTO_EXT 0     /* analytic if polynomial (degree <= 4) or a small CSG tree of such leaves, sphere if Lipschitz, else interval */
+#define GL_FIELD_METHOD_ANALYTIC_EXT 1 /* the ray polynomial's first root, or the first hit among a CSG tree's leaf roots */
 #define GL_FIELD_METHOD_INTERVAL_EXT 2 /* interval subdivision, block culling, tape simplification */
 #define GL_FIELD_METHOD_MARCH_EXT 3    /* `steps` uniform steps, then bisection */
 #define GL_FIELD_METHOD_SPHERE_EXT 4   /* sphere tracing with the declared bound (or `steps` as the bound) */
