@@ -457,7 +457,8 @@ Real hfSpaceMap(LibraryCall& c) {
 
 // Messages for the unsupported functions; '$' stands for the function's name.
 constexpr std::string_view kConvolution =
-    "'$' is not supported yet: its convolution integral (HyperFun's closed form with arctan terms) is not implemented";
+    "'$' is not supported yet: primflow does not have its convolution integral (HyperFun's closed form with "
+    "arctan terms)";
 constexpr std::string_view kAttribute =
     "attribute functions are not supported yet: '$' sets the s array's colour or material, and primflow's field "
     "tapes carry the shape only";

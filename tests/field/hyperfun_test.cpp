@@ -549,7 +549,7 @@ TEST(HyperFun, LibraryCallErrorsArePrecise) {
             "m.hf:2:12: error: 'sign' of a value that depends on the point is not supported yet");
   expectHas(compileError(model("my_model = floor(x[1]);")), "m.hf:2:12: error: 'floor' of a value");
   expectHas(compileError(model("array e[3];\ne = [0, 0, 0];\nmy_model = hfConvLine(x, e, e, e, 1);")),
-            "m.hf:4:12: error: 'hfConvLine' is not supported yet: its convolution integral");
+            "m.hf:4:12: error: 'hfConvLine' is not supported yet: primflow does not have its convolution integral");
   expectHas(compileError(model("my_model = hfA_Wave(1, 2, 3, 4);")),
             "m.hf:2:12: error: attribute functions are not supported yet: 'hfA_Wave'");
   expectHas(compileError(model("my_model = hfDUni(x[1], x[2], 1, 1);")),
