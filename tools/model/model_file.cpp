@@ -162,8 +162,11 @@ scene::Scene sceneOfModel(const Model& model, const ModelView& view) {
     c.fov_degrees = fov;
     s.lighting = true;
     s.global_ambient = {0.12, 0.12, 0.14, 1.0};
+    // drawModel's light, over the viewer's shoulder: its eye-space direction taken to the world
+    // (scene lights are given in world coordinates) through the inverse of the view's rotation.
     scene::Light light;
-    light.position = glm::normalize(glm::dvec3(0.4, 0.6, 1.0));
+    const glm::dmat4 view_matrix = glm::lookAt(c.eye, c.target, c.up);
+    light.position = glm::transpose(glm::dmat3(view_matrix)) * glm::dvec3(0.4, 0.6, 1.0);
     s.lights.push_back(light);
   }
   c.near = std::max(radius * 0.01, glm::length(c.eye - centre) - radius * 1.01);

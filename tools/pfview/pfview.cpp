@@ -1,6 +1,6 @@
 // pfview: primflow's scenes in a window (GLFW), to look at rather than read.
 //   pfview [SCENE.json | MODEL.vm|.hf|.pfl] [--size WxH] [--threads N] [--frames N [--orbit DEG]] [--screenshot FILE]
-//          [--window-shot FILE]
+//          [--window-shot FILE] [--keys KEYS]
 // primflow renders every frame into a buffer; the window's own GL context only shows it (a
 // texture over the window) with a text overlay. Mouse: left-drag orbits, right-drag (or
 // shift + left) pans, the wheel zooms. Keys: R reload the scene file, S save a screenshot,
@@ -14,6 +14,9 @@
 // (turning the camera --orbit degrees about the target before each after the first), saves
 // --screenshot (primflow's last frame, as pfrender would write it) and exits: the headless test.
 // --window-shot writes what the window shows at exit, overlay included (read back from it).
+// --keys presses keys before the first frame (e.g. "MM]": two methods on, steps doubled), and in
+// scripted mode the overlay's implicit-surface lines are printed on stdout at exit: that is how
+// the tests drive the method keys and read the accuracy figure without a person at the window.
 #include <CLI/CLI.hpp>
 
 #include <GLFW/glfw3.h>
@@ -224,12 +227,22 @@ std::vector<std::string> overlay(const Viewer& v, const pf::view::FrameRenderer&
   return lines;
 }
 
+// The GLFW key of one character of --keys: a letter, '[' or ']' (the keys pfview handles by name;
+// Home and Esc have no character and are of no use before the first frame).
+std::optional<int> scriptedKey(char c) {
+  if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+  if (c >= 'A' && c <= 'Z') return GLFW_KEY_A + (c - 'A');
+  if (c == '[') return GLFW_KEY_LEFT_BRACKET;
+  if (c == ']') return GLFW_KEY_RIGHT_BRACKET;
+  return std::nullopt;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"pfview: primflow's scenes in a window"};
   Viewer v;
-  std::string size, screenshot, window_shot;
+  std::string size, screenshot, window_shot, keys;
   int threads = 0, frames = 0;
   double orbit = 0;
   app.add_option("scene", v.scene_path, "scene file (.json) or model (.vm, .hf, .pfl); none: the built-in showcase");
@@ -239,6 +252,7 @@ int main(int argc, char** argv) {
   app.add_option("--orbit", orbit, "scripted mode: degrees to orbit before each frame after the first");
   app.add_option("--screenshot", screenshot, "write primflow's last frame to this PNG (scripted mode: at exit)");
   app.add_option("--window-shot", window_shot, "write the window's content (overlay included) to this PNG at exit");
+  app.add_option("--keys", keys, "press these keys before the first frame (letters, '[' and ']'; e.g. MM] )");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -248,6 +262,18 @@ int main(int argc, char** argv) {
       !pf::model::isModelPath(v.scene_path)) {
     std::cerr << "pfview: " << v.scene_path << ": error: unknown scene type (pfview opens .json scene files and .vm models)\n";
     return 1;
+  }
+  for (char c : keys) {
+    const std::optional<int> key = scriptedKey(c);
+    if (!key) {
+      std::cerr << "pfview: --keys takes letters, '[' and ']', not '" << c << "'\n";
+      return 2;
+    }
+    if (*key == GLFW_KEY_Q) {
+      std::cerr << "pfview: --keys: Q would quit before the first frame\n";
+      return 2;
+    }
+    v.keys.push_back(*key);
   }
   loadScene(v);
   int width = v.scene_ok ? v.scene.width : 960, height = v.scene_ok ? v.scene.height : 640;
@@ -396,6 +422,11 @@ int main(int argc, char** argv) {
       }
     }
     if (frames > 0 && !v.errors.empty()) status = 1;
+    if (frames > 0) {  // what the overlay said of the implicit surfaces, for scripts
+      const std::string implicit = implicitStatus(v.scene);
+      if (!implicit.empty()) std::cout << implicit << "\n";
+      if (!v.accuracy.empty()) std::cout << v.accuracy << "\n";
+    }
   }
   glfwDestroyWindow(window);
   glfwTerminate();
