@@ -82,6 +82,9 @@ class PixelExecutor {
   field::FieldRayCaster caster_;
   float field_box_[6] = {0, 0, 0, 0, 0, 0};
   std::unordered_map<const field::ImplicitField*, std::unique_ptr<field::GradientEvaluator>> gradients_;
+  // The gradient of a short tape (HitTapes): one evaluator per executor -- so per rasterizer
+  // thread -- reset() for each tape in turn, its storage reused.
+  field::GradientEvaluator short_gradient_;
   // The last FieldHit of this program run: its field, its hit lanes and the tapes that found
   // them (the gradient at a point inside a lane's box runs that lane's short tape).
   uint64_t run_serial_ = 0;  // counts program runs

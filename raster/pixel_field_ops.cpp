@@ -145,9 +145,10 @@ void PixelExecutor::fieldGradient(const RasterState& state, uint64_t exec, float
       g->second |= uint64_t(1) << i;
     }
     for (const auto& [tape, lanes] : groups) {
-      std::unique_ptr<field::GradientEvaluator> short_eval;
-      if (tape) short_eval = std::make_unique<field::GradientEvaluator>(*tape);
-      field::GradientEvaluator& ge = tape ? *short_eval : *full;
+      // A short tape runs on the executor's scratch evaluator, rebuilt for it in place (no
+      // allocation once its storage has grown to the tapes' size): the groups' tapes differ.
+      if (tape) short_gradient_.reset(*tape);
+      field::GradientEvaluator& ge = tape ? short_gradient_ : *full;
       if (by_differences) {
         for (uint64_t m = lanes; m; m &= m - 1) {
           const int i = __builtin_ctzll(m);

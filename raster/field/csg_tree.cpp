@@ -216,7 +216,7 @@ double CsgTree::combine(const std::vector<RayPolynomial>& polys, double t) const
 std::optional<double> CsgTree::firstHit(const std::array<double, 3>& origin, const std::array<double, 3>& direction,
                                         double entry, double exit, bool& solved) const {
   solved = false;
-  thread_local std::vector<RayPolynomial> polys;  // reused per thread (rootsIn still allocates)
+  thread_local std::vector<RayPolynomial> polys;  // reused per thread: no allocation per ray
   thread_local std::vector<uint8_t> valid;
   thread_local std::vector<double> roots;
   rayPolynomials(tape, origin, direction, polys, valid);

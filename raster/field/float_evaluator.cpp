@@ -7,12 +7,15 @@
 
 namespace pf::field {
 
-SlotProgram slotProgramOf(const FieldTape& tape) {
-  SlotProgram p;
+void buildSlotProgram(const FieldTape& tape, SlotProgram& p, SlotProgramScratch& scratch) {
   const size_t n = tape.instrs.size();
   if (n == 0) throw std::invalid_argument("field evaluator: empty field tape");
+  p.code.clear();
+  p.slot_count = 0;
+  p.result_slot = 0;
   // The last instruction that reads each value; the result is read "after the end".
-  std::vector<uint32_t> last_use(n, 0);
+  std::vector<uint32_t>& last_use = scratch.last_use;
+  last_use.assign(n, 0);
   for (uint32_t i = 0; i < n; ++i) {
     const FieldInstr& in = tape.instrs[i];
     const int arity = fieldOpArity(in.op);
@@ -20,8 +23,10 @@ SlotProgram slotProgramOf(const FieldTape& tape) {
     if (arity == 2) last_use[in.b] = i;
   }
   last_use[tape.result] = static_cast<uint32_t>(n);
-  std::vector<uint16_t> slot_of(n, 0);
-  std::vector<uint16_t> free_slots;
+  std::vector<uint16_t>& slot_of = scratch.slot_of;
+  slot_of.assign(n, 0);
+  std::vector<uint16_t>& free_slots = scratch.free_slots;
+  free_slots.clear();
   p.code.reserve(n);
   for (uint32_t i = 0; i < n; ++i) {
     const FieldInstr& in = tape.instrs[i];
@@ -45,6 +50,12 @@ SlotProgram slotProgramOf(const FieldTape& tape) {
     p.code.push_back(s);
   }
   p.result_slot = slot_of[tape.result];
+}
+
+SlotProgram slotProgramOf(const FieldTape& tape) {
+  SlotProgram p;
+  SlotProgramScratch scratch;
+  buildSlotProgram(tape, p, scratch);
   return p;
 }
 

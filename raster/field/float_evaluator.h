@@ -30,6 +30,17 @@ struct SlotProgram {
 };
 SlotProgram slotProgramOf(const FieldTape& tape);  // throws std::invalid_argument for an empty tape
 
+// The working arrays of building a slot program, kept to build the next one without allocating.
+struct SlotProgramScratch {
+  std::vector<uint32_t> last_use;
+  std::vector<uint16_t> slot_of;
+  std::vector<uint16_t> free_slots;
+};
+// slotProgramOf(tape) into `program`, reusing its code's and the scratch's storage: once they
+// have grown to the tapes' size, building allocates nothing. The same program, instruction for
+// instruction, as slotProgramOf (which is this with fresh storage).
+void buildSlotProgram(const FieldTape& tape, SlotProgram& program, SlotProgramScratch& scratch);
+
 // Runs `code` over lanes [0, n) of the slots at `slots` (Highway, the best target of this
 // machine). Lanes past n up to the next multiple of the vector width (<= 64) are computed too,
 // on whatever they hold. x, y, z: n inputs each (z null: 0).

@@ -28,6 +28,15 @@ class GradientEvaluator {
   static constexpr int kBatch = FloatEvaluator::kBatch;
 
   explicit GradientEvaluator(const FieldTape& tape);
+  // No field yet: evaluate() gives zeros until reset() names one.
+  GradientEvaluator() = default;
+  // Makes this the evaluator of `tape`, reusing the program's and the slots' storage: once they
+  // have grown to the largest tape it has run, reset() allocates nothing. A scratch evaluator for
+  // many short tapes, one after the other. The slots are not cleared: a lane's result never
+  // depends on what they held (every slot an instruction reads, an earlier one of the same run
+  // wrote), so the values are those of GradientEvaluator(tape), bit for bit. Throws as the
+  // constructor does, leaving the evaluator with no field.
+  void reset(const FieldTape& tape);
   // out[i] = f and its gradient at (x[i], y[i], z[i]) for i < n (n <= kBatch).
   void evaluate(const float* x, const float* y, const float* z, int n, FieldGradient* out);
   // One point: the batch's computation for one lane (the same value, bit for bit).
@@ -35,7 +44,8 @@ class GradientEvaluator {
 
  private:
   SlotProgram program_;
-  std::vector<float> slots_;  // slot_count x 4 x kBatch
+  std::vector<float> slots_;  // slot_count x 4 x kBatch (at least)
+  SlotProgramScratch scratch_;  // reset()'s
 };
 
 }  // namespace pf::field

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 
 namespace pf::field {
 namespace {
@@ -48,18 +47,21 @@ double refine(const std::array<double, 5>& c, int degree, double a, double b, do
 }  // namespace
 
 // Splitting at the derivative's roots, found the same way: each piece is monotone.
-std::vector<double> rootsIn(const std::array<double, 5>& c, int degree, double lo, double hi) {
-  if (!(hi >= lo)) return {};
+PolynomialRoots rootsIn(const std::array<double, 5>& c, int degree, double lo, double hi) {
+  PolynomialRoots roots;
+  if (!(hi >= lo)) return roots;
   while (degree > 0 && c[degree] == 0.0) --degree;
-  std::vector<double> roots;
   if (degree == 0) return roots;
-  std::vector<double> cuts = {lo};
+  // lo, the derivative's roots (at most R(3) = 6, see PolynomialRoots), hi.
+  std::array<double, PolynomialRoots::kCapacity> cuts;
+  size_t cut_count = 0;
+  cuts[cut_count++] = lo;
   if (degree >= 2) {
     const std::array<double, 5> dc = {c[1], 2 * c[2], 3 * c[3], 4 * c[4], 0.0};
-    for (double r : rootsIn(dc, degree - 1, lo, hi)) cuts.push_back(r);
+    for (double r : rootsIn(dc, degree - 1, lo, hi)) cuts[cut_count++] = r;
   }
-  cuts.push_back(hi);
-  for (size_t i = 0; i + 1 < cuts.size(); ++i) {
+  cuts[cut_count++] = hi;
+  for (size_t i = 0; i + 1 < cut_count; ++i) {
     const double a = cuts[i], b = cuts[i + 1];
     const double fa = evaluate(c, degree, a), fb = evaluate(c, degree, b);
     // A cut where p is zero within rounding: a touching (double) root, or a root at an end.
@@ -77,7 +79,7 @@ std::vector<double> rootsIn(const std::array<double, 5>& c, int degree, double l
 
 std::optional<double> firstRootIn(const std::array<double, 5>& c, int degree, double lo, double hi) {
   if (!(hi >= lo)) return std::nullopt;
-  const std::vector<double> roots = rootsIn(c, degree, lo, hi);
+  const PolynomialRoots roots = rootsIn(c, degree, lo, hi);
   if (roots.empty()) return std::nullopt;
   return roots.front();
 }

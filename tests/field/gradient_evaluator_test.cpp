@@ -2,7 +2,9 @@
 // double evaluation of the same tape, at points where the field is smooth.
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <random>
+#include <vector>
 
 #include "compiler/field/fidget_reader.h"
 #include "field/field_reference.h"
@@ -71,6 +73,39 @@ TEST(GradientEvaluator, EveryOperationHasItsDerivative) {
   EXPECT_NEAR(g.dy, dfdy, 1e-5);
   EXPECT_NEAR(g.dz, dfdz, 1e-5);
   EXPECT_NEAR(g.value, testing::evaluateDouble(t, X, Y, Z), 1e-5);
+}
+
+// The pixel executor's scratch evaluator (PixelExecutor::fieldGradient) runs many tapes one after
+// the other on the same storage, slots left as the last tape wrote them: every value equals a
+// fresh evaluator's, bit for bit, for every batch size -- a big tape after a small one (slots
+// grow), a small one after a big one (stale slots), and the same tape again.
+TEST(GradientEvaluator, ResetMatchesAFreshEvaluatorBitForBit) {
+  std::vector<FieldTape> tapes;
+  for (const char* name : {"fidget/tanglecube.vm", "fidget/bear.vm", "fidget/colonnade.vm"}) {
+    DiagnosticLog log;
+    tapes.push_back(*readFidgetModel(name, testing::readModelText(name), log));
+  }
+  FieldTapeBuilder b;
+  tapes.push_back(b.finish(b.binary(FieldOp::Mul, b.unary(FieldOp::Sin, b.x()), b.y())));
+  GradientEvaluator scratch;
+  float x[GradientEvaluator::kBatch], y[GradientEvaluator::kBatch], z[GradientEvaluator::kBatch];
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  for (int i = 0; i < GradientEvaluator::kBatch; ++i) x[i] = u(rng), y[i] = u(rng), z[i] = u(rng);
+  EXPECT_EQ(scratch.evaluate(0.5f, 0.5f, 0.5f).dx, 0.0f);  // no field yet: zeros
+  for (size_t order : {0, 1, 2, 3, 1, 3, 0, 2, 2}) {
+    const FieldTape& t = tapes[order];
+    GradientEvaluator fresh(t);
+    scratch.reset(t);
+    for (int n : {1, 3, 8, 13, 64}) {
+      FieldGradient want[GradientEvaluator::kBatch], got[GradientEvaluator::kBatch];
+      fresh.evaluate(x, y, z, n, want);
+      scratch.evaluate(x, y, z, n, got);
+      for (int i = 0; i < n; ++i)
+        ASSERT_EQ(std::memcmp(&want[i], &got[i], sizeof(FieldGradient)), 0)
+            << "tape " << order << ", n " << n << ", lane " << i;
+    }
+  }
 }
 
 }  // namespace

@@ -2,15 +2,22 @@
 // 4000 triangles -- submitted one glBegin / glEnd each, the worst case, and in one glBegin --
 // make the same small number of heap allocations (the frame's state changes: a channel layout
 // copied into the scene once), on the API thread and the rasterizer's threads alike (global
-// operator new counted while drawing).
+// operator new counted while drawing). Nor per ray of an implicit surface's analytic method
+// (CSG leaves' roots), nor per gradient of a short tape (the executor's scratch evaluator).
 #include <gtest/gtest.h>
 
 #include <primflow/gl.h>
 
+#include <array>
 #include <atomic>
+#include <cstdio>
 #include <cstdlib>
 #include <new>
 #include <vector>
+
+#include "compiler/field/field_tape.h"
+#include "raster/field/gradient_evaluator.h"
+#include "raster/field/polynomial_roots.h"
 
 namespace {
 std::atomic<bool> g_counting{false};
@@ -81,4 +88,111 @@ TEST(Allocation, NoHeapAllocationPerTriangleInTheSteadyState) {
   EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
   pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
   pfDestroyContext(ctx);
+}
+
+namespace {
+
+// Fidget text (negative inside): the union of two spheres of radius 0.6, centred at x = -0.3 and
+// x = 0.4 -- the min of two quadrics, a CSG tree the analytic method solves leaf by leaf.
+constexpr const char* kTwoSpheresVm =
+    "x var-x\ny var-y\nz var-z\ny2 square y\nz2 square z\nyz add y2 z2\nr const 0.36\n"
+    "ca const 0.3\nxa add x ca\nxa2 square xa\nsa add xa2 yz\na sub sa r\n"
+    "cb const 0.4\nxb sub x cb\nxb2 square xb\nsb add xb2 yz\nb sub sb r\nout min a b\n";
+
+// `instances` copies of the field, side by side, by the analytic method.
+void drawAnalyticFrame(GLuint field, int instances) {
+  pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  const GLuint f = pfglGetParamNameEXT("field"), lo = pfglGetParamNameEXT("box_min"),
+               hi = pfglGetParamNameEXT("box_max"), m = pfglGetParamNameEXT("method"),
+               steps = pfglGetParamNameEXT("steps");
+  for (int i = 0; i < instances; ++i) {
+    pfglMatrixMode(GL_MODELVIEW);
+    pfglLoadIdentity();
+    pfglTranslatef(-2.0f + 2.0f * static_cast<float>(i), 0.0f, 0.0f);
+    pfglBegin(pfglGetPrimitiveEXT("implicit"));
+    pfglRastParamfEXT(f, static_cast<float>(field));
+    pfglRastParam3fEXT(lo, -1, -1, -1);
+    pfglRastParam3fEXT(hi, 1, 1, 1);
+    pfglRastParamfEXT(m, static_cast<float>(GL_FIELD_METHOD_ANALYTIC_EXT));
+    pfglRastParamfEXT(steps, 0.0f);
+    pfglSequencePointEXT();
+    pfglEnd();
+  }
+  pfglFinish();
+}
+
+}  // namespace
+
+// Frames of one and of three CSG surfaces (the analytic method: each ray's leaf polynomials and
+// their roots, CsgTree::firstHit) make the same few allocations after a warm-up: none per ray.
+TEST(Allocation, NoHeapAllocationPerRayOfTheAnalyticMethod) {
+  std::vector<unsigned char> px(192 * 64 * 4);
+  const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_THREADS, 2, 0};
+  PFcontext ctx = pfCreateContextAttribs(attribs);
+  ASSERT_NE(ctx, nullptr);
+  pfMakeCurrent(ctx, px.data(), GL_UNSIGNED_BYTE, 192, 64);
+  pfglEnable(GL_DEPTH_TEST);
+  pfglMatrixMode(GL_PROJECTION);
+  pfglOrtho(-3, 3, -1, 1, -5, 5);
+  const GLuint field = pfglCompileFieldEXT(GL_FIELD_FIDGET_EXT, "two_spheres.vm", kTwoSpheresVm, 0.0f);
+  ASSERT_NE(field, 0u);
+  for (int k = 0; k < 2; ++k) drawAnalyticFrame(field, 3);  // warm-up: per-thread scratch grows
+  long counts[2];
+  for (int k = 0; k < 2; ++k) {
+    g_allocations = 0;
+    g_counting = true;
+    drawAnalyticFrame(field, 1 + 2 * k);
+    g_counting = false;
+    counts[k] = g_allocations.load();
+  }
+  long covered = 0;
+  for (size_t i = 1; i < px.size(); i += 4) covered += px[i] != 0 || px[i - 1] != 0 || px[i + 1] != 0;
+  std::printf("analytic frames of 1 and 3 surfaces: %ld and %ld allocations, %ld pixels covered\n", counts[0],
+              counts[1], covered);
+  EXPECT_GT(covered, 3 * 1000) << "the three surfaces are drawn";
+  EXPECT_EQ(counts[0], counts[1]) << "allocations grow with the rays";
+  EXPECT_LE(counts[1], 12);
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
+  pfDestroyContext(ctx);
+}
+
+// The pieces on their own: roots of quartics (every case rootsIn splits on: tangent and
+// clustered roots, roots at the ends), and the scratch gradient evaluator reset from tape to tape
+// once its storage has grown, allocate nothing at all.
+TEST(Allocation, RootsAndScratchGradientsAllocateNothing) {
+  using namespace pf::field;
+  FieldTapeBuilder small, big;
+  const FieldTape a = small.finish(small.binary(FieldOp::Mul, small.x(), small.y()));
+  uint32_t v = big.x();
+  for (int i = 0; i < 40; ++i)
+    v = big.binary(i % 2 ? FieldOp::Min : FieldOp::Add, v,
+                   big.binary(FieldOp::Mul, big.y(), big.constant(static_cast<float>(i + 1))));
+  const FieldTape b = big.finish(v);
+  GradientEvaluator scratch;
+  scratch.reset(b);  // warm-up: the storage grows to the bigger tape
+  scratch.reset(a);
+  float x[GradientEvaluator::kBatch] = {}, y[GradientEvaluator::kBatch] = {}, z[GradientEvaluator::kBatch] = {};
+  FieldGradient out[GradientEvaluator::kBatch];
+  const std::array<std::array<double, 5>, 4> quartics = {{
+      {24, -50, 35, -10, 1},      // roots 1, 2, 3, 4
+      {1, -4, 6, -4, 1},          // (t - 1)^4: touching
+      {0.25, 0, -1.25, 0, 1},     // roots +-0.5, +-1
+      {-1, 0, 0, 0, 1e-12},       // far roots, tiny leading coefficient
+  }};
+  double sum = 0.0;
+  g_allocations = 0;
+  g_counting = true;
+  for (int k = 0; k < 100; ++k) {
+    scratch.reset(k % 2 ? a : b);
+    scratch.evaluate(x, y, z, GradientEvaluator::kBatch, out);
+    for (const auto& c : quartics)
+      for (int degree = 1; degree <= 4; ++degree) {
+        for (double r : rootsIn(c, degree, -2.0, 4.0 + k)) sum += r;
+        if (auto r = firstRootIn(c, degree, 0.5, 1.0)) sum += *r;
+      }
+  }
+  g_counting = false;
+  EXPECT_EQ(g_allocations.load(), 0);
+  EXPECT_NE(sum, 0.0);
 }
