@@ -47,6 +47,9 @@ struct FunctionTable {
   // and the program's primitives not defined yet (a call must follow the callee's definition).
   std::map<std::string, PrimitiveSignature> primitives;
   std::set<std::string> later_primitives;
+  // Shared interpolators an interpolation label may name: compiled before, or defined earlier
+  // in the program.
+  std::set<std::string> interpolators;
 };
 
 class Analyzer {
@@ -89,6 +92,7 @@ class Analyzer {
   std::string varying_control_why_;
   int interp_depth_ = 0;
   InterpKindSet interp_kinds_ = 0;
+  std::string interp_named_;  // in a `name:` branch: the shared interpolator it computes
   // Enclosing loops: the statement, and the varying-control depth at its entry.
   struct LoopFrame {
     Stmt* loop;

@@ -35,9 +35,13 @@ enum class StmtKind { Block, Decl, Assign, ExprStmt, If, Return, Bound, Interpol
                       Loop, Break, Continue };
 
 // One branch of an `interpolation { ... }` construct: its labels and its statements.
+// One branch of `interpolation { ... }`: its labels -- kinds of interpolation (perspective_linear,
+// linear, default), or names of shared interpolators the primitive computes itself -- and body.
 struct InterpolationCase {
   std::vector<InterpKind> kinds;
-  std::vector<SourceLoc> label_locs;
+  std::vector<std::string> interpolators;  // `spherical:`: channels bound to that interpolator
+  std::vector<SourceLoc> kind_locs, name_locs;  // of each of the two
+  std::vector<SourceLoc> label_locs;            // every label's, in source order
   std::vector<StmtPtr> body;
 };
 

@@ -126,6 +126,7 @@ void stmt(const Stmt& s, int depth, std::string& out) {
       for (const InterpolationCase& c : s.cases) {
         out += pad + " ";
         for (InterpKind k : c.kinds) out += std::string(" ") + interpKindName(k) + ":";
+        for (const std::string& n : c.interpolators) out += " " + n + ":";
         out += "\n";
         stmts(c.body, depth + 2, out);
       }

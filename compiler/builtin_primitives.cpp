@@ -7,11 +7,13 @@ namespace pf {
 
 namespace {
 
-// A file may call primitives of other files: files are compiled in rounds, each round taking
-// the files whose callees are now compiled, until no file is left or a round makes no progress
+// A file may call primitives of other files (and name their shared interpolators in its
+// interpolation labels): files are compiled in rounds, each round taking the files whose
+// callees are now compiled, until no file is left or a round makes no progress
 // (then the errors of what is left are the report).
 BuiltinPrimitives compileAll() {
   BuiltinPrimitives out;
+  std::set<std::string> interpolator_names;  // compiled so far: interpolation labels may name them
   std::vector<int> pending;
   for (int i = 0; i < kEmbeddedPrimitiveCount; ++i) pending.push_back(i);
   while (!pending.empty()) {
@@ -22,7 +24,7 @@ BuiltinPrimitives compileAll() {
       CompiledModule module;
       DiagnosticLog log;
       if (!compileSource(std::string("primitives/") + src.file_name, src.text, module, log, EmitStage::None,
-                         nullptr, true, &out.by_name)) {
+                         nullptr, true, &out.by_name, &interpolator_names)) {
         failed.push_back(i);
         errors += log.format();
         continue;
@@ -31,7 +33,10 @@ BuiltinPrimitives compileAll() {
         out.by_name[p->name] = p;
         out.in_order.push_back(p);
       }
-      for (auto& p : module.interpolators) out.interpolators.push_back(p);
+      for (auto& p : module.interpolators) {
+        out.interpolators.push_back(p);
+        interpolator_names.insert(p->name);
+      }
     }
     if (failed.size() == pending.size()) {
       out.errors = errors;

@@ -1,5 +1,5 @@
 // Typing of built-in function calls (see builtins.h). Their expansion into instructions is in
-// lower.cpp (call()); docs/language.md lists them.
+// lower_expressions.cpp (Lowerer::call()); docs/language.md lists them.
 #include "compiler/builtins.h"
 
 #include <set>

@@ -1,5 +1,5 @@
 // The built-in functions of the language: their argument rules and result types.
-// (Their meaning is in lower.cpp, which expands each call into instructions.)
+// (Their meaning is in lower_expressions.cpp, whose call() expands each call into instructions.)
 #pragma once
 
 #include <functional>

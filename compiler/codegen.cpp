@@ -19,7 +19,7 @@ bool isSetupOnlyLoad(Op op) { return op == Op::LoadParamAt || op == Op::XLoadVer
 
 bool isPixelEffect(Op op) {
   return op == Op::Retire || op == Op::ZTest || op == Op::InterpReturn || op == Op::InterpShared ||
-         op == Op::ZCommit || op == Op::ShadeOut || op == Op::SurfaceCommit || op == Op::FieldBox ||
+         op == Op::ZCommit || op == Op::ShadeOut || op == Op::InterpNamedReturn || op == Op::SurfaceCommit || op == Op::FieldBox ||
          op == Op::FieldHit;
 }
 

@@ -61,7 +61,8 @@ const StandardLibraryIndex& standardLibraryIndex() {
 }  // namespace
 
 bool analyzeSource(const std::string& filename, const std::string& text, DiagnosticLog& log, Program& program,
-                   const std::map<std::string, PrimitiveSignature>& callable, EmitStage emit, std::string* listing) {
+                   const std::map<std::string, PrimitiveSignature>& callable, EmitStage emit, std::string* listing,
+                   const std::set<std::string>& interpolators) {
   const SourceFile& file = log.addSource(filename, text);
   program = parse(file, log);
   if (log.hasErrors()) return false;
@@ -106,12 +107,12 @@ bool analyzeSource(const std::string& filename, const std::string& text, Diagnos
     program.units = std::move(library.units);
     for (Unit& u : own.units) program.units.push_back(std::move(u));
   }
-  return analyze(program, log, callable);
+  return analyze(program, log, callable, interpolators);
 }
 
 bool compileSource(const std::string& filename, const std::string& text, CompiledModule& out,
                    DiagnosticLog& log, EmitStage emit, std::string* listing, bool optimize_ir,
-                   const PrimitiveTable* callable) {
+                   const PrimitiveTable* callable, const std::set<std::string>* interpolators) {
   std::map<std::string, PrimitiveSignature> signatures;
   PrimitiveTable primitives;  // what the primitive being compiled may call
   if (callable) {
@@ -119,7 +120,9 @@ bool compileSource(const std::string& filename, const std::string& text, Compile
     for (const auto& [name, p] : *callable) signatures[name] = p->signature;
   }
   Program program;
-  if (!analyzeSource(filename, text, log, program, signatures, emit, listing)) return false;
+  if (!analyzeSource(filename, text, log, program, signatures, emit, listing,
+                     interpolators ? *interpolators : std::set<std::string>{}))
+    return false;
   std::map<std::string, const Unit*> functions;
   for (const Unit& u : program.units)
     if (u.kind == UnitKind::Function || u.kind == UnitKind::Field) functions[u.name] = &u;
@@ -154,6 +157,7 @@ bool compileSource(const std::string& filename, const std::string& text, Compile
     }
     prim->has_interp_data = ir.has_interp_data;
     prim->kinds_handled = ir.kinds_handled;
+    prim->named_interpolators = ir.named_interpolators;
     // A primitive whose calls set N is lit per pixel too (the cylinder: its quadric and disks).
     prim->writes_normal = ir.writes_normal;
     for (const auto& callee : prim->callees) prim->writes_normal |= callee->writes_normal;

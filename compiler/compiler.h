@@ -4,6 +4,7 @@
 
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,15 @@ struct CompiledPrimitive {
   std::vector<std::shared_ptr<const CompiledPrimitive>> callees;
   int call_depth = 0;
   InterpKindSet kinds_handled = 0;
+  // The shared interpolators it computes itself (its `name:` interpolation labels; Op::HasNamed
+  // and Op::InterpNamedReturn index this): channels bound to one of them are filled by the
+  // primitive's branch, not by the interpolator's program.
+  std::vector<std::string> named_interpolators;
+  bool computesInterpolator(const std::string& interpolator) const {
+    for (const std::string& n : named_interpolators)
+      if (n == interpolator) return true;
+    return false;
+  }
   bool writes_normal = false;  // sets N, or calls a primitive that does: pixels carry P and N to shading
   SetupProgram setup;
   PixelProgram pixel;
@@ -69,15 +79,17 @@ enum class EmitStage { None, Ast, Ir, Setup, Pixel, Explain };
 // call, besides the ones it defines itself.
 // The front end that primitives and fields share: parses `text`, adds the standard library's
 // functions and analyzes the program (types, uniform / varying). `callable`: the signatures of
-// primitives compiled before that the source may call. `listing` receives the AST for
-// EmitStage::Ast.
+// primitives compiled before that the source may call; `interpolators`: the names of shared
+// interpolators compiled before, which interpolation labels may name. `listing` receives the
+// AST for EmitStage::Ast.
 bool analyzeSource(const std::string& filename, const std::string& text, DiagnosticLog& log, Program& program,
                    const std::map<std::string, PrimitiveSignature>& callable, EmitStage emit = EmitStage::None,
-                   std::string* listing = nullptr);
+                   std::string* listing = nullptr, const std::set<std::string>& interpolators = {});
 
+// `interpolators`: as analyzeSource's (null: none).
 bool compileSource(const std::string& filename, const std::string& text, CompiledModule& out,
                    DiagnosticLog& log, EmitStage emit = EmitStage::None,
                    std::string* listing = nullptr, bool optimize = true,
-                   const PrimitiveTable* callable = nullptr);
+                   const PrimitiveTable* callable = nullptr, const std::set<std::string>* interpolators = nullptr);
 
 }  // namespace pf

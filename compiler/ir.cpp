@@ -62,7 +62,8 @@ void dumpBlock(const IrFunction& f, const IrBlock& b, int depth, std::string& ou
       out += (first ? " " : ", ") + valueName(f, o);
       first = false;
     }
-    if (in.op == Op::XLoadVertex || in.op == Op::LoadState || in.op == Op::InterpReturn || in.op == Op::InterpShared)
+    if (in.op == Op::XLoadVertex || in.op == Op::LoadState || in.op == Op::InterpReturn || in.op == Op::InterpShared ||
+        in.op == Op::HasKinds || in.op == Op::HasNamed || in.op == Op::InterpNamedReturn)
       out += (first ? " imm=" : ", imm=") + std::to_string(in.imm);
     out += "\n";
   }

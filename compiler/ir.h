@@ -75,6 +75,9 @@ struct IrFunction {
   std::vector<std::string> callees;  // primitives it calls: Op::Emit's imm indexes this
   bool has_interp_data = false;
   InterpKindSet kinds_handled = 0;  // labels of its interpolation construct
+  // Shared interpolators it computes itself (`spherical:` labels): Op::HasNamed's and
+  // Op::InterpNamedReturn's imm indexes this.
+  std::vector<std::string> named_interpolators;
   bool writes_normal = false;       // sets N: lit per pixel (Op::SurfaceCommit)
 };
 

@@ -11,8 +11,8 @@ const char* opName(Op op) {
       "fsign", "fsin", "fcos", "ftan", "fasin", "facos", "fatan", "fatan2", "fpow", "fexp", "flog",
       "fnoise", "iadd", "isub", "imul", "idiv", "imod", "ineg", "imin", "imax", "iabs", "i2f",
       "f2i", "flt", "fle", "feq", "fne", "ilt", "ile", "ieq", "ine", "band", "bor", "bnot", "sel", "cross_sign",
-      "mov", "xadd", "xsub", "xneg", "xmulf", "xdivf", "xmov", "xloadvertex", "xsel", "loadparamat", "xloadvertexat", "loadstate", "haskinds",
-      "bound", "kill", "retire", "ztest", "interp_return", "interp_shared", "shadeout", "zcommit", "surfacecommit", "fieldbox", "fieldhit", "fieldgradient", "outparam", "outvertex", "emit", "backfacing",
+      "mov", "xadd", "xsub", "xneg", "xmulf", "xdivf", "xmov", "xloadvertex", "xsel", "loadparamat", "xloadvertexat", "loadstate", "haskinds", "hasnamed",
+      "bound", "kill", "retire", "ztest", "interp_return", "interp_shared", "shadeout", "interp_named_return", "zcommit", "surfacecommit", "fieldbox", "fieldhit", "fieldgradient", "outparam", "outvertex", "emit", "backfacing",
       "loopbegin", "looptest", "break", "continue", "loopcontinue", "loopback", "loopend", "jmp",
       "jmpifnot", "maskif", "maskelse", "maskend", "jmpifnone"};
   static_assert(sizeof(names) / sizeof(names[0]) == static_cast<size_t>(Op::OpCount));
@@ -84,7 +84,7 @@ std::string disassemble(const Bytecode& b, bool pixel) {
     if (in.d != kNoOperand) parts.push_back(operandText(in.d, b, pixel, false));
     if (in.op == Op::Bound) parts.push_back(operandText(in.dst, b, pixel, false));
     if (in.op == Op::XLoadVertex || in.op == Op::LoadState || in.op == Op::InterpReturn || in.op == Op::HasKinds ||
-        in.op == Op::InterpShared || in.op == Op::OutParam || in.op == Op::OutVertex || in.op == Op::Emit ||
+        in.op == Op::HasNamed || in.op == Op::InterpNamedReturn || in.op == Op::InterpShared || in.op == Op::OutParam || in.op == Op::OutVertex || in.op == Op::Emit ||
         in.op == Op::LoadParamAt)
       parts.push_back("imm=" + std::to_string(in.imm));
     if (in.op == Op::Break && in.imm > 1) parts.push_back("levels=" + std::to_string(in.imm));

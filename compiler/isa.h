@@ -37,6 +37,7 @@ enum class Op : uint8_t {
   // state of the instance's GL context: imm = StateValue
   LoadState,
   HasKinds,  // dst = the instance has shading channels of a kind in set imm (bool)
+  HasNamed,  // dst = the instance has channels bound to shared interpolator named_interpolators[imm]
   // effects
   Bound,         // setup: screen bound (a, b, c, dst) = (xmin, ymin, xmax, ymax)
   Kill,          // setup: the instance draws nothing
@@ -46,6 +47,8 @@ enum class Op : uint8_t {
   InterpShared,  // pixel: run the shared interpolators bound to channels of kinds `imm`, with
                  // the surface point P = (a, b, c, d)
   ShadeOut,      // pixel, in a shared interpolator: its value (a, b, c, d)
+  InterpNamedReturn,  // pixel: write (a, b, c, d) into the channels bound to the shared
+                      // interpolator named_interpolators[imm] (the primitive computes it)
   ZCommit,       // pixel: a is the Z to write for lanes alive at the end
   SurfaceCommit, // pixel: the surface for per-pixel lighting: imm 0: P = (a, b, c, d); 1: N = (a, b, c)
   // implicit surfaces (raster/field/ray_caster.h): a field of the context (its id, uniform) along

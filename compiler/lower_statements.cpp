@@ -105,6 +105,10 @@ bool Lowerer::statement(const Stmt& s) {
     }
     case StmtKind::Interpolation: {
       for (const InterpolationCase& c : s.cases) {
+        if (!c.interpolators.empty()) {
+          if (namedBranches(c)) return false;
+          continue;
+        }
         InterpKindSet set = 0;
         for (InterpKind k : c.kinds) set |= 1u << static_cast<int>(k);
         f_.kinds_handled |= set;
@@ -132,6 +136,13 @@ bool Lowerer::statement(const Stmt& s) {
         emitEffect(Op::ShadeOut, c[0], c[1], c[2], c[3], 0, s.loc);
         return false;
       }
+      if (named_index_ >= 0) {  // the primitive's own value of a shared interpolator, as one returns it
+        Binding b = expr(*s.value);
+        int c[4] = {constF(0.0f), constF(0.0f), constF(0.0f), constF(1.0f)};
+        for (size_t k = 0; k < b.comps.size() && k < 4; ++k) c[k] = toFloat(b.comps[k]);
+        emitEffect(Op::InterpNamedReturn, c[0], c[1], c[2], c[3], named_index_, s.loc);
+        return false;
+      }
       if (s.value) {
         int v = expr(*s.value).comps[0];
         emitEffect(Op::InterpReturn, v, -1, -1, -1, static_cast<int>(interp_kinds_), s.loc);
@@ -141,6 +152,32 @@ bool Lowerer::statement(const Stmt& s) {
         emitEffect(Op::InterpShared, p[0], p[1], p[2], p[3], static_cast<int>(interp_kinds_), s.loc);
       }
       return false;
+  }
+  return false;
+}
+
+// The branch of `name:` labels: for each name, the body runs (a uniform if) only for instances
+// with channels bound to that shared interpolator, and its interpolator_return(value) fills
+// them (Op::InterpNamedReturn; the pixel executor then skips that interpolator's program).
+// Returns true where lowering must stop (an error).
+bool Lowerer::namedBranches(const InterpolationCase& c) {
+  for (const std::string& name : c.interpolators) {
+    auto known = std::find(f_.named_interpolators.begin(), f_.named_interpolators.end(), name);
+    const int index = static_cast<int>(known - f_.named_interpolators.begin());
+    if (known == f_.named_interpolators.end()) f_.named_interpolators.push_back(name);
+    InterpKindSet save_kinds = interp_kinds_;
+    const int save_index = named_index_;
+    interp_kinds_ = 0;  // no interpolator_data channels belong to this branch
+    named_index_ = index;
+    int has = emit(Op::HasNamed, ValueClass::Bool, false, -1, -1, -1, index, c.label_locs.front());
+    bool t = false;
+    branch(has, c.label_locs.front(), [&] { return t = scoped(c.body); }, [] { return false; });
+    interp_kinds_ = save_kinds;
+    named_index_ = save_index;
+    if (t) {
+      log_.error(c.label_locs.front(), "an interpolation branch cannot end in 'return': the other branches must still run");
+      return true;
+    }
   }
   return false;
 }

@@ -78,6 +78,7 @@ class Lowerer {
   std::vector<LoopContext> loops_;
   int varying_depth_ = 0;
   InterpKindSet interp_kinds_ = kAllInterpKinds;
+  int named_index_ = -1;  // in a `name:` branch: its index in f_.named_interpolators
   int z_initial_ = -1;
   std::vector<int> n_initial_;
   SourceLoc cur_loc_;
@@ -156,6 +157,7 @@ class Lowerer {
   // The body of function (or field) `fn` inlined with `args` as its parameters' values.
   Binding inlineFunction(const Unit& fn, const std::vector<Binding>& args, SourceLoc call_loc);
 
+  bool namedBranches(const InterpolationCase& c);
   bool ifStatement(const Stmt& s);
 
   // An if node on `cond`: each part lowers its branch and says whether it always returns;

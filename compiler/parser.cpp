@@ -47,6 +47,12 @@ class Parser {
   const Token& cur() const { return t_[pos_]; }
   const Token& next() const { return t_[std::min(pos_ + 1, t_.size() - 1)]; }
   bool at(Tok k) const { return cur().kind == k; }
+  // A label of the interpolation construct: a kind's keyword, or `name:` (no statement begins
+  // with a name and a colon, so the name is a shared interpolator's).
+  bool atInterpolationLabel() const {
+    return at(Tok::KwPerspectiveLinear) || at(Tok::KwLinear) || at(Tok::KwDefault) ||
+           (at(Tok::Ident) && next().kind == Tok::Colon);
+  }
   Token take() {
     Token tk = cur();
     if (pos_ + 1 < t_.size()) ++pos_;
@@ -393,19 +399,24 @@ class Parser {
       InterpolationCase c;
       // one or more labels
       bool any = false;
-      while (at(Tok::KwPerspectiveLinear) || at(Tok::KwLinear) || at(Tok::KwDefault)) {
+      while (atInterpolationLabel()) {
         Token lab = take();
         c.label_locs.push_back(lab.loc);
-        c.kinds.push_back(lab.kind == Tok::KwPerspectiveLinear ? InterpKind::PerspectiveLinear
-                          : lab.kind == Tok::KwLinear          ? InterpKind::Linear
-                                                               : InterpKind::Shared);
+        if (lab.kind == Tok::Ident) {  // a shared interpolator's name
+          c.interpolators.push_back(lab.text);
+          c.name_locs.push_back(lab.loc);
+        } else {
+          c.kinds.push_back(lab.kind == Tok::KwPerspectiveLinear ? InterpKind::PerspectiveLinear
+                            : lab.kind == Tok::KwLinear          ? InterpKind::Linear
+                                                                 : InterpKind::Shared);
+          c.kind_locs.push_back(lab.loc);
+        }
         expect(Tok::Colon, "after the interpolation label");
         any = true;
       }
       if (!any)
-        fail(cur().loc, "expected an interpolation label ('perspective_linear:', 'linear:' or 'default:'), found " + describe(cur()));
-      while (!at(Tok::RBrace) && !at(Tok::End) && !at(Tok::KwPerspectiveLinear) &&
-             !at(Tok::KwLinear) && !at(Tok::KwDefault)) {
+        fail(cur().loc, "expected an interpolation label ('perspective_linear:', 'linear:', 'default:' or an interpolator's name), found " + describe(cur()));
+      while (!at(Tok::RBrace) && !at(Tok::End) && !atInterpolationLabel()) {
         try {
           c.body.push_back(statement());
         } catch (const Sync&) {

@@ -18,7 +18,7 @@ namespace {
 
 bool isEffect(Op op) {
   switch (op) {
-    case Op::Bound: case Op::Kill: case Op::Retire: case Op::InterpReturn: case Op::InterpShared: case Op::ShadeOut:
+    case Op::Bound: case Op::Kill: case Op::Retire: case Op::InterpReturn: case Op::InterpShared: case Op::ShadeOut: case Op::InterpNamedReturn:
     case Op::SurfaceCommit: case Op::FieldBox:
     case Op::FieldHit:  // reads the box FieldBox staged: never merged with another, never moved
     case Op::ZCommit: case Op::Break: case Op::Continue: case Op::OutParam: case Op::OutVertex:

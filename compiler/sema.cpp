@@ -263,9 +263,11 @@ PrimitiveSignature signatureOf(const Unit& u) {
   return sig;
 }
 
-bool analyze(Program& program, DiagnosticLog& log, const std::map<std::string, PrimitiveSignature>& callable) {
+bool analyze(Program& program, DiagnosticLog& log, const std::map<std::string, PrimitiveSignature>& callable,
+             const std::set<std::string>& interpolators) {
   FunctionTable functions;
   functions.primitives = callable;
+  functions.interpolators = interpolators;
   for (const Unit& u : program.units)
     if (u.kind == UnitKind::Primitive) functions.later_primitives.insert(u.name);
   std::set<std::string> names;
@@ -295,6 +297,7 @@ bool analyze(Program& program, DiagnosticLog& log, const std::map<std::string, P
   for (Unit& u : program.units) {
     Analyzer a(log, functions);
     a.unit(u);
+    if (u.kind == UnitKind::Interpolator) functions.interpolators.insert(u.name);
     if (u.kind == UnitKind::Primitive) {
       functions.later_primitives.erase(u.name);
       functions.primitives[u.name] = signatureOf(u);

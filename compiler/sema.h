@@ -5,6 +5,7 @@
 #pragma once
 
 #include <map>
+#include <set>
 #include <string>
 
 #include "compiler/ast.h"
@@ -12,9 +13,12 @@
 namespace pf {
 
 // Analyses every unit of the program in place (Expr::type, Expr::varying). Returns false if
-// any error was logged. `callable`: primitives compiled before, which its primitives may call.
+// any error was logged. `callable`: primitives compiled before, which its primitives may call;
+// `interpolators`: the shared interpolators compiled before, which an interpolation label may
+// name (besides those the program defines before the label).
 bool analyze(Program& program, DiagnosticLog& log,
-             const std::map<std::string, PrimitiveSignature>& callable = {});
+             const std::map<std::string, PrimitiveSignature>& callable = {},
+             const std::set<std::string>& interpolators = {});
 PrimitiveSignature signatureOf(const Unit& u);
 
 }  // namespace pf

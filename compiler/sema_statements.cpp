@@ -96,18 +96,32 @@ void Analyzer::statement(Stmt& s) {
       if (unit_->kind != UnitKind::Primitive) err(s.loc, "the interpolation construct is only allowed in a primitive");
       if (interp_depth_ > 0) err(s.loc, "interpolation constructs cannot be nested");
       InterpKindSet seen = 0;
+      std::set<std::string> seen_names;
       for (InterpolationCase& c : s.cases) {
         InterpKindSet set = 0;
         for (size_t i = 0; i < c.kinds.size(); ++i) {
           InterpKindSet bit = 1u << static_cast<int>(c.kinds[i]);
-          if (seen & bit) err(c.label_locs[i], std::string("interpolation label '") + interpKindName(c.kinds[i]) + "' appears twice");
+          if (seen & bit) err(c.kind_locs[i], std::string("interpolation label '") + interpKindName(c.kinds[i]) + "' appears twice");
           seen |= bit;
           set |= bit;
         }
+        for (size_t i = 0; i < c.interpolators.size(); ++i) {
+          const std::string& name = c.interpolators[i];
+          if (!seen_names.insert(name).second)
+            err(c.name_locs[i], "interpolation label '" + name + "' appears twice");
+          if (!functions_.interpolators.count(name))
+            err(c.name_locs[i], "'" + name + "' is not a shared interpolator: an interpolation label names one " +
+                                    "compiled before, or defined earlier in this source (or is perspective_linear, linear or default)");
+        }
+        if (!c.interpolators.empty() && !c.kinds.empty())
+          err(c.name_locs[0], "the branch of interpolator '" + c.interpolators[0] + "' cannot share its body with '" +
+                                  interpKindName(c.kinds[0]) + "': their interpolator_return take different values");
         ++interp_depth_;
         InterpKindSet save = interp_kinds_;
         interp_kinds_ = set;
+        interp_named_ = c.interpolators.empty() ? "" : c.interpolators[0];
         scoped(c.body);
+        interp_named_.clear();
         interp_kinds_ = save;
         --interp_depth_;
       }
@@ -128,6 +142,20 @@ void Analyzer::statement(Stmt& s) {
       }
       if (interp_depth_ == 0) {
         err(s.loc, "interpolator_return is only allowed inside an interpolation { ... } construct");
+        break;
+      }
+      if (!interp_named_.empty()) {  // the primitive's own value of a shared interpolator
+        if (!s.value) {
+          err(s.loc, "in the '" + interp_named_ + ":' branch, interpolator_return takes the interpolator's value: " +
+                         "interpolator_return(value)");
+          break;
+        }
+        expr(*s.value);
+        const Type& t = s.value->type;
+        if (t.base != BaseType::Void && (t.isArray() || !(isNumericScalar(t) || isAggregate(t))))
+          err(s.value->loc, "interpolator_return(value) in the '" + interp_named_ +
+                                ":' branch returns the value of interpolator '" + interp_named_ +
+                                "' (a float, point, vector, normal or color), not " + typeName(t));
         break;
       }
       if (s.value) {

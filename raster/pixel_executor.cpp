@@ -102,8 +102,9 @@ void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* reco
   }
 }
 
-void PixelExecutor::runSharedInterpolators(const ChannelLayout& layout, const RasterState& state, int bx, int by,
-                                           uint64_t exec, const uint32_t* const p[4], const bool p_wide[4],
+void PixelExecutor::runSharedInterpolators(const CompiledPrimitive& prim, const ChannelLayout& layout,
+                                           const RasterState& state, int bx, int by, uint64_t exec,
+                                           const uint32_t* const p[4], const bool p_wide[4],
                                            const uint32_t* shared_records) {
   if (layout.shared.empty() || exec == 0 || !shared_records) return;
   alignas(64) uint32_t p_lanes[4 * kLanes];
@@ -112,6 +113,8 @@ void PixelExecutor::runSharedInterpolators(const ChannelLayout& layout, const Ra
   if (!shared_) shared_ = std::make_unique<PixelExecutor>();
   static const ChannelLayout kNoChannels;
   for (const ChannelLayout::SharedInterpolator& s : layout.shared) {
+    // An interpolator the primitive computes itself (a `name:` label) is the primitive's to fill.
+    if (prim.computesInterpolator(s.program->name)) continue;
     PixelExecutor& sub = *shared_;
     sub.shade_out_.assign(4 * kLanes, 0u);
     sub.execute(*s.program, shared_records + s.record_offset, kNoChannels, state, bx, by, exec, BlockTarget{},
@@ -378,7 +381,7 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const uint32_t* r
         bool pw[4];
         const uint32_t ops[4] = {ins.a, ins.b, ins.c, ins.d};
         for (int k = 0; k < 4; ++k) pv[k] = src(ops[k], pw[k]);
-        runSharedInterpolators(layout, state, bx, by, exec, pv, pw, shared_records);
+        runSharedInterpolators(prim, layout, state, bx, by, exec, pv, pw, shared_records);
         continue;
       }
       case Op::SurfaceCommit: {  // P (imm 0) or N (imm 1) of the lanes alive at the end
@@ -398,6 +401,26 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const uint32_t* r
           bool w;
           const uint32_t* v = src(ops[k], w);
           run(Op::Mov, shade_out_.data() + static_cast<size_t>(k) * kLanes, v, w, kZeroLanes, false, kZeroLanes, false, exec);
+        }
+        continue;
+      }
+      case Op::HasNamed: {  // uniform; here only inside a loop that runs per pixel
+        uint32_t* d = regs_.data() + static_cast<size_t>(operandIndex(ins.dst)) * kLanes;
+        std::fill(d, d + kLanes,
+                  layout.bindsInterpolator(prim.named_interpolators[static_cast<size_t>(ins.imm)]) ? 1u : 0u);
+        continue;
+      }
+      case Op::InterpNamedReturn: {  // the primitive's own value for channels of a shared interpolator
+        const std::string& name = prim.named_interpolators[static_cast<size_t>(ins.imm)];
+        const uint32_t ops[4] = {ins.a, ins.b, ins.c, ins.d};
+        for (const ChannelLayout::SharedInterpolator& s : layout.shared) {
+          if (s.program->name != name) continue;
+          for (int k = 0; k < 4; ++k) {
+            bool w;
+            const uint32_t* v = src(ops[k], w);
+            run(Op::Mov, staging_.data() + static_cast<size_t>(s.first + k) * kLanes, v, w, kZeroLanes, false,
+                kZeroLanes, false, exec);
+          }
         }
         continue;
       }

@@ -66,9 +66,9 @@ class PixelExecutor {
                    const RasterState& state, int bx, int by, uint64_t mask, const BlockTarget& target,
                    const uint32_t* shared_records, const uint32_t* p_in);
   // Runs the layout's shared interpolators for the `exec` lanes at surface point P (4 operands)
-  // into their staging channels.
-  void runSharedInterpolators(const ChannelLayout& layout, const RasterState& state, int bx, int by,
-                              uint64_t exec, const uint32_t* const p[4], const bool p_wide[4],
+  // into their staging channels -- all but those `prim` computes itself (its `name:` labels).
+  void runSharedInterpolators(const CompiledPrimitive& prim, const ChannelLayout& layout, const RasterState& state,
+                              int bx, int by, uint64_t exec, const uint32_t* const p[4], const bool p_wide[4],
                               const uint32_t* shared_records);
 
   // field_hit(): the box FieldBox staged, then the search over the block's `exec` lanes into t

@@ -1,6 +1,8 @@
-// The values of the GL state that programs read (compiler/isa.h: LoadState's StateValue).
+// The values of the GL state that programs read (compiler/isa.h: LoadState's StateValue), and
+// what a channel layout binds.
 #include "raster/raster_state.h"
 
+#include "compiler/compiler.h"
 #include "compiler/isa.h"
 
 namespace pf {
@@ -26,6 +28,12 @@ float stateValue(const RasterState& s, uint16_t which) {
     case StateValue::FlatShading: return s.flat_shading ? 1.0f : 0.0f;
     default: return 0.0f;
   }
+}
+
+bool ChannelLayout::bindsInterpolator(const std::string& name) const {
+  for (const SharedInterpolator& s : shared)
+    if (s.program->name == name) return true;
+  return false;
 }
 
 }  // namespace pf

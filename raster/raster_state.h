@@ -71,6 +71,9 @@ struct ChannelLayout {
   // the primitive's P and N.
   bool surface_interpolated = false;
 
+  // Whether some channels are bound to a shared interpolator called `name`.
+  bool bindsInterpolator(const std::string& name) const;
+
   // Whether some channel is of a kind in `set` (bit 1 << kind).
   bool hasKinds(unsigned set) const {
     for (int k = 0; k < kInterpKindCount; ++k)

@@ -94,6 +94,10 @@ SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& 
         continue;
       case Op::LoadState: U[operandIndex(ins.dst)] = std::bit_cast<uint32_t>(state(ins.imm)); continue;
       case Op::HasKinds: U[operandIndex(ins.dst)] = in.layout->hasKinds(ins.imm) ? 1u : 0u; continue;
+      case Op::HasNamed:
+        U[operandIndex(ins.dst)] =
+            in.layout->bindsInterpolator(prim.named_interpolators[static_cast<size_t>(ins.imm)]) ? 1u : 0u;
+        continue;
       case Op::XLoadVertex: {
         float* d = xreg(ins.dst);
         const float* s = in.vertex_channels + static_cast<size_t>(ins.imm) * nch;

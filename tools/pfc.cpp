@@ -4,6 +4,7 @@
 // Field units are compiled to tapes too (docs/language.md, "Fields"): those without parameters
 // always, one with parameters when --field names it and --params gives their values.
 // Exit status: 0 compiled, 1 compile error or unreadable file, 2 bad command line.
+#include <set>
 #include <CLI/CLI.hpp>
 
 #include <fstream>
@@ -52,7 +53,9 @@ int main(int argc, char** argv) {
   std::string listing;
   // A user's primitives may call the built-in ones, as in a context.
   const pf::BuiltinPrimitives& builtins = pf::builtinPrimitives();
-  bool ok = pf::compileSource(file, ss.str(), module, log, stage, &listing, !no_opt, &builtins.by_name);
+  std::set<std::string> interpolators;
+  for (const auto& p : builtins.interpolators) interpolators.insert(p->name);
+  bool ok = pf::compileSource(file, ss.str(), module, log, stage, &listing, !no_opt, &builtins.by_name, &interpolators);
   std::cerr << log.format();
   if (!ok) return 1;
   std::cout << listing;

@@ -1,6 +1,7 @@
 // The PixelFlow extensions for primitives compiled at run time (paper section 4: every
 // primitive, built-in or not, registers itself the same way): compile, read the log, look up
 // the glBegin mode of a primitive by name.
+#include <set>
 #include <algorithm>
 #include <cstring>
 
@@ -44,7 +45,10 @@ GLuint pfglCompilePrimitivesEXT(const GLchar* source) {
   pf::CompiledModule module;
   pf::DiagnosticLog log;
   std::string name = "module" + std::to_string(ctx->primitives.module_logs.size() + 1) + ".pfl";
-  if (!pf::compileSource(name, source, module, log, pf::EmitStage::None, nullptr, true, &ctx->primitives.by_name)) {
+  std::set<std::string> interpolators;  // the context's, for interpolation labels
+  for (const auto& [known, id] : ctx->primitives.interpolator_ids) interpolators.insert(known);
+  if (!pf::compileSource(name, source, module, log, pf::EmitStage::None, nullptr, true, &ctx->primitives.by_name,
+                         &interpolators)) {
     ctx->primitives.failed_log = log.format();
     return 0;
   }

@@ -113,6 +113,12 @@ std::vector<Case> cases() {
                  const double r = glm::length(q);
                  return glm::dvec3(turnFraction(q), std::acos(std::clamp(q.z / r, -1.0, 1.0)) / kPi, r * 0.4);
                }});
+  c.push_back({"toroidal", false, 0.5, glm::dvec3(0.1, -0.2, 0.3), [](const glm::dvec3& p) {
+                 // About the circle of radius 0.9 (major_radius) around the origin's z axis.
+                 const glm::dvec3 q = p - glm::dvec3(0.1, -0.2, 0.3);
+                 const double rho = std::hypot(q.x, q.y) - 0.9;
+                 return glm::dvec3(turnFraction(q), std::atan2(q.z, rho) / (2 * kPi) + 0.5, std::hypot(rho, q.z) * 0.5);
+               }});
   const glm::dvec3 none(0);
   c.push_back({"solid_noise", true, 3, none, [](const glm::dvec3& p) { return mixColours(0.5 + 0.5 * snoise(p * 3.0)); }});
   c.push_back({"solid_fbm", true, 2, none,
@@ -149,6 +155,7 @@ TEST_P(BuiltinInterpolators, MatchTheirFormulaInDoubleAtTheObjectPoint) {
   ASSERT_GE(interp, static_cast<GLenum>(GL_FIRST_INTERPOLATOR_EXT)) << tc.name;
   pfglMaterialInterpEXT(pfglGetParamNameEXT("color"), GL_QUADS, interp);
   pfglRastParamfEXT(pfglGetParamNameEXT("texture_scale"), static_cast<float>(tc.scale));
+  pfglRastParamfEXT(pfglGetParamNameEXT("major_radius"), 0.9f);  // toroidal's
   if (tc.solid) {
     pfglRastParam4fEXT(pfglGetParamNameEXT("texture_color0"), 1, 0, 0.25f, 1);
     pfglRastParam4fEXT(pfglGetParamNameEXT("texture_color1"), 0, 1, 0.75f, 1);

@@ -49,16 +49,16 @@ struct BlockRun {
   bool drawn(int x, int y) const { return shade_ids[y * 64 + x] != 0; }
 };
 
-inline BlockRun runBlock(const CompiledPrimitive& prim, const std::vector<float>& params,
-                         const std::vector<float>& vertex_channels, int nch, bool depth_test = true,
-                         float initial_depth = 1.0f, InterpKind kind = InterpKind::PerspectiveLinear,
-                         uint32_t iteration_cap = 65536, int sequence_points = -1,
-                         const field::FieldTable* fields = nullptr) {
+// The same with the channels laid out by `layout` (e.g. channels bound to shared interpolators).
+inline BlockRun runBlockIn(const CompiledPrimitive& prim, const std::vector<float>& params,
+                           const std::vector<float>& vertex_channels, const ChannelLayout& layout,
+                           bool depth_test = true, float initial_depth = 1.0f, uint32_t iteration_cap = 65536,
+                           int sequence_points = -1, const field::FieldTable* fields = nullptr) {
+  const int nch = layout.count;
   BlockRun r;
   std::fill(r.depth.begin(), r.depth.end(), initial_depth);
   std::vector<uint32_t> p(params.size());
   for (size_t i = 0; i < params.size(); ++i) p[i] = f2u(params[i]);
-  ChannelLayout layout = ChannelLayout::ofKind(nch, kind);
   RasterState st;
   st.vp_scale_x = 4;
   st.vp_offset_x = 4;
@@ -105,6 +105,15 @@ inline BlockRun runBlock(const CompiledPrimitive& prim, const std::vector<float>
     }
   }
   return r;
+}
+
+inline BlockRun runBlock(const CompiledPrimitive& prim, const std::vector<float>& params,
+                         const std::vector<float>& vertex_channels, int nch, bool depth_test = true,
+                         float initial_depth = 1.0f, InterpKind kind = InterpKind::PerspectiveLinear,
+                         uint32_t iteration_cap = 65536, int sequence_points = -1,
+                         const field::FieldTable* fields = nullptr) {
+  return runBlockIn(prim, params, vertex_channels, ChannelLayout::ofKind(nch, kind), depth_test, initial_depth,
+                    iteration_cap, sequence_points, fields);
 }
 
 }  // namespace pf::test

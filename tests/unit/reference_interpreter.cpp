@@ -198,6 +198,16 @@ class Interpreter {
       }
       case Op::LoadState: scalar_[in.dst] = fromF(state(in.imm)); return {};
       case Op::HasKinds: scalar_[in.dst] = layout_.hasKinds(static_cast<unsigned>(in.imm)) ? 1u : 0u; return {};
+      case Op::HasNamed:
+        scalar_[in.dst] = layout_.bindsInterpolator(f_.named_interpolators[static_cast<size_t>(in.imm)]) ? 1u : 0u;
+        return {};
+      case Op::InterpNamedReturn: {  // the channels of the shared interpolators of that name
+        const int ops[4] = {in.a, in.b, in.c, in.d};
+        for (const ChannelLayout::SharedInterpolator& s : layout_.shared)
+          if (s.program->name == f_.named_interpolators[static_cast<size_t>(in.imm)])
+            for (int k = 0; k < 4; ++k) out_.channels[static_cast<size_t>(s.first + k)] = asF(get(ops[k]));
+        return {};
+      }
       case Op::XLoadVertex: {
         std::vector<float>& d = channels(in.dst);
         for (int c = 0; c < layout_.count; ++c) d[c] = vc_[static_cast<size_t>(in.imm) * layout_.count + c];
