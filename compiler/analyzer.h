@@ -34,6 +34,11 @@ inline bool isFloatLike(const Type& t) { return isNumericScalar(t); }
 inline bool isBool(const Type& t) { return t.dims.empty() && t.base == BaseType::Bool; }
 inline bool isInterp(const Type& t) { return t.dims.empty() && t.base == BaseType::InterpData; }
 inline bool isAggregate(const Type& t) { return t.isAggregate() && t.base != BaseType::InterpData; }
+// What a shading parameter can hold (an interpolator's value): a number, point, vector, normal
+// or colour.
+inline bool isShadingValue(const Type& t) {
+  return t.dims.empty() && (isNumericScalar(t) || (isAggregate(t) && t.base != BaseType::Matrix));
+}
 
 // The program's functions, shared by the analyzers of all units.
 struct FunctionTable {

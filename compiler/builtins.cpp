@@ -152,6 +152,27 @@ void typeBuiltinCall(Expr& e, UnitKind unit, const std::function<void(SourceLoc,
       return;
     }
     e.type = Type::of(BaseType::Point);
+  } else if (f == "object_matrix" || f == "eye_from_object_matrix" || f == "eye_matrix" || f == "clip_matrix" ||
+             f == "screen_matrix") {
+    // The matrix of the space transform of the same name: m * p == object(p), and so on.
+    if (!arity(0, 0)) return;
+    e.type = Type::of(BaseType::Matrix);
+  } else if (f == "transpose" || f == "inverse" || f == "determinant") {
+    // inverse(): by cofactors; a singular matrix gives infinities or NaNs, as a division by 0.
+    if (!arity(1, 1) || any_void) return;
+    if (e.args[0]->type != Type::of(BaseType::Matrix)) {
+      err(e.args[0]->loc, f + "() takes a matrix, not " + typeName(e.args[0]->type));
+      return;
+    }
+    e.type = Type::of(f == "determinant" ? BaseType::Float : BaseType::Matrix);
+  } else if (f == "matrix") {
+    // matrix(s): s on the diagonal, 0 elsewhere; matrix(m00, m01, ..., m33): 16 numbers, row by row.
+    if (n != 1 && n != 16) {
+      err(e.loc, "matrix() takes 1 number (the diagonal) or 16 (row by row), not " + std::to_string(n));
+      return;
+    }
+    if (any_void || !needScalars()) return;
+    e.type = Type::of(BaseType::Matrix);
   } else if (f == "eye_normal") {
     // An object-space normal to eye space: the inverse transpose of the modelview.
     if (!arity(1, 1) || any_void) return;

@@ -36,6 +36,7 @@ const char* tokenName(Tok t) {
     case Tok::KwVector: return "'vector'";
     case Tok::KwNormal: return "'normal'";
     case Tok::KwColor: return "'color'";
+    case Tok::KwMatrix: return "'matrix'";
     case Tok::KwInterpolatorData: return "'interpolator_data'";
     case Tok::KwPerspectiveLinear: return "'perspective_linear'";
     case Tok::KwLinear: return "'linear'";
@@ -102,6 +103,7 @@ const std::unordered_map<std::string, Tok>& keywords() {
       {"vector", Tok::KwVector},
       {"normal", Tok::KwNormal},
       {"color", Tok::KwColor},
+      {"matrix", Tok::KwMatrix},
       {"interpolator_data", Tok::KwInterpolatorData},
       {"perspective_linear", Tok::KwPerspectiveLinear},
       {"linear", Tok::KwLinear},

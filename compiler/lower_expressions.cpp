@@ -41,7 +41,7 @@ Binding Lowerer::exprAt(const Expr& e) {
       if (b.sized_param != -1) return loadSized(b, expr(*e.args[1]).comps[0], e.type);
       Binding out;
       out.type = e.type;
-      int esz = b.type.isArray() ? (b.type.base == BaseType::InterpData ? 1 : b.type.element().slotCount()) : 1;
+      int esz = b.type.indexedSlots();
       if (e.number >= 0) {
         int idx = static_cast<int>(e.number);
         out.comps.assign(b.comps.begin() + idx * esz, b.comps.begin() + (idx + 1) * esz);
@@ -107,6 +107,10 @@ Binding Lowerer::binary(const Expr& e) {
                                       : (ints ? Op::INe : Op::FNe);
     return scalar(e.type, emit(o, ValueClass::Bool, false, x, y));
   }
+  // A matrix times a matrix, point, vector or normal (sema typed it as the right operand).
+  if (op == "*" && e.args[0]->type.base == BaseType::Matrix && e.args[1]->type.base != BaseType::Float &&
+      e.args[1]->type.base != BaseType::Int)
+    return matrixTimes(a, b, e.type);
   return arith(op, a, b, e.type, e.loc);
 }
 
@@ -297,6 +301,7 @@ Binding Lowerer::call(const Expr& e) {
   auto arg = [&](size_t i) { return args[i].comps[0]; };
   auto farg = [&](size_t i) { return toFloat(args[i].comps[0]); };
   if (int k = componentwiseArity(f)) return componentwise(e, args, k);
+  if (std::optional<Binding> m = matrixCall(f, e, args)) return *m;
   if (f == "cross_sign") {
     // sign(a * d - b * c), exact: the robust orientation test for edges.
     Value v;

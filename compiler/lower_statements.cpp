@@ -455,8 +455,8 @@ bool Lowerer::target(const Expr& e, int& bind, std::vector<TargetSlots>& slots, 
     count = 1;
     return true;
   }
-  int esz = bt.isArray() ? (bt.base == BaseType::InterpData ? 1 : bt.element().slotCount()) : 1;
-  int elements = bt.isArray() ? bt.dims[0] : Type::componentsOf(bt.base);
+  int esz = bt.indexedSlots();
+  int elements = bt.indexedCount();
   count = esz;
   if (e.number >= 0) {
     for (TargetSlots& t : slots) t.first += static_cast<int>(e.number) * esz;

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -227,6 +228,14 @@ class Lowerer {
   Binding callPrimitive(const Expr& e, const CompiledPrimitive& callee);
 
   Binding call(const Expr& e);
+
+  // ---- matrices (lower_matrices.cpp) ----
+  int sumOfProducts(const std::vector<std::pair<int, int>>& terms);
+  // m times a matrix, point, vector (upper 3x3) or normal (inverse transpose of the upper 3x3).
+  Binding matrixTimes(const Binding& m, const Binding& v, const Type& result);
+  Binding cofactors3(const Binding& m);
+  int minor3(const Binding& m, const int rows[3], const int cols[3]);
+  std::optional<Binding> matrixCall(const std::string& f, const Expr& e, const std::vector<Binding>& args);
 };
 
 }  // namespace pf::lowering

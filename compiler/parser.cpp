@@ -122,7 +122,7 @@ class Parser {
   static bool isTypeToken(Tok k) {
     switch (k) {
       case Tok::KwFloat: case Tok::KwInt: case Tok::KwBool: case Tok::KwPoint:
-      case Tok::KwVector: case Tok::KwNormal: case Tok::KwColor: case Tok::KwInterpolatorData:
+      case Tok::KwVector: case Tok::KwNormal: case Tok::KwColor: case Tok::KwMatrix: case Tok::KwInterpolatorData:
         return true;
       default: return false;
     }
@@ -139,6 +139,7 @@ class Parser {
       case Tok::KwVector: return BaseType::Vector;
       case Tok::KwNormal: return BaseType::Normal;
       case Tok::KwColor: return BaseType::Color;
+      case Tok::KwMatrix: return BaseType::Matrix;
       case Tok::KwInterpolatorData: return BaseType::InterpData;
       default: return BaseType::Void;
     }

@@ -91,8 +91,9 @@ void Analyzer::expr(Expr& e) {
       expr(a);
       e.varying = a.varying;
       if (a.type.base == BaseType::Void) return;
-      if (!isAggregate(a.type)) {
-        err(e.loc, "'." + e.name + "' needs a point, vector, normal or color, not " + typeName(a.type));
+      if (!isAggregate(a.type) || a.type.base == BaseType::Matrix) {
+        err(e.loc, "'." + e.name + "' needs a point, vector, normal or color, not " + typeName(a.type) +
+                       (a.type.base == BaseType::Matrix ? " (a matrix's elements are m[row][column])" : ""));
         return;
       }
       int ci = componentIndex(a.type.base, e.name);
@@ -118,6 +119,9 @@ void Analyzer::expr(Expr& e) {
       if (base.type.isArray()) {
         e.type = base.type.element();
         limit = base.type.dims[0];
+      } else if (base.type.base == BaseType::Matrix) {  // a row, as a point: m[row][column]
+        e.type = Type::of(BaseType::Point);
+        limit = 4;
       } else if (isAggregate(base.type)) {
         e.type = Type::of(BaseType::Float);
         limit = Type::componentsOf(base.type.base);
@@ -198,6 +202,13 @@ Type Analyzer::binaryType(const std::string& op, const Type& a, const Type& b, S
     return Type::of(BaseType::Float);
   }
   if (op == "%") return bad();
+  // Matrices: products with a matrix, point, vector or normal on the right (m * p transforms p);
+  // otherwise only + and - between two, and scaling by a number (the rules below).
+  const Type matrix = Type::of(BaseType::Matrix);
+  if (a == matrix && op == "*" && b.dims.empty() &&
+      (b.base == BaseType::Matrix || b.base == BaseType::Point || b.base == BaseType::Vector || b.base == BaseType::Normal))
+    return b;
+  if ((a == matrix || b == matrix) && a == b && op != "+" && op != "-") return bad();
   if (isAggregate(a) && a == b) return a;
   // A point moved by a vector (or normal) is a point, its w unchanged.
   const auto isDirection = [](const Type& t) {

@@ -134,7 +134,7 @@ void Analyzer::statement(Stmt& s) {
         } else {
           expr(*s.value);
           const Type& t = s.value->type;
-          if (t.base != BaseType::Void && (t.isArray() || !(isNumericScalar(t) || isAggregate(t))))
+          if (t.base != BaseType::Void && !isShadingValue(t))
             err(s.value->loc, "an interpolator returns a float, point, vector, normal or color (its shading parameter's value), not " + typeName(t));
         }
         return_seen_in_interp_ = true;
@@ -152,7 +152,7 @@ void Analyzer::statement(Stmt& s) {
         }
         expr(*s.value);
         const Type& t = s.value->type;
-        if (t.base != BaseType::Void && (t.isArray() || !(isNumericScalar(t) || isAggregate(t))))
+        if (t.base != BaseType::Void && !isShadingValue(t))
           err(s.value->loc, "interpolator_return(value) in the '" + interp_named_ +
                                 ":' branch returns the value of interpolator '" + interp_named_ +
                                 "' (a float, point, vector, normal or color), not " + typeName(t));

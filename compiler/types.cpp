@@ -13,6 +13,7 @@ std::string baseTypeName(BaseType b) {
     case BaseType::Vector: return "vector";
     case BaseType::Normal: return "normal";
     case BaseType::Color: return "color";
+    case BaseType::Matrix: return "matrix";
     case BaseType::InterpData: return "interpolator_data";
   }
   return "?";

@@ -7,7 +7,8 @@
 
 namespace pf {
 
-enum class BaseType { Void, Float, Int, Bool, Point, Vector, Normal, Color, InterpData };
+// Matrix: 4x4 floats, 16 slots in row-major order (slot 4 r + c holds row r, column c).
+enum class BaseType { Void, Float, Int, Bool, Point, Vector, Normal, Color, Matrix, InterpData };
 
 // How a shading parameter is interpolated: the labels of `interpolation { ... }`.
 // Channels of an instance are ordered by kind so that each kind is one contiguous range.
@@ -41,11 +42,16 @@ struct Type {
       case BaseType::Vector: return 3;
       case BaseType::Normal: return 3;
       case BaseType::Color: return 4;   // (r, g, b, a)
+      case BaseType::Matrix: return 16;  // row-major
       case BaseType::Void: return 0;
       default: return 1;
     }
   }
   static Type of(BaseType b) { Type t; t.base = b; return t; }
+  // What `value[i]` reads: an array's element; a matrix's row i (a point of 4 floats); a point's,
+  // vector's, normal's or colour's component. Slots per element and how many elements.
+  int indexedSlots() const { return isArray() ? (base == BaseType::InterpData ? 1 : element().slotCount()) : base == BaseType::Matrix ? 4 : 1; }
+  int indexedCount() const { return isArray() ? dims[0] : base == BaseType::Matrix ? 4 : componentsOf(base); }
 };
 
 // A primitive's parameters as declared (name, type), X, Y and Z left out: how another

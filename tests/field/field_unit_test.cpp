@@ -70,6 +70,31 @@ field float beads(point p, float r) {
   EXPECT_EQ(countOps(t, FieldOp::Max), 3u);  // unrolled: max(max(max(-1e9, s0), s1), s2)
 }
 
+// A matrix built from the parameters is computed when the field is compiled: only its product
+// with the point reaches the tape (an ellipsoid, turned by `angle` about z and moved).
+TEST(FieldUnit, MatricesOfParametersFoldIntoTheFormula) {
+  const FieldTape t = compileOk(R"(
+field float turned(point p, float angle, float sx) {
+    matrix to_world = matrix(cos(angle), -sin(angle), 0.0, 0.5,
+                             sin(angle), cos(angle), 0.0, -0.25,
+                             0.0, 0.0, 1.0, 0.1,
+                             0.0, 0.0, 0.0, 1.0) * matrix(sx, 0.0, 0.0, 0.0,  0.0, 1.0, 0.0, 0.0,
+                                                          0.0, 0.0, 1.0, 0.0,  0.0, 0.0, 0.0, 1.0);
+    point q = inverse(to_world) * p;
+    return 1.0 - q.x * q.x - q.y * q.y - q.z * q.z;
+}
+)", {0.7f, 1.6f});
+  expectMatches(t, [](double x, double y, double z) {
+    const double a = static_cast<float>(0.7), sx = static_cast<float>(1.6);
+    // inverse: untranslate, unrotate, unscale
+    const double px = x - 0.5, py = y + 0.25, pz = z - 0.1;
+    const double rx = std::cos(a) * px + std::sin(a) * py, ry = -std::sin(a) * px + std::cos(a) * py;
+    const double qx = rx / sx, qy = ry, qz = pz;
+    return 1.0 - qx * qx - qy * qy - qz * qz;
+  }, 1e-5);
+  EXPECT_EQ(countOps(t, FieldOp::Cos), 0u);  // the matrix was folded: no trigonometry on the tape
+}
+
 TEST(FieldUnit, BranchesOnParametersAreDecidedWhenCompiled) {
   const std::string source = R"(
 field float pick(point p, float which) {
