@@ -18,10 +18,9 @@ void SetupExecutor::cacheState(const RasterState& state) {
   state_cached_ = true;
 }
 
-SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& in, uint32_t* record) {
+void SetupExecutor::load(const CompiledPrimitive& prim, const SetupInput& in) {
   const SetupProgram& p = prim.setup;
   cacheState(*in.state);
-  const int nch = in.layout->count;
   // One flat file for every operand kind -- registers, then constants, then the fixed part of
   // the parameters -- so that reading an operand is an add and a load, not a switch.
   const size_t nregs = p.num_regs, nconst = p.constants.size(), nparams = static_cast<size_t>(prim.param_floats);
@@ -29,10 +28,30 @@ SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& 
   std::fill_n(regs_.begin(), nregs, 0u);
   std::copy(p.constants.begin(), p.constants.end(), regs_.begin() + static_cast<long>(nregs));
   std::copy_n(in.params, nparams, regs_.begin() + static_cast<long>(nregs + nconst));
+  interp_.assign(static_cast<size_t>(p.num_interp_regs) * in.layout->count, 0.0f);
+}
+
+SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& in, uint32_t* record) {
+  load(prim, in);
+  return execute(prim, in, record, 0, SetupOutput{}, nullptr, 0);
+}
+
+SetupOutput SetupExecutor::resume(const CompiledPrimitive& prim, const SetupInput& in, uint32_t* record,
+                                  const SetupResume& from) {
+  load(prim, in);
+  const SetupProgram& p = prim.setup;
+  for (size_t r = 0; r < p.num_regs; ++r) regs_[r] = from.regs[r * from.reg_stride];
+  for (size_t i = 0; i < interp_.size(); ++i) interp_[i] = from.interp[i * from.interp_stride];
+  return execute(prim, in, record, from.pc, from.out, from.loop_counters, from.loop_depth);
+}
+
+SetupOutput SetupExecutor::execute(const CompiledPrimitive& prim, const SetupInput& in, uint32_t* record,
+                                   size_t start_pc, SetupOutput out, const uint32_t* open_loops, int open_depth) {
+  const SetupProgram& p = prim.setup;
+  const int nch = in.layout->count;
+  const size_t nregs = p.num_regs, nconst = p.constants.size();
   const uint32_t base[4] = {0, 0, static_cast<uint32_t>(nregs), static_cast<uint32_t>(nregs + nconst)};  // by OperandKind
   uint32_t* const U = regs_.data();
-  interp_.assign(static_cast<size_t>(p.num_interp_regs) * nch, 0.0f);
-  SetupOutput out;
 
   // (Setup programs have no Uniform operands.)
   auto read = [&](uint32_t o) -> uint32_t { return U[base[o >> 30] + operandIndex(o)]; };
@@ -50,10 +69,11 @@ SetupOutput SetupExecutor::run(const CompiledPrimitive& prim, const SetupInput& 
   // point (a strip of 100k vertices is no runaway).
   const uint64_t cap = std::max<uint64_t>(in.state->iteration_cap, static_cast<uint64_t>(in.sequence_points) + 1);
   uint32_t loop_counters[kMaxMaskDepth];
-  int loop_depth = 0;
+  int loop_depth = std::min(open_depth, kMaxMaskDepth);
+  std::copy_n(open_loops, loop_depth, loop_counters);
 
   const size_t n = p.code.size();
-  for (size_t pc = 0; pc < n;) {
+  for (size_t pc = start_pc; pc < n;) {
     const Instr& ins = p.code[pc];
     ++pc;
     ++out.instructions;

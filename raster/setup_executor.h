@@ -40,11 +40,27 @@ struct SetupOutput {
   float bound[4] = {0, 0, 0, 0};  // xmin, ymin, xmax, ymax in window coordinates
 };
 
+// An instance part-way through its setup program, as a batched executor (setup_batch.h)
+// leaves it: where it is, its registers and loop counters, and its effects so far.
+struct SetupResume {
+  uint32_t pc = 0;                  // the next instruction to run
+  const uint32_t* regs = nullptr;   // register r at regs[r * reg_stride] (num_regs of them)
+  size_t reg_stride = 1;
+  const float* interp = nullptr;    // interp register i, channel c at interp[(i * channels + c) * interp_stride]
+  size_t interp_stride = 1;
+  const uint32_t* loop_counters = nullptr;  // of the loops open at pc, outermost first
+  int loop_depth = 0;
+  SetupOutput out;                  // bound, facing and instruction count so far
+};
+
 class SetupExecutor {
  public:
   // Writes the record (pixel.num_uniform_slots words, then the interp slots, layout.count
   // floats each) to `record`, which must have recordWords() room.
   SetupOutput run(const CompiledPrimitive& prim, const SetupInput& in, uint32_t* record);
+  // Finishes an instance from `from.pc` with `from`'s registers: exactly what run() gives for an
+  // instance that reached that point in that state.
+  SetupOutput resume(const CompiledPrimitive& prim, const SetupInput& in, uint32_t* record, const SetupResume& from);
   static size_t recordWords(const CompiledPrimitive& prim, int channels) {
     return prim.pixel.num_uniform_slots + static_cast<size_t>(prim.pixel.num_interp_uniform_slots) * channels;
   }
@@ -53,6 +69,12 @@ class SetupExecutor {
   // Every state value of the last state seen, so LoadState is a load (instances of one glBegin
   // share their state).
   void cacheState(const RasterState& state);
+  // Loads the register file (zeroed registers, constants, the fixed parameters) and zeroes the
+  // interp registers.
+  void load(const CompiledPrimitive& prim, const SetupInput& in);
+  // Runs from `pc` to the end or a kill; `out` holds the effects so far.
+  SetupOutput execute(const CompiledPrimitive& prim, const SetupInput& in, uint32_t* record, size_t pc,
+                      SetupOutput out, const uint32_t* loop_counters, int loop_depth);
   RasterState cached_state_;
   bool state_cached_ = false;
   float state_values_[kStateValueCount] = {};

@@ -1,0 +1,69 @@
+// Setup across instances: the setup program (compiler/isa.h) of up to kSetupBatchLanes
+// instances of one primitive, under one state and channel layout, run at once, one instance
+// per lane -- each instruction decoded once for all of them, its arithmetic a loop over the
+// lanes that GCC vectorizes (as the pixel executor's kernels; docs/architecture.md).
+//
+// Exactly the scalar executor's results, instance by instance: the lanes run the same
+// instructions only while they take the same path. A conditional jump that some lanes take and
+// others do not splits them: the smaller group leaves the batch -- its registers, loop counters
+// and effects so far are handed to the scalar SetupExecutor (resume()), which finishes each of
+// those instances from its next instruction -- and the larger group goes on. The same happens
+// at instructions that are not batched (calls of other primitives: OutParam, OutVertex, Emit)
+// for every lane, and when fewer than kMinBatchLanes lanes would go on.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "raster/setup_executor.h"
+
+namespace pf {
+
+constexpr int kSetupBatchLanes = 16;
+// Below this many lanes a batch (or what is left of one after a split) runs scalar.
+constexpr int kMinBatchLanes = 4;
+
+// What the batched executor did, for tests and the docs' figures.
+struct SetupBatchCounters {
+  uint64_t batches = 0;           // run() calls that ran batched
+  uint64_t lanes_batched = 0;     // instances that finished in the batch
+  uint64_t lanes_resumed = 0;     // instances handed to the scalar executor part-way
+  uint64_t lanes_scalar = 0;      // instances run scalar from the start
+};
+
+class BatchSetupExecutor {
+ public:
+  // Sets up `count` instances: in[i], records[i] (recordWords() room each) and out[i] are
+  // instance i's. Instances that cannot share a batch (different states, layouts, sequence
+  // counts or depths, or a primitive that calls others) and batches of fewer than
+  // kMinBatchLanes run scalar. Any count: batches are formed kSetupBatchLanes at a time.
+  void run(const CompiledPrimitive& prim, const SetupInput* in, int count, uint32_t* const* records,
+           SetupOutput* out);
+
+  // True where batching can pay: a primitive with no callees (an Emit would leave the batch,
+  // and the callees' instances must be binned between their callers').
+  static bool batchable(const CompiledPrimitive& prim) { return prim.callees.empty(); }
+
+  SetupBatchCounters counters;
+  // Tests: batch primitives that call others too (their calls leave the batch at OutParam; a
+  // lane resumed earlier may then submit its calls before an earlier lane's).
+  bool batch_callers = false;
+
+ private:
+  void runBatch(const CompiledPrimitive& prim, const SetupInput* in, int lanes, uint32_t* const* records,
+                SetupOutput* out);
+  // Hands lane `l` to the scalar executor at `pc`.
+  void finishScalar(const CompiledPrimitive& prim, const SetupInput& in, int l, uint32_t pc, uint32_t* record,
+                    SetupOutput& out, uint32_t instructions, const uint32_t* loop_counters, int loop_depth);
+
+  SetupExecutor scalar_;
+  RasterState cached_state_;  // the state values of the last state seen, as the scalar executor's
+  bool state_cached_ = false;
+  float state_values_[kStateValueCount] = {};
+  // Lane-major files: register / constant / parameter r of lane l at regs_[r * K + l]; interp
+  // register i, channel c of lane l at interp_[(i * channels + c) * K + l].
+  std::vector<uint32_t> regs_;
+  std::vector<float> interp_;
+};
+
+}  // namespace pf
