@@ -43,6 +43,10 @@ class Generator {
     for (auto& [value, slot] : interp_slots_) result_.setup.interp_exports[slot] = operandIndex(setupOperand(value));
     pixel_.num_uniform_slots = static_cast<uint32_t>(scalar_slots_.size());
     pixel_.num_interp_uniform_slots = static_cast<uint32_t>(interp_slots_.size());
+    // Block rejection (raster/block_rejection.h) follows the program up to its first loop, and
+    // no further than its last `return` before it: worth trying only if there is one.
+    for (size_t pc = 0; pc < pixel_.code.size() && pixel_.code[pc].op != Op::LoopBegin; ++pc)
+      if (pixel_.code[pc].op == Op::Retire) pixel_.last_early_retire = static_cast<int32_t>(pc);
     result_.pixel = std::move(pixel_);
     result_.setup.code = std::move(setup_.code);
     result_.setup.constants = std::move(setup_.constants);

@@ -147,6 +147,8 @@ struct PixelProgram : Bytecode {
   uint32_t num_uniform_slots = 0;
   uint32_t num_interp_uniform_slots = 0;
   bool reads_surface = false;  // reads the built-in P or N registers (else they are not set up)
+  // The last Retire before the first loop (-1: none): how far block rejection needs to look.
+  int32_t last_early_retire = -1;
 };
 
 // Readable listing, used by `pfc --emit=setup|pixel` and tests.

@@ -9,6 +9,7 @@
 #include "raster/pixel_executor.h"
 
 #include <array>
+#include <cstdlib>
 #include <cstring>
 #include <utility>
 
@@ -72,11 +73,43 @@ inline bool depthPasses(DepthFunc f, float z, float zbuf) {
 
 }  // namespace
 
+// Block rejection by regions of kRejectionRegion x kRejectionRegion pixels: one interval
+// evaluation answers for all the blocks of a region an instance touches. The verdicts of the
+// tile's regions are remembered (one slot each) with the program and uniform values they were
+// made for -- compared by content, since a later frame may put other values at the same
+// address. (The state is not part of it: the evaluated prefix stops at the first loop, and
+// pixel programs read the state only inside loops.)
+bool PixelExecutor::regionRejected(const PixelProgram& program, const uint32_t* record, const RasterState& state,
+                                   int bx, int by) {
+  const int rx = bx / kRejectionRegion * kRejectionRegion, ry = by / kRejectionRegion * kRejectionRegion;
+  constexpr int kPerRow = kTileSize / kRejectionRegion;
+  RegionVerdict& v = region_verdicts_[(rx / kRejectionRegion) % kPerRow + (ry / kRejectionRegion) % kPerRow * kPerRow];
+  const size_t words = program.num_uniform_slots;
+  if (v.program != &program || v.x != rx || v.y != ry || v.record.size() != words ||
+      !std::equal(v.record.begin(), v.record.end(), record)) {
+    v.program = &program;
+    v.x = rx;
+    v.y = ry;
+    v.record.assign(record, record + words);
+    v.rejected = rejection_.rejects(program, record, state, rx, ry, rx + kRejectionRegion, ry + kRejectionRegion);
+  }
+  return v.rejected;
+}
+
+bool PixelExecutor::blockRejectionWanted() { return std::getenv("PF_NO_BLOCK_REJECTION") == nullptr; }
+
 void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* record,
                              const ChannelLayout& layout, const RasterState& state,
                              uint32_t shade_id, int bx, int by, uint64_t mask,
                              const BlockTarget& target, const uint32_t* shared_records) {
   const int nch = layout.count;
+  // Only blocks that start full are tested: an instance whose bound cuts every block it touches
+  // (a small triangle) would pay for the test and rarely gain (measured: docs/performance.md).
+  if (mask == ~0ull && prim.pixel.last_early_retire >= 0 && use_block_rejection &&
+      regionRejected(prim.pixel, record, state, bx, by)) {
+    ++counters.blocks_rejected;
+    return;
+  }
   ++counters.blocks_run;
   counters.lanes_started += static_cast<uint64_t>(__builtin_popcountll(mask));
   const uint64_t alive = execute(prim, record, layout, state, bx, by, mask, target, shared_records, nullptr);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "compiler/compiler.h"
+#include "raster/block_rejection.h"
 #include "raster/field/gradient_evaluator.h"
 #include "raster/field/ray_caster.h"
 #include "raster/limits.h"
@@ -29,6 +30,7 @@ struct BlockTarget {
 
 struct BlockCounters {
   uint64_t blocks_run = 0;
+  uint64_t blocks_rejected = 0;  // skipped whole by block_rejection.h (not in blocks_run)
   uint64_t lanes_started = 0;
   uint64_t lanes_committed = 0;
   uint64_t instructions = 0;  // executed, once per block (each covers every lane)
@@ -58,6 +60,11 @@ class PixelExecutor {
                 const BlockTarget& target, const uint32_t* shared_records = nullptr);
 
   BlockCounters counters;
+  // Skip blocks the program certainly retires whole (block_rejection.h); off only to measure
+  // what it saves and to check that images do not change.
+  // PF_NO_BLOCK_REJECTION in the environment turns it off for the executors made afterwards.
+  bool use_block_rejection = blockRejectionWanted();
+  static bool blockRejectionWanted();
 
  private:
   // Runs a program over the block; returns the lanes alive at its end. `p_in`: P's 4 components
@@ -80,6 +87,16 @@ class PixelExecutor {
   const field::ImplicitField* lookUpField(const RasterState& state, float id, uint64_t exec);
 
   field::FieldRayCaster caster_;
+  BlockRejection rejection_;
+  // The verdicts of a tile's regions (regionRejected) and what each was computed for.
+  struct RegionVerdict {
+    const PixelProgram* program = nullptr;
+    int x = -1, y = -1;
+    std::vector<uint32_t> record;
+    bool rejected = false;
+  };
+  RegionVerdict region_verdicts_[(kTileSize / kRejectionRegion) * (kTileSize / kRejectionRegion)];
+  bool regionRejected(const PixelProgram& program, const uint32_t* record, const RasterState& state, int bx, int by);
   float field_box_[6] = {0, 0, 0, 0, 0, 0};
   std::unordered_map<const field::ImplicitField*, std::unique_ptr<field::GradientEvaluator>> gradients_;
   // The gradient of a short tape (HitTapes): one evaluator per executor -- so per rasterizer
