@@ -3,10 +3,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 
 namespace pf {
 
 Renderer::Renderer(int threads) : pool_(threads) {
+  // PF_SETUP_BATCH=0: every instance's setup scalar (for comparisons; images are identical).
+  if (const char* e = std::getenv("PF_SETUP_BATCH")) setup_batching_ = std::strcmp(e, "0") != 0;
   for (int i = 0; i < pool_.threadCount(); ++i) scratch_.push_back(std::make_unique<WorkerScratch>());
 }
 
@@ -50,10 +54,8 @@ void pixelRange(float lo, float hi, int clip_lo, int clip_hi, int& out_lo, int& 
 
 }  // namespace
 
-bool Renderer::submit(const CompiledPrimitive& prim, const uint32_t* params, const float* vertex_channels,
-                      const ChannelLayout& layout, const RasterState& state, const ShadeState& shade,
-                      int sequence_points, const uint32_t* const* shared_params,
-                      const LightingState* per_pixel_lighting) {
+bool Renderer::beginSubmission(const ChannelLayout& layout, const RasterState& state, const ShadeState& shade,
+                               const LightingState* per_pixel_lighting) {
   if (!color_) return false;
   // The shading pass writes with one colour mask: instances with another wait for a flush.
   if (!scene_.instances.empty() && scene_.color_mask != state.color_mask) flush();
@@ -83,9 +85,13 @@ bool Renderer::submit(const CompiledPrimitive& prim, const uint32_t* params, con
   }
   if (scene_.states.size() > 0xffff || scene_.layouts.size() > 0xffff) {
     flush();
-    return submit(prim, params, vertex_channels, layout, state, shade, sequence_points, shared_params, per_pixel_lighting);
+    return beginSubmission(layout, state, shade, per_pixel_lighting);
   }
   calls_this_submission_ = 0;
+  return true;
+}
+
+void Renderer::runShared(const ChannelLayout& layout, const uint32_t* const* shared_params) {
   // The shared interpolators' uniforms: their setup programs, once for the whole submission.
   shared_offset_ = kNoShared;
   if (!layout.shared.empty() && shared_params) {
@@ -102,7 +108,74 @@ bool Renderer::submit(const CompiledPrimitive& prim, const uint32_t* params, con
       stats_.setup_instructions += out.instructions;
     }
   }
+}
+
+bool Renderer::submit(const CompiledPrimitive& prim, const uint32_t* params, const float* vertex_channels,
+                      const ChannelLayout& layout, const RasterState& state, const ShadeState& shade,
+                      int sequence_points, const uint32_t* const* shared_params,
+                      const LightingState* per_pixel_lighting) {
+  if (!beginSubmission(layout, state, shade, per_pixel_lighting)) return false;
+  runShared(layout, shared_params);
   return submitAt(prim, params, vertex_channels, sequence_points < 0 ? prim.sequence_points : sequence_points, 0);
+}
+
+void Renderer::submitInstances(const CompiledPrimitive& prim, int instances, const uint32_t* params,
+                               size_t param_stride, const float* vertex_channels, size_t vertex_stride,
+                               const ChannelLayout& layout, const RasterState& state, const ShadeState& shade,
+                               int sequence_points, const uint32_t* const* shared_params,
+                               const LightingState* per_pixel_lighting) {
+  const size_t nshared = layout.shared.size();
+  auto sharedOf = [&](int i) { return shared_params ? shared_params + static_cast<size_t>(i) * nshared : nullptr; };
+  if (sequence_points < 0) sequence_points = prim.sequence_points;
+  if (!setup_batching_ || !BatchSetupExecutor::batchable(prim) || instances < kMinBatchLanes || !color_) {
+    for (int i = 0; i < instances; ++i)
+      submit(prim, params + i * param_stride, vertex_channels + i * vertex_stride, layout, state, shade,
+             sequence_points, sharedOf(i), per_pixel_lighting);
+    return;
+  }
+  // Setup of a batch first (it reads only the instances, the state and the layout), into
+  // scratch records; then each instance in order exactly as submit() would: the submission's
+  // bookkeeping, its shared interpolators, then its record and bins.
+  const size_t words = SetupExecutor::recordWords(prim, layout.count);
+  bool steady = false;
+  for (int first = 0; first < instances; first += kSetupBatchLanes) {
+    const int lanes = std::min(kSetupBatchLanes, instances - first);
+    batch_records_.resize(words * static_cast<size_t>(lanes) + 1);
+    SetupInput in[kSetupBatchLanes];
+    uint32_t* records[kSetupBatchLanes];
+    SetupOutput out[kSetupBatchLanes];
+    for (int l = 0; l < lanes; ++l) {
+      const int i = first + l;
+      in[l] = SetupInput{params + i * param_stride, vertex_channels + i * vertex_stride, &layout, &state,
+                         sequence_points, nullptr, 0};
+      records[l] = batch_records_.data() + words * static_cast<size_t>(l);
+    }
+    batch_setup_.run(prim, in, lanes, records, out);
+    for (int l = 0; l < lanes; ++l) {
+      // An instance whose bookkeeping appended nothing and flushed nothing leaves the scene as
+      // the next one's would find it: that one's would do nothing either (the comparisons are
+      // of the same values), unless the records outgrow their bound.
+      if (steady && scene_.records.size() <= kMaxRecordWords) {
+        calls_this_submission_ = 0;
+      } else {
+        const size_t appended = scene_.states.size() + scene_.layouts.size() + scene_.shades.size() +
+                                scene_.lightings.size();
+        const uint64_t flushes = flushes_;
+        const uint32_t current_shade = scene_.current_shade;
+        if (!beginSubmission(layout, state, shade, per_pixel_lighting)) return;
+        steady = flushes == flushes_ && current_shade == scene_.current_shade &&
+                 appended == scene_.states.size() + scene_.layouts.size() + scene_.shades.size() +
+                                 scene_.lightings.size();
+      }
+      runShared(layout, sharedOf(first + l));
+      ++stats_.instances_submitted;
+      stats_.setup_instructions += out[l].instructions;
+      if (!out[l].killed && prim.pixel.code.empty()) continue;
+      const size_t offset = scene_.records.size();
+      if (!out[l].killed) scene_.records.insert(scene_.records.end(), records[l], records[l] + words);
+      binInstance(prim, out[l], offset);
+    }
+  }
 }
 
 void Renderer::submitCall(const CompiledPrimitive& callee, const uint32_t* params, const float* vertex_channels,
@@ -124,7 +197,6 @@ bool Renderer::submitAt(const CompiledPrimitive& prim, const uint32_t* params, c
   ++stats_.instances_submitted;
   const RasterState& state = scene_.states.back();
   const ChannelLayout& layout = scene_.layouts.back();
-  const ShadeState& shade = scene_.shades[scene_.current_shade];
   size_t offset = scene_.records.size();
   const size_t words = SetupExecutor::recordWords(prim, layout.count);
   SetupInput in{params, vertex_channels, &layout, &state, sequence_points, this, depth};
@@ -145,6 +217,15 @@ bool Renderer::submitAt(const CompiledPrimitive& prim, const uint32_t* params, c
     offset = scene_.records.size();
     scene_.records.insert(scene_.records.end(), scratch.begin(), scratch.end());
   }
+  return binInstance(prim, out, offset);
+}
+
+// After setup: an instance it killed is counted; a live one, whose record is the last in the
+// scene at `offset`, is binned under the state, layout and shade last appended.
+bool Renderer::binInstance(const CompiledPrimitive& prim, const SetupOutput& out, size_t offset) {
+  const RasterState& state = scene_.states.back();
+  const ChannelLayout& layout = scene_.layouts.back();
+  const ShadeState& shade = scene_.shades[scene_.current_shade];
   if (out.killed) {
     ++stats_.instances_killed;
     if (out.iteration_cap_hit) {
@@ -268,6 +349,7 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
 }
 
 void Renderer::flush() {
+  ++flushes_;
   if (scene_.empty() || !color_) {
     scene_.reset();
     return;

@@ -3,6 +3,7 @@
 // over the pixel blocks of its bound; then the tile's shading pass.
 //
 //   submit()  -> SetupExecutor (scalar, once per instance) -> Scene bins
+//   submitInstances() -> BatchSetupExecutor (16 instances at a time) -> Scene bins, in order
 //   flush()   -> WorkerPool: per tile: clear, PixelExecutor per block, shadeTile
 #pragma once
 
@@ -13,6 +14,7 @@
 
 #include "raster/pixel_executor.h"
 #include "raster/scene.h"
+#include "raster/setup_batch.h"
 #include "raster/setup_executor.h"
 #include "raster/worker_pool.h"
 
@@ -68,6 +70,22 @@ class Renderer : private SubInstanceSink {
               int sequence_points = -1, const uint32_t* const* shared_params = nullptr,
               const LightingState* per_pixel_lighting = nullptr);
 
+  // `instances` instances of one primitive under one state, layout and shade (consecutive
+  // instances of one glBegin): as submit() of each in turn -- the same records, bins and
+  // counters, in the same order -- with their setup run kSetupBatchLanes at a time across
+  // instances (BatchSetupExecutor) where that pays. Instance i's parameters start at
+  // params + i * param_stride, its channels at vertex_channels + i * vertex_stride, its shared
+  // interpolators' blocks at shared_params + i * layout.shared.size().
+  void submitInstances(const CompiledPrimitive& prim, int instances, const uint32_t* params, size_t param_stride,
+                       const float* vertex_channels, size_t vertex_stride, const ChannelLayout& layout,
+                       const RasterState& state, const ShadeState& shade, int sequence_points = -1,
+                       const uint32_t* const* shared_params = nullptr,
+                       const LightingState* per_pixel_lighting = nullptr);
+  // Batched setup on or off (on unless the environment says PF_SETUP_BATCH=0).
+  void setSetupBatching(bool on) { setup_batching_ = on; }
+  bool setupBatching() const { return setup_batching_; }
+  const SetupBatchCounters& setupBatchCounters() const { return batch_setup_.counters; }
+
   // Executes everything recorded: afterwards the colour and depth buffers hold the image.
   void flush();
   bool pending() const { return !scene_.empty(); }
@@ -93,6 +111,12 @@ class Renderer : private SubInstanceSink {
   };
 
   void runTile(int tile, WorkerScratch& scratch);
+  // submit()'s parts: the state, layout and shade bookkeeping (false: no target), the shared
+  // interpolators' setup, and the binning of an instance set up.
+  bool beginSubmission(const ChannelLayout& layout, const RasterState& state, const ShadeState& shade,
+                       const LightingState* per_pixel_lighting);
+  void runShared(const ChannelLayout& layout, const uint32_t* const* shared_params);
+  bool binInstance(const CompiledPrimitive& prim, const SetupOutput& out, size_t offset);
   bool submitAt(const CompiledPrimitive& prim, const uint32_t* params, const float* vertex_channels,
                 int sequence_points, int depth);
   void submitCall(const CompiledPrimitive& callee, const uint32_t* params, const float* vertex_channels,
@@ -103,6 +127,10 @@ class Renderer : private SubInstanceSink {
   // One executor per depth of primitive calls: a caller's registers stay put while its callee runs.
   SetupExecutor setups_[kMaxPrimitiveCallDepth + 1];
   std::vector<uint32_t> record_scratch_[kMaxPrimitiveCallDepth + 1];
+  BatchSetupExecutor batch_setup_;
+  std::vector<uint32_t> batch_records_;
+  bool setup_batching_ = true;
+  uint64_t flushes_ = 0;
   uint32_t shared_offset_ = kNoShared;  // the shared records of the submission in progress
   uint64_t calls_this_submission_ = 0;  // instances its primitive calls made (submitCall)
   std::vector<std::unique_ptr<WorkerScratch>> scratch_;

@@ -103,6 +103,9 @@ void sequencePoint(PFcontextRec& ctx) {
   rowChannels(ctx);
 }
 
+// Instances handed to the renderer together (a multiple of its setup batch).
+constexpr size_t kInstancesPerChunk = 4 * pf::kSetupBatchLanes;
+
 // Hands the rows to the renderer: for a primitive with a fixed count, one instance per
 // `sequence_points` rows; for one with parameter-sized arrays, one instance holding them all.
 void submitInstances(PFcontextRec& ctx) {
@@ -124,41 +127,54 @@ void submitInstances(PFcontextRec& ctx) {
     for (int k = 0; k < 4; ++k) shade.constant_color[k] = ctx.current_color[k];
   }
   const pf::RasterState state = ctx.rasterState();
-  ctx.param_block.assign(static_cast<size_t>(prim.paramFloats(count)), 0u);
+  // Instances go to the renderer a chunk at a time (sized primitives: the one instance), so
+  // that it can run their setup across instances; it keeps their order.
+  const size_t chunk = sized ? 1 : kInstancesPerChunk;
+  const size_t pwords = static_cast<size_t>(prim.paramFloats(count));
+  const size_t vfloats = per * static_cast<size_t>(layout.count);
+  ctx.param_block.assign(chunk * pwords, 0u);
   if (sized) ctx.param_block[static_cast<size_t>(prim.count_slot)] = static_cast<uint32_t>(count);
-  ctx.vertex_channels.assign(per * static_cast<size_t>(layout.count), 0.0f);
+  ctx.vertex_channels.assign(chunk * vfloats, 0.0f);
   const size_t stride = static_cast<size_t>(ctx.row_floats);
   const size_t nshared = layout.shared.size();
-  ctx.shared_blocks.resize(nshared);
-  ctx.shared_block_ptrs.resize(nshared);
-  for (size_t k = 0; k < nshared; ++k) {
-    ctx.shared_blocks[k].assign(static_cast<size_t>(layout.shared[k].program->param_floats), 0u);
+  ctx.shared_blocks.resize(chunk * nshared);
+  ctx.shared_block_ptrs.resize(chunk * nshared);
+  for (size_t k = 0; k < chunk * nshared; ++k) {
+    ctx.shared_blocks[k].assign(static_cast<size_t>(layout.shared[k % nshared].program->param_floats), 0u);
     ctx.shared_block_ptrs[k] = ctx.shared_blocks[k].data();
   }
-  for (size_t first = 0; first + per <= total; first += per) {
-    for (const pf::FeedEntry& f : ctx.feed) {
-      const pf::ParamInfo& p = *f.info;
-      if (f.shared >= 0) {  // a shared interpolator's: per primitive
-        const uint32_t* v = ctx.rows.data() + first * stride + f.row_offset;
-        std::copy(v, v + p.components, ctx.shared_blocks[static_cast<size_t>(f.shared)].begin() + p.offset);
-        continue;
+  const size_t instances = total / per;
+  for (size_t chunk_first = 0; chunk_first < instances; chunk_first += chunk) {
+    const size_t in_chunk = std::min(chunk, instances - chunk_first);
+    for (size_t j = 0; j < in_chunk; ++j) {
+      const size_t first = (chunk_first + j) * per;
+      uint32_t* params = ctx.param_block.data() + j * pwords;
+      for (const pf::FeedEntry& f : ctx.feed) {
+        const pf::ParamInfo& p = *f.info;
+        if (f.shared >= 0) {  // a shared interpolator's: per primitive
+          const uint32_t* v = ctx.rows.data() + first * stride + f.row_offset;
+          std::copy(v, v + p.components,
+                    ctx.shared_blocks[j * nshared + static_cast<size_t>(f.shared)].begin() + p.offset);
+          continue;
+        }
+        if (!p.per_sequence_point) {
+          const uint32_t* v = ctx.rows.data() + first * stride + f.row_offset;
+          std::copy(v, v + p.components, params + p.offset);
+          continue;
+        }
+        for (size_t i = 0; i < per; ++i) {
+          const uint32_t* v = ctx.rows.data() + (first + i) * stride + f.row_offset;
+          std::copy(v, v + p.components, params + prim.paramOffset(p, count, static_cast<int>(i)));
+        }
       }
-      if (!p.per_sequence_point) {
-        const uint32_t* v = ctx.rows.data() + first * stride + f.row_offset;
-        std::copy(v, v + p.components, ctx.param_block.begin() + p.offset);
-        continue;
-      }
-      for (size_t i = 0; i < per; ++i) {
-        const uint32_t* v = ctx.rows.data() + (first + i) * stride + f.row_offset;
-        std::copy(v, v + p.components, ctx.param_block.begin() + prim.paramOffset(p, count, static_cast<int>(i)));
-      }
+      float* channels = ctx.vertex_channels.data() + j * vfloats;
+      for (size_t i = 0; i < per; ++i)
+        for (int c = 0; c < layout.count; ++c) channels[i * layout.count + c] = ctx.row_shading[(first + i) * nch + c];
     }
-    for (size_t i = 0; i < per; ++i)
-      for (int c = 0; c < layout.count; ++c)
-        ctx.vertex_channels[i * layout.count + c] = ctx.row_shading[(first + i) * nch + c];
-    ctx.renderer.submit(prim, ctx.param_block.data(), ctx.vertex_channels.data(), layout, state, shade, count,
-                        nshared ? ctx.shared_block_ptrs.data() : nullptr,
-                        ctx.begin_lit_per_pixel ? &ctx.lighting : nullptr);
+    ctx.renderer.submitInstances(prim, static_cast<int>(in_chunk), ctx.param_block.data(), pwords,
+                                 ctx.vertex_channels.data(), vfloats, layout, state, shade, count,
+                                 nshared ? ctx.shared_block_ptrs.data() : nullptr,
+                                 ctx.begin_lit_per_pixel ? &ctx.lighting : nullptr);
   }
 }
 
