@@ -75,4 +75,35 @@ Real TapeAlgebra::intersect(Real a, Real b) { return sub(add(a, b), sqrt(add(squ
 // a & -b, written a - b - sqrt(a^2 + b^2): the same doubles, since (-b)^2 = b^2 and a + (-b) = a - b.
 Real TapeAlgebra::subtract(Real a, Real b) { return sub(sub(a, b), sqrt(add(square(a), square(b)))); }
 
+// McCormack and Sherstyuk's closed form ("Creating and rendering convolution surfaces", 1998).
+// With a the segment's unit direction, l its length, d = x - b, h = d . a (x's position along
+// the segment) and p^2 = 1 + s^2 (|d|^2 - h^2) (1 plus s^2 times the squared distance to the
+// segment's line), the antiderivative of 1/(p^2 + s^2 u^2)^2 is
+// u / (2 p^2 (p^2 + s^2 u^2)) + atan(s u / p) / (2 s p^3); between u = -h and l - h that is
+//   h / (2 p^2 (1 + s^2 |x - b|^2)) + (l - h) / (2 p^2 (1 + s^2 |x - e|^2))
+//   + (atan(s h / p) + atan(s (l - h) / p)) / (2 s p^3).
+// A segment of length 0 contributes 0 (the integral over nothing).
+Real TapeAlgebra::cauchySegment(const Real x[3], const Real b[3], const Real e[3], Real s) {
+  Real ll = Real::known(0.0);
+  for (int k = 0; k < 3; ++k) ll = add(ll, square(sub(e[k], b[k])));
+  if (ll.is_known && ll.value == 0.0) return Real::known(0.0);
+  const Real l = sqrt(ll);
+  Real h = Real::known(0.0), db = Real::known(0.0), de = Real::known(0.0);
+  for (int k = 0; k < 3; ++k) {
+    const Real d = sub(x[k], b[k]);
+    h = add(h, mul(d, div(sub(e[k], b[k]), l)));
+    db = add(db, square(d));
+    de = add(de, square(sub(x[k], e[k])));
+  }
+  const Real s2 = square(s);
+  const Real one = Real::known(1.0), two = Real::known(2.0);
+  const Real p2 = add(one, mul(s2, sub(db, square(h))));
+  const Real p = sqrt(p2);
+  const Real lh = sub(l, h);
+  const Real near_end = div(h, mul(mul(two, p2), add(one, mul(s2, db))));
+  const Real far_end = div(lh, mul(mul(two, p2), add(one, mul(s2, de))));
+  const Real angles = add(atan(div(mul(s, h), p)), atan(div(mul(s, lh), p)));
+  return add(add(near_end, far_end), div(angles, mul(mul(two, s), mul(p, p2))));
+}
+
 }  // namespace pf::field::hyperfun

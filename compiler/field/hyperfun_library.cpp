@@ -319,6 +319,28 @@ Real hfConvPoint(LibraryCall& c) {
   return m.sub(sum, c.reals[3]);
 }
 
+// Cauchy kernels along segments (TapeAlgebra::cauchySegment), minus T: hfConvLine's segments
+// run from begin[i] to end[i]; hfConvCurve's through vect's N + 1 points in turn; S[i] each.
+template <bool kCurve>
+Real hfConvSegments(LibraryCall& c) {
+  TapeAlgebra& m = c.alg;
+  Items& x = items(c, 0, 3);
+  const int s_arg = kCurve ? 2 : 3;
+  const size_t n = c.arrays[s_arg]->size();
+  Items& S = *c.arrays[s_arg];
+  Items& from = items(c, 1, kCurve ? 3 * (n + 1) : 3 * n);
+  Items& to = kCurve ? from : items(c, 2, 3 * n);
+  Real sum = K(0.0);
+  for (size_t i = 0; i < n; ++i) {
+    const size_t e = kCurve ? 3 * (i + 1) : 3 * i;
+    const Real b[3] = {from[3 * i], from[3 * i + 1], from[3 * i + 2]};
+    const Real en[3] = {to[e], to[e + 1], to[e + 2]};
+    const Real xs[3] = {x[0], x[1], x[2]};
+    sum = m.add(sum, m.cauchySegment(xs, b, en, S[i]));
+  }
+  return m.sub(sum, c.reals[kCurve ? 3 : 4]);
+}
+
 // Gardner's solid noise: a product of three two-term sine series.
 Real hfNoiseG(LibraryCall& c) {
   TapeAlgebra& m = c.alg;
@@ -506,6 +528,8 @@ const LibraryFunction kFunctions[] = {
     {"hfMetaball", "x, x0, y0, z0, b, d, T", "AAAAAAR", hfMetaball, {}},
     {"hfSoft", "x, x0, y0, z0, d, T", "AAAAAR", hfSoft, {}},
     {"hfConvPoint", "x, vect, S, T", "AAAR", hfConvPoint, {}},
+    {"hfConvLine", "x, begin, end, S, T", "AAAAR", hfConvSegments<false>, {}},
+    {"hfConvCurve", "x, vect, S, T", "AAAR", hfConvSegments<true>, {}},
     {"hfNoiseG", "x, amp, freq, phase", "ARRR", hfNoiseG, {}},
     // Blends.
     {"hfBlendUni", "f1, f2, a0, a1, a2", "RRRRR", hfBlend<true>, {}},
@@ -526,8 +550,8 @@ const LibraryFunction kFunctions[] = {
     {"hfSpaceMapExp", "xt, source, target, b", "AAAA", hfSpaceMap<false>, {}},
     {"hfSpaceMapCubic", "xt, source, target, b", "AAAA", hfSpaceMap<true>, {}},
     // Registered in HyperFun but not supported yet.
-    no("hfConvLine", kConvolution), no("hfConvLineR", kConvolution), no("hfConvArc", kConvolution),
-    no("hfConvTriangle", kConvolution), no("hfConvCurve", kConvolution), no("hfConvMesh", kConvolution),
+    no("hfConvLineR", kConvolution), no("hfConvArc", kConvolution), no("hfConvTriangle", kConvolution),
+    no("hfConvMesh", kConvolution),
     no("hfBezierVolume", kNotYet), no("hfDUni", kSardf), no("hfDInt", kSardf), no("hfDSub", kSardf),
     no("hfDBlendUni", kSardf), no("hfDBlendInt", kSardf), no("hfDConeX", kSardf), no("hfDConeY", kSardf),
     no("hfDConeZ", kSardf), no("hfDCylinder", kSardf), no("hfDEllipsoid", kSardf), no("hfDTorusX", kSardf),

@@ -67,6 +67,9 @@ class TapeAlgebra {
   Real unite(Real a, Real b);      // a | b = a + b + sqrt(a^2 + b^2)
   Real intersect(Real a, Real b);  // a & b = a + b - sqrt(a^2 + b^2), and a @ b
   Real subtract(Real a, Real b);   // a \ b = a & -b
+  // The Cauchy kernel 1/(1 + s^2 r^2)^2 integrated along the segment from b to e (r: the distance
+  // from x to the segment's point), in closed form: hfConvLine's and hfConvCurve's term.
+  Real cauchySegment(const Real x[3], const Real b[3], const Real e[3], Real s);
 
  private:
   Real emit(FieldOp op, Real a);

@@ -66,6 +66,10 @@ const LibraryCase kCases[] = {
     {"return hfSoftTerm(p, point(-0.5, 0.0, 0.0), 2.0) + hfSoftTerm(p, point(0.5, 0.2, 0.0), 1.5) - 0.2;",
      "array x0[2], y0[2], z0[2], d[2]; x0 = [-0.5, 0.5]; y0 = [0, 0.2]; z0 = [0, 0]; d = [2, 1.5];"
      "my_model = hfSoft(x, x0, y0, z0, d, 0.2);"},
+    {"return hfConvLineTerm(p, point(-1.0, 0.0, 0.0), point(1.0, 0.5, 0.0), 1.5)"
+     " + hfConvLineTerm(p, point(0.0, -1.0, 0.5), point(0.0, 1.0, -0.5), 0.8) - 0.3;",
+     "array b[6], e[6], w[2]; b = [-1, 0, 0, 0, -1, 0.5]; e = [1, 0.5, 0, 0, 1, -0.5]; w = [1.5, 0.8];"
+     "my_model = hfConvLine(x, b, e, w, 0.3);"},
     {"return hfConvPointTerm(p, point(-0.5, 0.0, 0.0), 1.5) + hfConvPointTerm(p, point(0.5, 0.2, 0.1), 2.0) - 0.4;",
      "array v[6], w[2]; v = [-0.5, 0, 0, 0.5, 0.2, 0.1]; w = [1.5, 2.0];"
      "my_model = hfConvPoint(x, v, w, 0.4);"},

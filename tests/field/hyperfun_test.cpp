@@ -425,6 +425,46 @@ TEST(HyperFun, ConvolutionPointsAndNoise) {
             "m.hf:5:27: error: 'vect' (argument 2 of 'hfConvPoint') must be an array of 6 items; 'v' has 5");
 }
 
+// hfConvLine and hfConvCurve: the Cauchy kernel integrated along segments, against Simpson's
+// rule in double (4000 intervals per segment) -- not against the closed form the library uses.
+double cauchyAlong(double x, double y, double z, const double b[3], const double e[3], double s) {
+  const int n = 4000;
+  double sum = 0;
+  const double len = std::sqrt(sq(e[0] - b[0]) + sq(e[1] - b[1]) + sq(e[2] - b[2]));
+  for (int i = 0; i <= n; ++i) {
+    const double t = double(i) / n;
+    const double r2 = sq(x - (b[0] + t * (e[0] - b[0]))) + sq(y - (b[1] + t * (e[1] - b[1]))) + sq(z - (b[2] + t * (e[2] - b[2])));
+    const double w = i == 0 || i == n ? 1 : i % 2 ? 4 : 2;
+    sum += w / sq(1 + s * s * r2);
+  }
+  return sum * len / (3.0 * n);
+}
+
+TEST(HyperFun, ConvolutionLinesAndCurves) {
+  const double b0[3] = {-1, 0, 0}, e0[3] = {1, 0.5, 0}, b1[3] = {0, -1, 0.5}, e1[3] = {0, 1, -0.5};
+  expectField(model("array b[6], e[6], w[2];\nb = [-1, 0, 0, 0, -1, 0.5];\ne = [1, 0.5, 0, 0, 1, -0.5];\n"
+                    "w = [1.5, 0.8];\nmy_model = hfConvLine(x, b, e, w, 0.3);"),
+              [&](double x, double y, double z) {
+                return cauchyAlong(x, y, z, b0, e0, 1.5) + cauchyAlong(x, y, z, b1, e1, 0.8) - 0.3;
+              },
+              {}, -2.5, 2.5, 1e-5);
+  // A curve through three points: two segments, one S each.
+  const double p0[3] = {-1, -1, 0}, p1[3] = {0, 1, 0.3}, p2[3] = {1.2, -0.5, -0.2};
+  expectField(model("array v[9], w[2];\nv = [-1, -1, 0, 0, 1, 0.3, 1.2, -0.5, -0.2];\nw = [2, 1];\n"
+                    "my_model = hfConvCurve(x, v, w, 0.2);"),
+              [&](double x, double y, double z) {
+                return cauchyAlong(x, y, z, p0, p1, 2) + cauchyAlong(x, y, z, p1, p2, 1) - 0.2;
+              },
+              {}, -2.5, 2.5, 1e-5);
+  // A segment of length 0 adds nothing.
+  expectField(model("array b[3], e[3], w[1];\nb = [0.5, 0.5, 0.5];\ne = [0.5, 0.5, 0.5];\nw = [2];\n"
+                    "my_model = hfConvLine(x, b, e, w, 0.25);"),
+              [](double, double, double) { return -0.25; });
+  expectHas(compileError(model("array v[8], w[2];\nv = [0, 0, 0, 1, 1, 1, 2, 2];\nw = [1, 1];\n"
+                               "my_model = hfConvCurve(x, v, w, 0.2);")),
+            "'vect' (argument 2 of 'hfConvCurve') must be an array of 9 items; 'v' has 8");
+}
+
 TEST(HyperFun, Blends) {
   auto blend = [](double set, double f1, double f2, double a0, double a1, double a2) {
     return set + a0 / (1 + sq(f1 / a1) + sq(f2 / a2));
@@ -548,8 +588,8 @@ TEST(HyperFun, LibraryCallErrorsArePrecise) {
   expectHas(compileError(model("my_model = sign(x[1]);")),
             "m.hf:2:12: error: 'sign' of a value that depends on the point is not supported yet");
   expectHas(compileError(model("my_model = floor(x[1]);")), "m.hf:2:12: error: 'floor' of a value");
-  expectHas(compileError(model("array e[3];\ne = [0, 0, 0];\nmy_model = hfConvLine(x, e, e, e, 1);")),
-            "m.hf:4:12: error: 'hfConvLine' is not supported yet: primflow does not have its convolution integral");
+  expectHas(compileError(model("array e[3];\ne = [0, 0, 0];\nmy_model = hfConvArc(x, e, e, e, e, e, e, 1);")),
+            "m.hf:4:12: error: 'hfConvArc' is not supported yet: primflow does not have its convolution integral");
   expectHas(compileError(model("my_model = hfA_Wave(1, 2, 3, 4);")),
             "m.hf:2:12: error: attribute functions are not supported yet: 'hfA_Wave'");
   expectHas(compileError(model("my_model = hfDUni(x[1], x[2], 1, 1);")),
