@@ -359,6 +359,7 @@ void Renderer::flush() {
   stats_.gbuffer_bytes = 0;
   for (auto& s : scratch_) {
     stats_.blocks_run += s->executor.counters.blocks_run;
+    stats_.blocks_rejected += s->executor.counters.blocks_rejected;
     stats_.lanes_started += s->executor.counters.lanes_started;
     stats_.lanes_committed += s->executor.counters.lanes_committed;
     stats_.pixel_instructions += s->executor.counters.instructions;

@@ -28,6 +28,7 @@ struct FrameStats {
   uint64_t bin_entries = 0;           // (instance, tile) pairs
   uint64_t tiles_run = 0;             // tiles with at least one instance
   uint64_t blocks_run = 0;
+  uint64_t blocks_rejected = 0;       // skipped whole by interval tests (raster/block_rejection.h)
   uint64_t lanes_started = 0;
   uint64_t lanes_committed = 0;
   uint64_t pixels_shaded = 0;

@@ -36,7 +36,10 @@ void printStats(PFcontext ctx, double ms) {
               static_cast<unsigned long long>(s.instances_submitted), static_cast<unsigned long long>(s.instances_killed));
   std::printf("bin entries        %llu\n", static_cast<unsigned long long>(s.bin_entries));
   std::printf("tiles run          %llu\n", static_cast<unsigned long long>(s.tiles_run));
-  std::printf("blocks run         %llu\n", static_cast<unsigned long long>(s.blocks_run));
+  std::printf("blocks run         %llu, %llu rejected whole (%.1f%% of the blocks in bounds)\n",
+              static_cast<unsigned long long>(s.blocks_run), static_cast<unsigned long long>(s.blocks_rejected),
+              s.blocks_run + s.blocks_rejected ? 100.0 * s.blocks_rejected / double(s.blocks_run + s.blocks_rejected)
+                                               : 0.0);
   std::printf("active lanes       %.1f%% at start, %.1f%% committed\n",
               s.blocks_run ? 100.0 * s.lanes_started / (64.0 * s.blocks_run) : 0.0,
               s.blocks_run ? 100.0 * s.lanes_committed / (64.0 * s.blocks_run) : 0.0);
