@@ -113,8 +113,9 @@ TEST(BlockRejection, EdgesWithinRoundingOfAPixelCentre) {
     const BlockRun r = runBlock(p, k, {}, 0, true, 1.0f);
     const double exact = static_cast<double>(a) * (px + 0.5) + static_cast<double>(b) * (py + 0.5) + cc;
     decided_by_rounding += (exact < 0) == r.drawn(px, py);  // float said otherwise than the reals
-    if (rejection.rejects(p.pixel, record.data(), st, px, py, px + 1, py + 1))
+    if (rejection.rejects(p.pixel, record.data(), st, px, py, px + 1, py + 1)) {
       EXPECT_FALSE(r.drawn(px, py)) << "trial " << trial << ": pixel (" << px << ", " << py << ") rejected but drawn";
+    }
   }
   EXPECT_GT(decided_by_rounding, 10);  // the test does reach the cases it is about
 }
