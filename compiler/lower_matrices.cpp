@@ -6,6 +6,7 @@
 // as matrices (docs/language.md, "Matrices").
 #include "compiler/lowerer.h"
 
+#include <array>
 #include <optional>
 #include <utility>
 
@@ -55,11 +56,11 @@ Binding Lowerer::matrixTimes(const Binding& m, const Binding& v, const Type& res
       }
       return out;
     default: {  // a normal: the inverse transpose of the upper 3x3, cofactor(m3) / det(m3)
-      const Binding cof = cofactors3(m);
-      const int det = sumOfProducts({{at(0, 0), cof.comps[0]}, {at(0, 1), cof.comps[1]}, {at(0, 2), cof.comps[2]}});
+      const std::array<int, 9> cof = cofactors3(m);
+      const int det = sumOfProducts({{at(0, 0), cof[0]}, {at(0, 1), cof[1]}, {at(0, 2), cof[2]}});
       for (int r = 0; r < 3; ++r) {
         std::vector<std::pair<int, int>> terms;
-        for (int k = 0; k < 3; ++k) terms.push_back({cof.comps[static_cast<size_t>(r * 3 + k)], v.comps[static_cast<size_t>(k)]});
+        for (int k = 0; k < 3; ++k) terms.push_back({cof[static_cast<size_t>(r * 3 + k)], v.comps[static_cast<size_t>(k)]});
         out.comps.push_back(emit(Op::FDiv, ValueClass::F32, false, sumOfProducts(terms), det));
       }
       return out;
@@ -69,15 +70,14 @@ Binding Lowerer::matrixTimes(const Binding& m, const Binding& v, const Type& res
 
 // The cofactors of m's upper 3x3, row-major: C[r][c] = (-1)^(r+c) times the minor without row r
 // and column c. The inverse transpose is C / det, det = sum_c m[0][c] C[0][c].
-Binding Lowerer::cofactors3(const Binding& m) {
+std::array<int, 9> Lowerer::cofactors3(const Binding& m) {
   auto at = [&](int r, int c) { return m.comps[static_cast<size_t>(r * 4 + c)]; };
-  Binding out;
-  out.type = Type::of(BaseType::Matrix);  // 9 values; only used inside this file
+  std::array<int, 9> out;
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) {
       const int r0 = r == 0 ? 1 : 0, r1 = r == 2 ? 1 : 2, c0 = c == 0 ? 1 : 0, c1 = c == 2 ? 1 : 2;
       const int minor = fsub(fmul(at(r0, c0), at(r1, c1)), fmul(at(r0, c1), at(r1, c0)));
-      out.comps.push_back((r + c) % 2 ? emit(Op::FNeg, ValueClass::F32, false, minor) : minor);
+      out[static_cast<size_t>(r * 3 + c)] = (r + c) % 2 ? emit(Op::FNeg, ValueClass::F32, false, minor) : minor;
     }
   return out;
 }

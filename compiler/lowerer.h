@@ -5,6 +5,7 @@
 // lower_expressions.cpp (expressions, arithmetic, built-in calls, calls of primitives).
 #pragma once
 
+#include <array>
 #include <bit>
 #include <cstdint>
 #include <functional>
@@ -233,7 +234,7 @@ class Lowerer {
   int sumOfProducts(const std::vector<std::pair<int, int>>& terms);
   // m times a matrix, point, vector (upper 3x3) or normal (inverse transpose of the upper 3x3).
   Binding matrixTimes(const Binding& m, const Binding& v, const Type& result);
-  Binding cofactors3(const Binding& m);
+  std::array<int, 9> cofactors3(const Binding& m);  // of the upper 3x3, row-major
   int minor3(const Binding& m, const int rows[3], const int cols[3]);
   std::optional<Binding> matrixCall(const std::string& f, const Expr& e, const std::vector<Binding>& args);
 };

@@ -42,8 +42,9 @@ Range hull(const Range& a, const Range& b) {
 Range add(const Range& a, const Range& b) {
   const double lo = a.lo + b.lo, hi = a.hi + b.hi;
   Range r = widen(std::isnan(lo) ? -kInf : lo, std::isnan(hi) ? kInf : hi);
-  r.maybe_nan = a.maybe_nan || b.maybe_nan || std::isnan(lo) || std::isnan(hi) ||
-                (std::isinf(a.lo + 0 * a.hi) && std::isinf(b.lo + 0 * b.hi));
+  // Some lane may add +inf to -inf when one range reaches +inf and the other -inf.
+  const bool opposite_infinities = (a.hi == kInf && b.lo == -kInf) || (a.lo == -kInf && b.hi == kInf);
+  r.maybe_nan = a.maybe_nan || b.maybe_nan || opposite_infinities;
   return r;
 }
 Range negate(const Range& a) { return {-a.hi, -a.lo, a.maybe_nan}; }
