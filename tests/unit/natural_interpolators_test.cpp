@@ -91,8 +91,8 @@ void param3(const char* name, double x, double y, double z) {
 }
 
 // The quadric x^2 + y^2 = r^2 (a cylinder about the object z axis through kCentre) in the box
-// kCentre +- (r + 0.05, r + 0.05, h / 2), or the ellipsoid-free sphere |p - kCentre| = r in a box
-// around it: `quadric`'s coefficients for both.
+// kCentre +- (r + 0.05, r + 0.05, h / 2), or the sphere |p - kCentre| = r in a box around it:
+// `quadric`'s coefficients for both.
 void drawQuadric(bool cylinder, double r, double h) {
   const glm::dvec3 c = kCentre;
   // f = |p - c|^2 - r^2 (sphere) or with z left out (cylinder), as Q's ten entries.
@@ -109,37 +109,28 @@ void drawQuadric(bool cylinder, double r, double h) {
   pfglEnd();
 }
 
+// One sphere of radius r around kCentre, by `primitive` (sphere or sphere_impostors).
+void drawSphere(const char* primitive, double r) {
+  pfglBegin(pfglGetPrimitiveEXT(primitive));
+  pfglRastParamfEXT(pfglGetParamNameEXT("radius"), static_cast<float>(r));
+  param3("center", kCentre.x, kCentre.y, kCentre.z);
+  pfglSequencePointEXT();
+  pfglEnd();
+}
+
 std::vector<Case> cases() {
   std::vector<Case> out;
   const double r = 0.8;
-  out.push_back({"sphere", "spherical",
-                 [=] {
-                   pfglBegin(pfglGetPrimitiveEXT("sphere"));
-                   pfglRastParamfEXT(pfglGetParamNameEXT("radius"), static_cast<float>(r));
-                   param3("center", kCentre.x, kCentre.y, kCentre.z);
-                   pfglSequencePointEXT();
-                   pfglEnd();
-                 },
-                 [=](const Ray& ray) {
-                   const glm::dvec3 oc = ray.o - kCentre;
-                   return quadraticHit(glm::dot(ray.d, ray.d), glm::dot(oc, ray.d), glm::dot(oc, oc) - r * r, ray,
-                                       [](const glm::dvec3&) { return true; });
-                 },
-                 [](const glm::dvec3& p) { return spherical(p - kCentre); }});
+  // The sphere |p - kCentre| = r, however it is drawn, and its spherical coordinates.
   auto sphereHit = [=](const Ray& ray) {
     const glm::dvec3 oc = ray.o - kCentre;
     return quadraticHit(glm::dot(ray.d, ray.d), glm::dot(oc, ray.d), glm::dot(oc, oc) - r * r, ray,
                         [](const glm::dvec3&) { return true; });
   };
-  out.push_back({"sphere_impostors", "spherical",
-                 [=] {
-                   pfglBegin(pfglGetPrimitiveEXT("sphere_impostors"));
-                   pfglRastParamfEXT(pfglGetParamNameEXT("radius"), static_cast<float>(r));
-                   param3("center", kCentre.x, kCentre.y, kCentre.z);
-                   pfglSequencePointEXT();
-                   pfglEnd();
-                 },
-                 sphereHit, [](const glm::dvec3& p) { return spherical(p - kCentre); }, true});
+  auto aboutCentre = [](const glm::dvec3& p) { return spherical(p - kCentre); };
+  out.push_back({"sphere", "spherical", [=] { drawSphere("sphere", r); }, sphereHit, aboutCentre});
+  out.push_back({"sphere_impostors", "spherical", [=] { drawSphere("sphere_impostors", r); }, sphereHit, aboutCentre,
+                 true});
   const double ring = 0.7, tube = 0.25;
   out.push_back({"torus", "toroidal",
                  [=] {
@@ -191,13 +182,7 @@ std::vector<Case> cases() {
                  },
                  // About the box's axis, from its bottom: v is the height above it (<= 1.2).
                  [=](const glm::dvec3& p) { return cylindrical(p - kCentre + glm::dvec3(0, 0, height / 2)); }});
-  out.push_back({"quadric_sphere", "spherical", [=] { drawQuadric(false, r, 0); },
-                 [=](const Ray& ray) {
-                   const glm::dvec3 oc = ray.o - kCentre;
-                   return quadraticHit(glm::dot(ray.d, ray.d), glm::dot(oc, ray.d), glm::dot(oc, oc) - r * r, ray,
-                                       [](const glm::dvec3&) { return true; });
-                 },
-                 [](const glm::dvec3& p) { return spherical(p - kCentre); }});
+  out.push_back({"quadric_sphere", "spherical", [=] { drawQuadric(false, r, 0); }, sphereHit, aboutCentre});
   out.push_back({"disk", "cylindrical",
                  [=] {
                    pfglBegin(pfglGetPrimitiveEXT("disk"));
