@@ -55,7 +55,7 @@ void dumpBlock(const IrFunction& f, const IrBlock& b, int depth, std::string& ou
     const IrInst& in = n.inst;
     out += pad;
     if (in.dst >= 0) out += valueName(f, in.dst) + " = ";
-    out += opName(in.op);
+    out += opText(in.op, in.imm);
     bool first = true;
     for (int o : {in.a, in.b, in.c, in.d}) {
       if (o < 0) continue;

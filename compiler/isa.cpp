@@ -3,6 +3,8 @@
 
 #include <cstring>
 
+#include "compiler/fixed_point.h"
+
 namespace pf {
 
 const char* opName(Op op) {
@@ -11,12 +13,22 @@ const char* opName(Op op) {
       "fsign", "fsin", "fcos", "ftan", "fasin", "facos", "fatan", "fatan2", "fpow", "fexp", "flog",
       "fnoise", "iadd", "isub", "imul", "idiv", "imod", "ineg", "imin", "imax", "iabs", "i2f",
       "f2i", "flt", "fle", "feq", "fne", "ilt", "ile", "ieq", "ine", "band", "bor", "bnot", "sel", "cross_sign",
-      "mov", "xadd", "xsub", "xneg", "xmulf", "xdivf", "xmov", "xloadvertex", "xsel", "loadparamat", "xloadvertexat", "loadstate", "haskinds", "hasnamed",
+      "qadd", "qsub", "qmul", "qdiv", "qneg", "qabs", "qlt", "qle", "qeq", "qfromf", "qfromi", "qtof",
+      "qtoi", "qconv", "mov", "xadd", "xsub", "xneg", "xmulf", "xdivf", "xmov", "xloadvertex", "xsel", "loadparamat", "xloadvertexat", "loadstate", "haskinds", "hasnamed",
       "bound", "kill", "retire", "ztest", "interp_return", "interp_shared", "shadeout", "interp_named_return", "zcommit", "surfacecommit", "fieldbox", "fieldhit", "fieldgradient", "outparam", "outvertex", "emit", "backfacing",
       "loopbegin", "looptest", "break", "continue", "loopcontinue", "loopback", "loopend", "jmp",
       "jmpifnot", "maskif", "maskelse", "maskend", "jmpifnone"};
   static_assert(sizeof(names) / sizeof(names[0]) == static_cast<size_t>(Op::OpCount));
   return names[static_cast<size_t>(op)];
+}
+
+std::string opText(Op op, int imm) {
+  std::string s = opName(op);
+  if (op < Op::QAdd || op > Op::QConv || op == Op::QLt || op == Op::QLe || op == Op::QEq) return s;
+  const FixedFormat f = fixedFormatOf(static_cast<uint32_t>(imm));
+  if (op == Op::QToF || op == Op::QToI) return s + "<frac " + std::to_string(f.frac) + ">";
+  return s + (fixedHalfOf(static_cast<uint32_t>(imm)) ? ".hi<" : ".lo<") + std::to_string(f.bits) + "," +
+         std::to_string(f.frac) + ">";
 }
 
 namespace {
@@ -67,7 +79,7 @@ std::string disassemble(const Bytecode& b, bool pixel) {
     char head[32];
     std::snprintf(head, sizeof head, "%4zu  ", pc);
     out += head;
-    out += opName(in.op);
+    out += opText(in.op, in.imm);
     bool xi = isInterpOp(in.op);
     std::vector<std::string> parts;
     bool is_jump = in.op == Op::Jmp || in.op == Op::JmpIfNot || in.op == Op::JmpIfNone || in.op == Op::LoopBack;

@@ -25,6 +25,14 @@ enum class Op : uint8_t {
   BAnd, BOr, BNot,
   Sel,  // dst = a ? b : c  (any 32-bit class)
   CrossSign,  // dst = sign(a * d - b * c) as -1, 0, 1, exact (evaluated in double)
+  // fixed<bits,frac> (compiler/fixed_point.h has the rules): a value is two words, its raw
+  // integer's low and high 32 bits; operands are the pairs (a, b) and (c, d). Each instruction
+  // gives one word of its result: imm = fixedImm(result format, half).
+  QAdd, QSub, QMul, QDiv, QNeg, QAbs,
+  QLt, QLe, QEq,  // bool (both operands of one format; imm unused)
+  QFromF, QFromI,  // float / int a converted
+  QToF, QToI,      // (a, b) of imm's frac converted to float / int (imm's half unused)
+  QConv,           // (a, b) of frac c (an int constant) converted to imm's format
   Mov,
   // interpolator_data: one value per shading-parameter channel of the instance
   XAdd, XSub, XNeg, XMulF, XDivF, XMov,
@@ -82,6 +90,9 @@ enum class Op : uint8_t {
 };
 
 const char* opName(Op op);
+// The op as listings show it: its name, and for a fixed-point instruction the word and format
+// its imm selects (qmul.hi<16,8>; qtof<frac 8>).
+std::string opText(Op op, int imm);
 
 // Values of the GL context that programs can read (screen() and depth_range() use these).
 enum class StateValue : uint16_t {

@@ -110,7 +110,7 @@ class Optimizer {
   }
 
   std::string text(const IrInst& in) const {
-    std::string s = std::string(opName(in.op));
+    std::string s = opText(in.op, in.imm);
     bool first = true;
     for (int o : {in.a, in.b, in.c, in.d}) {
       if (o < 0) continue;
@@ -166,7 +166,7 @@ class Optimizer {
     if (isFoldable(in.op) && (in.a < 0 || isConst(in.a)) && (in.b < 0 || isConst(in.b)) &&
         (in.c < 0 || isConst(in.c)) && (in.d < 0 || isConst(in.d))) {
       auto bits = [&](int v) { return v < 0 ? 0u : f_.values[v].bits; };
-      uint32_t r = evalScalar(in.op, bits(in.a), bits(in.b), bits(in.c), bits(in.d));
+      uint32_t r = evalScalar(in.op, bits(in.a), bits(in.b), bits(in.c), bits(in.d), static_cast<uint32_t>(in.imm));
       int c = constant(f_.values[in.dst].cls, r);
       note(in, irValueName(f_, in.dst) + " = " + text(in) + ": constant operands, folded to " + irValueName(f_, c));
       subst_[in.dst] = c;

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "compiler/fixed_point.h"
 #include "compiler/isa.h"
 #include "compiler/perlin_noise.h"
 
@@ -28,7 +29,32 @@ inline int32_t saturatingToInt(float f) {
 
 // Always inlined: with `op` a constant (the pixel kernels are instantiated per op), the switch
 // folds away and the lane loop around it vectorizes.
-[[gnu::always_inline]] inline uint32_t evalScalar(Op op, uint32_t a, uint32_t b, uint32_t c, uint32_t d = 0) {
+// One word of a fixed-point instruction's result (the Q ops of isa.h).
+inline uint32_t evalFixed(Op op, uint32_t a, uint32_t b, uint32_t c, uint32_t d, uint32_t imm) {
+  const FixedFormat f = fixedFormatOf(imm);
+  const int half = fixedHalfOf(imm);
+  const int64_t x = fixedJoin(a, b), y = fixedJoin(c, d);
+  switch (op) {
+    case Op::QAdd: return fixedHalf(fixedWrap(static_cast<__int128>(x) + y, f.bits), half);
+    case Op::QSub: return fixedHalf(fixedWrap(static_cast<__int128>(x) - y, f.bits), half);
+    case Op::QMul: return fixedHalf(fixedMul(x, y, f), half);
+    case Op::QDiv: return fixedHalf(fixedDiv(x, y, f), half);
+    case Op::QNeg: return fixedHalf(fixedWrap(-static_cast<__int128>(x), f.bits), half);
+    case Op::QAbs: return fixedHalf(fixedWrap(x < 0 ? -static_cast<__int128>(x) : x, f.bits), half);
+    case Op::QLt: return x < y;
+    case Op::QLe: return x <= y;
+    case Op::QEq: return x == y;
+    case Op::QFromF: return fixedHalf(fixedFromFloat(asF(a), f), half);
+    case Op::QFromI: return fixedHalf(fixedFromInt(asI(a), f), half);
+    case Op::QToF: return fromF(fixedToFloat(x, f.frac));
+    case Op::QToI: return fromI(fixedToInt(x, f.frac));
+    case Op::QConv: return fixedHalf(fixedConvert(x, asI(c), f), half);
+    default: return 0;
+  }
+}
+
+// imm: the instruction's immediate, which only the fixed-point instructions read.
+[[gnu::always_inline]] inline uint32_t evalScalar(Op op, uint32_t a, uint32_t b, uint32_t c, uint32_t d = 0, uint32_t imm = 0) {
   switch (op) {
     case Op::FAdd: return fromF(asF(a) + asF(b));
     case Op::FSub: return fromF(asF(a) - asF(b));
@@ -88,6 +114,10 @@ inline int32_t saturatingToInt(float f) {
       double p = static_cast<double>(asF(a)) * asF(d), q = static_cast<double>(asF(b)) * asF(c);
       return fromF(static_cast<float>(p > q) - static_cast<float>(p < q));
     }
+    case Op::QAdd: case Op::QSub: case Op::QMul: case Op::QDiv: case Op::QNeg: case Op::QAbs:
+    case Op::QLt: case Op::QLe: case Op::QEq: case Op::QFromF: case Op::QFromI: case Op::QToF:
+    case Op::QToI: case Op::QConv:
+      return evalFixed(op, a, b, c, d, imm);
     case Op::Mov: return a;
     default: return 0;
   }

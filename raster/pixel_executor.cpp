@@ -18,13 +18,13 @@
 namespace pf {
 namespace {
 
-using Kernel = void (*)(uint32_t* __restrict, const uint32_t*, const uint32_t*, const uint32_t*, const uint32_t*);
+using Kernel = void (*)(uint32_t* __restrict, const uint32_t*, const uint32_t*, const uint32_t*, const uint32_t*, uint32_t);
 
 template <Op OP, unsigned WIDE>  // bit k set: operand k (a, b, c, d) has one value per lane
-void kernel(uint32_t* __restrict r, const uint32_t* a, const uint32_t* b, const uint32_t* c, const uint32_t* d) {
+void kernel(uint32_t* __restrict r, const uint32_t* a, const uint32_t* b, const uint32_t* c, const uint32_t* d, uint32_t imm) {
   for (int i = 0; i < kLanes; ++i)
     r[i] = evalScalar(OP, (WIDE & 1) ? a[i] : a[0], (WIDE & 2) ? b[i] : b[0], (WIDE & 4) ? c[i] : c[0],
-                      (WIDE & 8) ? d[i] : d[0]);
+                      (WIDE & 8) ? d[i] : d[0], imm);
 }
 
 template <Op OP, size_t... W>
@@ -252,12 +252,13 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const uint32_t* r
   alignas(64) uint32_t tmp[kLanes];
 
   auto run = [&](Op op, uint32_t* dst, const uint32_t* a, bool wa, const uint32_t* b, bool wb,
-                 const uint32_t* c, bool wc, uint64_t exec, const uint32_t* d = kZeroLanes, bool wd = false) {
+                 const uint32_t* c, bool wc, uint64_t exec, const uint32_t* d = kZeroLanes, bool wd = false,
+                 uint32_t imm = 0) {
     Kernel k = kKernels[static_cast<size_t>(op)][(wa ? 1 : 0) | (wb ? 2 : 0) | (wc ? 4 : 0) | (wd ? 8 : 0)];
     if (exec == ~0ull) {
-      k(dst, a, b, c, d);
+      k(dst, a, b, c, d, imm);
     } else {
-      k(tmp, a, b, c, d);
+      k(tmp, a, b, c, d, imm);
       blend(dst, tmp, exec);
     }
   };
@@ -504,7 +505,7 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const uint32_t* r
         const uint32_t* d = ins.d == kNoOperand ? kZeroLanes : src(ins.d, wd);
         uint32_t* r = R + static_cast<size_t>(operandIndex(ins.dst)) * kLanes;
         // A value written once writes every lane (see Instr::masked_write): no blend.
-        run(ins.op, r, a, wa, b, wb, c, wc, ins.masked_write ? exec : ~0ull, d, wd);
+        run(ins.op, r, a, wa, b, wb, c, wc, ins.masked_write ? exec : ~0ull, d, wd, ins.imm);
       }
     }
   }

@@ -22,13 +22,13 @@ constexpr int K = kSetupBatchLanes;
 static_assert(K <= 32, "lane sets are 32-bit");
 constexpr uint32_t kAllLanes = K == 32 ? ~0u : (1u << K) - 1u;
 
-using LaneKernel = void (*)(uint32_t*, const uint32_t*, const uint32_t*, const uint32_t*, const uint32_t*);
+using LaneKernel = void (*)(uint32_t*, const uint32_t*, const uint32_t*, const uint32_t*, const uint32_t*, uint32_t);
 
 template <Op OP>
-void laneKernel(uint32_t* dst, const uint32_t* a, const uint32_t* b, const uint32_t* c, const uint32_t* d) {
+void laneKernel(uint32_t* dst, const uint32_t* a, const uint32_t* b, const uint32_t* c, const uint32_t* d, uint32_t imm) {
   // Into a temporary first: dst may be one of the operands.
   alignas(64) uint32_t r[K];
-  for (int l = 0; l < K; ++l) r[l] = evalScalar(OP, a[l], b[l], c[l], d[l]);
+  for (int l = 0; l < K; ++l) r[l] = evalScalar(OP, a[l], b[l], c[l], d[l], imm);
   std::memcpy(dst, r, sizeof r);
 }
 
@@ -158,7 +158,7 @@ void BatchSetupExecutor::runBatch(const CompiledPrimitive& prim, const SetupInpu
     }
     if (static_cast<size_t>(ins.op) < kKernelOps) {
       kLaneKernels[static_cast<size_t>(ins.op)](lanesOf(ins.dst), argOf(ins.a), argOf(ins.b), argOf(ins.c),
-                                                argOf(ins.d));
+                                                argOf(ins.d), ins.imm);
       continue;
     }
     switch (ins.op) {

@@ -183,7 +183,7 @@ SetupOutput SetupExecutor::execute(const CompiledPrimitive& prim, const SetupInp
       }
       default: {
         uint32_t r = evalScalar(ins.op, read(ins.a), ins.b == kNoOperand ? 0 : read(ins.b),
-                                ins.c == kNoOperand ? 0 : read(ins.c), ins.d == kNoOperand ? 0 : read(ins.d));
+                                ins.c == kNoOperand ? 0 : read(ins.c), ins.d == kNoOperand ? 0 : read(ins.d), ins.imm);
         U[operandIndex(ins.dst)] = r;
       }
     }

@@ -37,6 +37,10 @@ const char* sourceName(Op op) {
     case Op::FSign: return "sign";
     case Op::FNoise: return "noise";
     case Op::F2I: return "conversion to int";
+    case Op::QAdd: case Op::QSub: case Op::QMul: case Op::QDiv: case Op::QNeg: case Op::QAbs:
+    case Op::QLt: case Op::QLe: case Op::QEq: case Op::QFromF: case Op::QFromI: case Op::QToF:
+    case Op::QToI: case Op::QConv:
+      return "fixed-point arithmetic (fixed<bits,frac>)";
     default: return nullptr;
   }
 }
@@ -192,15 +196,15 @@ class TapeTranslator {
     if (!pure)
       fail(loc, std::string("'") + opName(in.op) + "' is not available in a field: a field is a pure function of its point");
     // An operand that is already an error makes this value one too (raised where it is used).
-    for (int v : {in.a, in.b, in.c})
+    for (int v : {in.a, in.b, in.c, in.d})
       if (const Symbol s = get(v, loc); s.poison >= 0) {
         set(in.dst, s);
         return {};
       }
-    const bool known = knownValue(in.a, loc) && knownValue(in.b, loc) && knownValue(in.c, loc);
+    const bool known = knownValue(in.a, loc) && knownValue(in.b, loc) && knownValue(in.c, loc) && knownValue(in.d, loc);
     if (known) {
       const auto bits = [&](int v) { return get(v, loc).bits; };
-      set(in.dst, {true, evalScalar(in.op, bits(in.a), bits(in.b), bits(in.c))});
+      set(in.dst, {true, evalScalar(in.op, bits(in.a), bits(in.b), bits(in.c), bits(in.d), static_cast<uint32_t>(in.imm))});
       return {};
     }
     const auto unary = [&](FieldOp op) { setNode(in.dst, builder_.unary(op, node(in.a, loc)), loc); };

@@ -231,7 +231,7 @@ class Interpreter {
         return {};
       }
       default:
-        scalar_[in.dst] = evalScalar(in.op, get(in.a), get(in.b), get(in.c), get(in.d));
+        scalar_[in.dst] = evalScalar(in.op, get(in.a), get(in.b), get(in.c), get(in.d), static_cast<uint32_t>(in.imm));
         return {};
     }
   }
