@@ -33,6 +33,10 @@ inline bool isNumericScalar(const Type& t) {
 inline bool isFloatLike(const Type& t) { return isNumericScalar(t); }
 inline bool isBool(const Type& t) { return t.dims.empty() && t.base == BaseType::Bool; }
 inline bool isInterp(const Type& t) { return t.dims.empty() && t.base == BaseType::InterpData; }
+inline bool isFixed(const Type& t) { return t.isFixed(); }
+// Where a float is expected (a built-in's argument, a shading value, bound()), a fixed value
+// takes part as its float: wraps e, if it is fixed, in an implicit float(e) conversion.
+void fixedAsFloat(ExprPtr& e);
 inline bool isAggregate(const Type& t) { return t.isAggregate() && t.base != BaseType::InterpData; }
 // What a shading parameter can hold (an interpolator's value): a number, point, vector, normal
 // or colour.
@@ -162,6 +166,11 @@ class Analyzer {
   void primitiveCall(Expr& e, const PrimitiveSignature& callee);
 
   void call(Expr& e);
+
+  // Calls involving fixed<bits,frac> values that stay fixed-point: conversions (fixed<b,f>(x),
+  // float(q), int(q)) and abs / min / max / clamp of one format. Returns false to leave the
+  // call to the built-ins (with its fixed arguments converted to float).
+  bool fixedCall(Expr& e);
 };
 
 }  // namespace pf::analysis

@@ -26,6 +26,9 @@ struct Expr {
   bool boolean = false;
   std::vector<ExprPtr> args;  // operands / call arguments / [base, index] / [cond, a, b]
 
+  // Call of `fixed<bits,frac>(x)`, a conversion: the type converted to.
+  Type conversion;
+
   // Filled in by semantic analysis.
   Type type;
   bool varying = false;

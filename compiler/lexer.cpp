@@ -37,6 +37,7 @@ const char* tokenName(Tok t) {
     case Tok::KwNormal: return "'normal'";
     case Tok::KwColor: return "'color'";
     case Tok::KwMatrix: return "'matrix'";
+    case Tok::KwFixed: return "'fixed'";
     case Tok::KwInterpolatorData: return "'interpolator_data'";
     case Tok::KwPerspectiveLinear: return "'perspective_linear'";
     case Tok::KwLinear: return "'linear'";
@@ -104,6 +105,7 @@ const std::unordered_map<std::string, Tok>& keywords() {
       {"normal", Tok::KwNormal},
       {"color", Tok::KwColor},
       {"matrix", Tok::KwMatrix},
+      {"fixed", Tok::KwFixed},
       {"interpolator_data", Tok::KwInterpolatorData},
       {"perspective_linear", Tok::KwPerspectiveLinear},
       {"linear", Tok::KwLinear},

@@ -13,7 +13,7 @@ enum class Tok {
   // keywords
   KwPrimitive, KwInterpolator, KwUniform, KwVarying, KwInout, KwIf, KwElse, KwReturn,
   KwInterpolation, KwInterpolatorReturn, KwBound, KwTrue, KwFalse, KwFor, KwWhile, KwBreak, KwContinue,
-  KwFloat, KwInt, KwBool, KwPoint, KwVector, KwNormal, KwColor, KwMatrix, KwInterpolatorData,
+  KwFloat, KwInt, KwBool, KwPoint, KwVector, KwNormal, KwColor, KwMatrix, KwFixed, KwInterpolatorData,
   KwPerspectiveLinear, KwLinear, KwDefault,
   // punctuation and operators
   LParen, RParen, LBrace, RBrace, LBracket, RBracket, Comma, Semi, Colon, Dot, Question,

@@ -252,6 +252,9 @@ int Lowerer::toFloat(int v) {
 }
 
 std::vector<int> Lowerer::convert(const Binding& from, const Type& to) {
+  if (to.isFixed()) return toFixed(from, to).comps;
+  if (from.type.isFixed() && to.dims.empty())
+    return {to.base == BaseType::Int ? fixedToInt(from) : asFloat(from).comps[0]};
   std::vector<int> out = from.comps;
   if (to.base == BaseType::Float || (to.isAggregate() && to.base != BaseType::InterpData))
     for (int& c : out)

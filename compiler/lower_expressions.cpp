@@ -61,6 +61,7 @@ Binding Lowerer::exprAt(const Expr& e) {
     case ExprKind::Unary: {
       Binding a = expr(*e.args[0]);
       if (e.name == "!") return scalar(e.type, emit(Op::BNot, ValueClass::Bool, false, a.comps[0]));
+      if (a.type.isFixed()) return fixedNegate(a);
       Binding out;
       out.type = e.type;
       for (int c : a.comps) {
@@ -93,6 +94,7 @@ Binding Lowerer::binary(const Expr& e) {
   if (op == "&&" || op == "||")
     return scalar(e.type, emit(op == "&&" ? Op::BAnd : Op::BOr, ValueClass::Bool, false, a.comps[0], b.comps[0]));
   if (op == "<" || op == "<=" || op == ">" || op == ">=" || op == "==" || op == "!=") {
+    if (a.type.isFixed() || b.type.isFixed()) return scalar(e.type, fixedCompare(op, a, b));
     int x = a.comps[0], y = b.comps[0];
     bool ints = (cls(x) == ValueClass::I32 && cls(y) == ValueClass::I32) ||
                 (cls(x) == ValueClass::Bool && cls(y) == ValueClass::Bool);
@@ -115,6 +117,7 @@ Binding Lowerer::binary(const Expr& e) {
 }
 
 Binding Lowerer::arith(const std::string& op, const Binding& a, const Binding& b, const Type& result, SourceLoc loc) {
+  if (a.type.isFixed() || b.type.isFixed()) return fixedArith(op, a, b, result, loc);
   Binding out;
   out.type = result;
   if (result.base == BaseType::Void) return out;
@@ -300,6 +303,7 @@ Binding Lowerer::call(const Expr& e) {
   for (const ExprPtr& a : e.args) args.push_back(expr(*a));
   auto arg = [&](size_t i) { return args[i].comps[0]; };
   auto farg = [&](size_t i) { return toFloat(args[i].comps[0]); };
+  if (std::optional<Binding> q = fixedCall(e, args)) return *q;
   if (int k = componentwiseArity(f)) return componentwise(e, args, k);
   if (std::optional<Binding> m = matrixCall(f, e, args)) return *m;
   if (f == "cross_sign") {

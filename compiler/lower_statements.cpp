@@ -61,6 +61,16 @@ bool Lowerer::scoped(const std::vector<StmtPtr>& body) {
 }
 
 bool Lowerer::statement(const Stmt& s) {
+  // Instructions no expression accounts for (the conversion of a value into a variable's type,
+  // say) carry the statement's location.
+  const SourceLoc saved = cur_loc_;
+  cur_loc_ = s.loc;
+  const bool returns = statementAt(s);
+  cur_loc_ = saved;
+  return returns;
+}
+
+bool Lowerer::statementAt(const Stmt& s) {
   switch (s.kind) {
     case StmtKind::Block:
       return s.op == "decls" ? statements(s.body) : scoped(s.body);
@@ -70,6 +80,7 @@ bool Lowerer::statement(const Stmt& s) {
       b.may_vary = s.inferred_varying;
       if (s.value) {
         Binding v = expr(*s.value);
+        cur_loc_ = s.value->loc;  // its conversion: where the value is
         b.comps = convert(v, s.decl_type);
       } else if (s.decl_type.base == BaseType::InterpData) {
         b.comps.assign(static_cast<size_t>(s.decl_type.elementCount()), zeroInterp());

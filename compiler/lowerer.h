@@ -49,9 +49,11 @@ struct LoopSpec {
   std::function<void()> body, step;
 };
 
-// The value class that holds one component of a base type.
+// The value class that holds one component of a base type (a fixed value's two words: ints).
 inline ValueClass classOf(BaseType b) {
-  return b == BaseType::Int ? ValueClass::I32 : b == BaseType::Bool ? ValueClass::Bool : ValueClass::F32;
+  return b == BaseType::Int || b == BaseType::Fixed ? ValueClass::I32
+         : b == BaseType::Bool                      ? ValueClass::Bool
+                                                    : ValueClass::F32;
 }
 
 class Lowerer {
@@ -131,6 +133,7 @@ class Lowerer {
   bool scoped(const std::vector<StmtPtr>& body);
 
   bool statement(const Stmt& s);
+  bool statementAt(const Stmt& s);
 
   // The carried values of loop `index` (default: the innermost) take the current bindings.
   void carryCopies(SourceLoc loc, int index = -1);
@@ -229,6 +232,24 @@ class Lowerer {
   Binding callPrimitive(const Expr& e, const CompiledPrimitive& callee);
 
   Binding call(const Expr& e);
+
+  // ---- fixed<bits,frac> (lower_fixed.cpp; the arithmetic is compiler/fixed_point.h's) ----
+  // One instruction on word pairs: a 4-operand emit.
+  int emitWord(Op op, ValueClass c, int a, int b, int cc, int d, int imm);
+  // Both words of a fixed result: op on the pairs (a, b) and (c, d).
+  Binding fixedPair(Op op, const Type& result, int a, int b = -1, int c = -1, int d = -1);
+  // A number or fixed value converted to fixed type `to` (rounded, saturated).
+  Binding toFixed(const Binding& from, const Type& to);
+  // A fixed value as a float binding (correctly rounded); any other binding unchanged.
+  Binding asFloat(const Binding& v);
+  int fixedToInt(const Binding& v);
+  // + - * / where an operand is fixed: exact when both are fixed or int, else in floats.
+  Binding fixedArith(const std::string& op, const Binding& a, const Binding& b, const Type& result, SourceLoc loc);
+  // A comparison where an operand is fixed (a Bool value).
+  int fixedCompare(const std::string& op, const Binding& a, const Binding& b);
+  Binding fixedNegate(const Binding& a);
+  // Conversions and abs / min / max / clamp whose result sema typed as fixed (or float(q), int(q)).
+  std::optional<Binding> fixedCall(const Expr& e, const std::vector<Binding>& args);
 
   // ---- matrices (lower_matrices.cpp) ----
   int sumOfProducts(const std::vector<std::pair<int, int>>& terms);

@@ -46,6 +46,18 @@ class Parser {
 
   const Token& cur() const { return t_[pos_]; }
   const Token& next() const { return t_[std::min(pos_ + 1, t_.size() - 1)]; }
+  const Token& ahead(size_t n) const { return t_[std::min(pos_ + n, t_.size() - 1)]; }
+  // The token after the type that starts here: `fixed<bits,frac>` is six tokens, the other
+  // types one (a malformed fixed<...> gives the token where it goes wrong; baseType() reports it).
+  const Token& afterType() const {
+    if (!at(Tok::KwFixed)) return next();
+    static constexpr Tok shape[] = {Tok::Lt, Tok::IntLit, Tok::Comma, Tok::IntLit, Tok::Gt};
+    for (size_t i = 0; i < 5; ++i)
+      if (ahead(i + 1).kind != shape[i]) return ahead(i + 1);
+    return ahead(6);
+  }
+  // A conversion such as float(i) or fixed<16,8>(x): a type followed by '('.
+  bool atConversion() const { return isTypeToken(cur().kind) && afterType().kind == Tok::LParen; }
   bool at(Tok k) const { return cur().kind == k; }
   // A label of the interpolation construct: a kind's keyword, or `name:` (no statement begins
   // with a name and a colon, so the name is a shared interpolator's).
@@ -84,7 +96,7 @@ class Parser {
   }
   bool atUnitStart() const {
     return at(Tok::KwPrimitive) || at(Tok::KwInterpolator) || atFieldUnit() ||
-           (isTypeToken(cur().kind) && next().kind == Tok::Ident);
+           (isTypeToken(cur().kind) && afterType().kind == Tok::Ident);
   }
   void skipToUnit() {
     if (!atUnitStart()) take();
@@ -123,6 +135,7 @@ class Parser {
     switch (k) {
       case Tok::KwFloat: case Tok::KwInt: case Tok::KwBool: case Tok::KwPoint:
       case Tok::KwVector: case Tok::KwNormal: case Tok::KwColor: case Tok::KwMatrix: case Tok::KwInterpolatorData:
+      case Tok::KwFixed:
         return true;
       default: return false;
     }
@@ -141,6 +154,7 @@ class Parser {
       case Tok::KwColor: return BaseType::Color;
       case Tok::KwMatrix: return BaseType::Matrix;
       case Tok::KwInterpolatorData: return BaseType::InterpData;
+      case Tok::KwFixed: return BaseType::Fixed;
       default: return BaseType::Void;
     }
   }
@@ -163,7 +177,30 @@ class Parser {
 
   Type baseType() {
     if (!isTypeToken(cur().kind)) fail(cur().loc, "expected a type, found " + describe(cur()));
+    if (at(Tok::KwFixed)) return fixedType();
     return Type::of(baseOf(take().kind));
+  }
+
+  // fixed<bits,frac>: 1 <= bits <= 64, 0 <= frac <= bits.
+  Type fixedType() {
+    take();
+    expect(Tok::Lt, "after 'fixed' (a fixed-point type is fixed<bits,frac>, e.g. fixed<16,8>)");
+    auto number = [&](const char* what, long lo, long hi) {
+      if (!at(Tok::IntLit))
+        fail(cur().loc, std::string("expected ") + what + " of fixed<bits,frac> (an integer), found " + describe(cur()));
+      Token n = take();
+      errno = 0;
+      long v = std::strtol(n.text.c_str(), nullptr, 10);
+      if (errno != 0 || v < lo || v > hi)
+        fail(n.loc, std::string(what) + " of fixed<bits,frac> must be between " + std::to_string(lo) + " and " +
+                        std::to_string(hi) + ", not " + n.text);
+      return static_cast<int>(v);
+    };
+    int bits = number("the bits", 1, 64);
+    expect(Tok::Comma, "between the bits and the fraction bits of fixed<bits,frac>");
+    int frac = number("the fraction bits", 0, bits);
+    expect(Tok::Gt, "to close fixed<bits,frac>");
+    return Type::fixed(bits, frac);
   }
 
   // `[n]...`; `allow_parameter_sized`: the first may be `[]` (a primitive's parameter).
@@ -279,7 +316,7 @@ class Parser {
     }
     if (isQualifierToken(cur().kind) || isTypeToken(cur().kind)) {
       // `float(x)` is a conversion expression, not a declaration.
-      if (!(isTypeToken(cur().kind) && next().kind == Tok::LParen)) return declaration();
+      if (!atConversion()) return declaration();
     }
     if (accept(Tok::KwIf)) {
       auto s = make(StmtKind::If, loc);
@@ -353,7 +390,7 @@ class Parser {
   // With `semicolon`, the terminating ';' is consumed.
   StmtPtr simpleStatement(bool semicolon) {
     SourceLoc loc = cur().loc;
-    if (isQualifierToken(cur().kind) || (isTypeToken(cur().kind) && next().kind != Tok::LParen)) {
+    if (isQualifierToken(cur().kind) || (isTypeToken(cur().kind) && !atConversion())) {
       if (!semicolon) fail(loc, "a declaration cannot be the step of a 'for' loop");
       return declaration();
     }
@@ -559,9 +596,13 @@ class Parser {
         return e;
       }
       default:
-        if (isTypeToken(tk.kind) && next().kind == Tok::LParen) {
-          Token ty = take();
-          return call(ty.text, ty.loc);  // constructor / conversion: float(i), point(x, y, z, w)
+        if (atConversion()) {
+          // constructor / conversion: float(i), point(x, y, z, w), fixed<16,8>(x)
+          const SourceLoc loc = tk.loc;
+          const Type type = baseType();
+          ExprPtr e = call(baseTypeName(type.base), loc);
+          e->conversion = type;
+          return e;
         }
         fail(tk.loc, "expected an expression, found " + describe(tk));
     }

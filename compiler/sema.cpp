@@ -145,6 +145,10 @@ void Analyzer::unitParams(Unit& u) {
         log_.error(p.loc, "the built-in '" + p.name + "' is the pixel position: it is 'varying', never 'uniform' or 'inout'");
       continue;
     }
+    if (p.type.base == BaseType::Fixed)
+      log_.error(p.loc, "parameter '" + p.name + "' cannot be " + typeName(p.type) +
+                            ": parameters arrive from the API as floats; declare it float and convert inside (" +
+                            typeName(p.type) + "(" + p.name + "))");
     if (p.qualifier == Qualifier::Varying || p.qualifier == Qualifier::InoutVarying)
       log_.error(p.loc, "parameter '" + p.name + "' cannot be varying: parameters are bound per primitive or per sequence point, so they are uniform");
     if (u.kind == UnitKind::Interpolator && (p.type.isArray() || p.type.base == BaseType::InterpData))

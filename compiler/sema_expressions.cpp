@@ -26,6 +26,18 @@ int componentIndex(BaseType b, const std::string& f) {
 
 }  // namespace
 
+void fixedAsFloat(ExprPtr& e) {
+  if (!e || !isFixed(e->type)) return;
+  auto conv = std::make_unique<Expr>();
+  conv->kind = ExprKind::Call;
+  conv->loc = e->loc;
+  conv->name = "float";
+  conv->type = Type::of(BaseType::Float);
+  conv->varying = e->varying;
+  conv->args.push_back(std::move(e));
+  e = std::move(conv);
+}
+
 void Analyzer::expr(Expr& e) {
   e.type = Type::of(BaseType::Void);
   e.varying = false;
@@ -56,7 +68,7 @@ void Analyzer::expr(Expr& e) {
         if (!isBool(a.type)) err(e.loc, "'!' needs a bool, not " + typeName(a.type));
         e.type = Type::of(BaseType::Bool);
       } else {
-        if (!(isNumericScalar(a.type) || isAggregate(a.type) || isInterp(a.type)))
+        if (!(isNumericScalar(a.type) || isFixed(a.type) || isAggregate(a.type) || isInterp(a.type)))
           err(e.loc, "cannot negate a value of type " + typeName(a.type));
         e.type = a.type;
       }
@@ -81,6 +93,10 @@ void Analyzer::expr(Expr& e) {
       if (t1.base == BaseType::Void || t2.base == BaseType::Void) return;
       if (t1 == t2) e.type = t1;
       else if (isNumericScalar(t1) && isNumericScalar(t2)) e.type = Type::of(BaseType::Float);
+      else if ((isFixed(t1) && t2 == Type::of(BaseType::Int)) || (t1 == Type::of(BaseType::Int) && isFixed(t2)))
+        e.type = isFixed(t1) ? t1 : t2;  // the int converts
+      else if ((isFixed(t1) && t2 == Type::of(BaseType::Float)) || (t1 == Type::of(BaseType::Float) && isFixed(t2)))
+        e.type = Type::of(BaseType::Float);  // the fixed value converts
       else err(e.loc, "the two results of '?:' have different types: " + typeName(t1) + " and " + typeName(t2));
       if (e.type.isArray())
         err(e.loc, "'?:' chooses between scalars, vectors or interpolator_data, not " + typeName(e.type));
@@ -188,6 +204,24 @@ Type Analyzer::binaryType(const std::string& op, const Type& a, const Type& b, S
     if (!isBool(a) || !isBool(b)) return bad();
     return Type::of(BaseType::Bool);
   }
+  const bool comparison = op == "<" || op == "<=" || op == ">" || op == ">=" || op == "==" || op == "!=";
+  if (isFixed(a) || isFixed(b)) {
+    // docs/language.md, "Fixed-point numbers": one format, or an int that converts to it, stays
+    // fixed; with a float (or a vector, ...) the fixed value takes part as a float.
+    if (op == "%") return bad();
+    if (isFixed(a) && isFixed(b) && a != b) {
+      err(loc, "operator '" + op + "' cannot combine " + typeName(a) + " and " + typeName(b) +
+                   ": values of two fixed-point formats meet only after a conversion, e.g. " + typeName(a) + "(x)");
+      return voidT;
+    }
+    const Type& other = isFixed(a) ? b : a;
+    const Type& fixed = isFixed(a) ? a : b;
+    if (isFixed(other) || other == Type::of(BaseType::Int)) return comparison ? Type::of(BaseType::Bool) : fixed;
+    if (other == Type::of(BaseType::Float)) return comparison ? Type::of(BaseType::Bool) : other;
+    if (isAggregate(other) || isInterp(other))
+      return binaryType(op, isFixed(a) ? Type::of(BaseType::Float) : a, isFixed(b) ? Type::of(BaseType::Float) : b, loc);
+    return bad();
+  }
   if (op == "<" || op == "<=" || op == ">" || op == ">=") {
     if (!isNumericScalar(a) || !isNumericScalar(b)) return bad();
     return Type::of(BaseType::Bool);
@@ -269,6 +303,8 @@ void Analyzer::call(Expr& e) {
     return;
   }
   if (f == functions_.units.end()) {
+    if (fixedCall(e)) return;
+    for (ExprPtr& a : e.args) fixedAsFloat(a);
     typeBuiltinCall(e, unit_->kind, [this](SourceLoc loc, const std::string& msg) { err(loc, msg); });
     if (e.name == "facing") {
       // An effect on the whole instance: uniform, and a statement.
@@ -293,6 +329,49 @@ void Analyzer::call(Expr& e) {
     checkAssignable(fn.params[i].type, *e.args[i], "pass argument " + std::to_string(i + 1) + " to '" + fn.name + "'");
     e.varying = e.varying || e.args[i]->varying;
   }
+}
+
+bool Analyzer::fixedCall(Expr& e) {
+  const std::string& f = e.name;
+  bool any_fixed = false, any_void = false;
+  for (const ExprPtr& a : e.args) {
+    any_fixed = any_fixed || isFixed(a->type);
+    any_void = any_void || a->type.base == BaseType::Void;
+    e.varying = e.varying || a->varying;
+  }
+  if (f == "fixed") {  // fixed<bits,frac>(x): x a number or another format
+    e.type = e.conversion;
+    if (e.args.size() != 1) {
+      err(e.loc, typeName(e.conversion) + "() converts one number, not " + std::to_string(e.args.size()));
+    } else if (!any_void && !isNumericScalar(e.args[0]->type) && !isFixed(e.args[0]->type)) {
+      err(e.args[0]->loc, typeName(e.conversion) + "() converts an int, a float or another fixed-point value, not " +
+                              typeName(e.args[0]->type));
+    }
+    return true;
+  }
+  if (!any_fixed) return false;
+  if ((f == "float" || f == "int") && e.args.size() == 1) {
+    e.type = Type::of(f == "float" ? BaseType::Float : BaseType::Int);
+    return true;
+  }
+  // abs, min, max and clamp of fixed values (and ints, which convert) are exact and stay fixed.
+  if (f != "abs" && f != "min" && f != "max" && f != "clamp") return false;
+  const Type* format = nullptr;
+  for (const ExprPtr& a : e.args) {
+    const Type& t = a->type;
+    if (isFixed(t) && format && t != *format) {
+      err(a->loc, f + "() cannot mix " + typeName(*format) + " and " + typeName(t) +
+                      ": values of two fixed-point formats meet only after a conversion, e.g. " + typeName(*format) + "(x)");
+      e.type = Type::of(BaseType::Void);
+      return true;
+    }
+    if (isFixed(t)) format = &t;
+    else if (t != Type::of(BaseType::Int)) return false;  // a float or a vector: computed in floats
+  }
+  const size_t arity = f == "abs" ? 1 : f == "clamp" ? 3 : 2;
+  if (e.args.size() != arity) return false;  // typeBuiltinCall reports it
+  e.type = *format;
+  return true;
 }
 
 }  // namespace pf::analysis

@@ -88,6 +88,7 @@ void Analyzer::statement(Stmt& s) {
       if (varying_control_ > 0) err(s.loc, "'bound' must be reached by every pixel alike: it cannot be under varying control flow");
       for (ExprPtr& a : s.bound_args) {
         expr(*a);
+        fixedAsFloat(a);
         if (!isFloatLike(a->type)) err(a->loc, "bound() takes float screen coordinates, not " + typeName(a->type));
         else if (a->varying) err(a->loc, "bound() needs a uniform value (the same for every pixel), but this one is varying: " + whyOf(*a));
       }
@@ -133,6 +134,7 @@ void Analyzer::statement(Stmt& s) {
           err(s.loc, "an interpolator must return a value: interpolator_return(value)");
         } else {
           expr(*s.value);
+          fixedAsFloat(s.value);
           const Type& t = s.value->type;
           if (t.base != BaseType::Void && !isShadingValue(t))
             err(s.value->loc, "an interpolator returns a float, point, vector, normal or color (its shading parameter's value), not " + typeName(t));
@@ -151,6 +153,7 @@ void Analyzer::statement(Stmt& s) {
           break;
         }
         expr(*s.value);
+        fixedAsFloat(s.value);
         const Type& t = s.value->type;
         if (t.base != BaseType::Void && !isShadingValue(t))
           err(s.value->loc, "interpolator_return(value) in the '" + interp_named_ +
@@ -275,7 +278,8 @@ void Analyzer::assignment(Stmt& s) {
     // x op= y is x = x op y: the same typing rules as the binary operator.
     Type t = binaryType(s.op.substr(0, 1), s.target->type, s.value->type, s.loc);
     if (t.base != BaseType::Void && t != s.target->type &&
-        !(isNumericScalar(t) && isNumericScalar(s.target->type)))
+        !(isNumericScalar(t) && isNumericScalar(s.target->type)) &&
+        !(isFixed(s.target->type) && isNumericScalar(t)))  // q += 0.5: the float result converts into q
       err(s.loc, "'" + s.op + "' gives " + typeName(t) + ", which cannot be stored in " + typeName(s.target->type));
   } else {
     checkAssignable(s.target->type, *s.value, "assign to '" + v.name + "'");
@@ -296,6 +300,10 @@ void Analyzer::checkAssignable(const Type& to, const Expr& from, const std::stri
   if (to == from.type) return;
   if (to.dims.empty() && from.type.dims.empty()) {
     if (to.base == BaseType::Float && from.type.base == BaseType::Int) return;  // int -> float
+    // Into a fixed type from a number or another format (rounded, saturated); out of one into
+    // a float. Into an int only explicitly: int(x) truncates.
+    if (to.base == BaseType::Fixed && (isNumericScalar(from.type) || isFixed(from.type))) return;
+    if (to.base == BaseType::Float && isFixed(from.type)) return;
     if (isAggregate(to) && isAggregate(from.type) &&
         Type::componentsOf(to.base) == Type::componentsOf(from.type.base) &&
         to.base != BaseType::Point && from.type.base != BaseType::Point)

@@ -15,12 +15,14 @@ std::string baseTypeName(BaseType b) {
     case BaseType::Color: return "color";
     case BaseType::Matrix: return "matrix";
     case BaseType::InterpData: return "interpolator_data";
+    case BaseType::Fixed: return "fixed";
   }
   return "?";
 }
 
 std::string typeName(const Type& t) {
   std::string s = baseTypeName(t.base);
+  if (t.base == BaseType::Fixed) s += "<" + std::to_string(t.fixed_bits) + "," + std::to_string(t.fixed_frac) + ">";
   for (int d : t.dims) s += d == 0 ? std::string("[]") : "[" + std::to_string(d) + "]";
   return s;
 }

@@ -150,6 +150,18 @@ TEST(FieldUnit, UnsupportedValuesAreErrorsWhereUsed) {
   EXPECT_NE(in_library.find("f.pfl:1:1: note: in field 'g', through the functions it calls"), std::string::npos) << in_library;
 }
 
+// fixed<bits,frac> in a field: values of its parameters fold when it is compiled; a
+// point-dependent one has no tape form (tapes are floats and intervals) and is an error there.
+TEST(FieldUnit, FixedPointValuesFoldOrAreErrors) {
+  const std::string folded =
+      "field float f(point p, float k) {\n  fixed<32,16> r = fixed<32,16>(k) / 3;\n  return float(r) - p.x;\n}\n";
+  // 1 / 3 at 16 fraction bits is 21845 / 65536.
+  expectMatches(compileOk(folded, {1.0f}), [](double x, double, double) { return 21845.0 / 65536.0 - x; }, 1e-7);
+  const std::string error = compileError("field float f(point p) {\n  fixed<32,16> r = p.x;\n  return float(r);\n}\n");
+  EXPECT_NE(error.find("f.pfl:2:22: error: 'fixed-point arithmetic (fixed<bits,frac>)' of a value that depends on the field's point"),
+            std::string::npos) << error;
+}
+
 // A whole exponent is products however large (as HyperFun's ^), so negative bases keep their sign.
 TEST(FieldUnit, LargeWholePowersAreProducts) {
   const FieldTape t = compileOk("field float f(point p) { return pow(p.x * 0.999, 3001.0) + 0.0 * p.y; }");

@@ -1,6 +1,9 @@
-// The arithmetic of fixed-point values (compiler/fixed_point.h) against references computed
-// here another way (exact double and int64 arithmetic for formats small enough, hand-derived
-// values for 64-bit ones).
+// fixed<bits,frac> (docs/language.md, "Fixed-point numbers"): the arithmetic of
+// compiler/fixed_point.h against references computed here another way (exact double and
+// int64 arithmetic for formats small enough, hand-derived values for 64-bit ones), then the
+// language: conversions, operators, built-ins, control flow, arrays, functions, setup-to-pixel
+// values, constant folding, in both execution modes (runBlock compares the SIMD executor with
+// the reference interpreter lane by lane), and the errors.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,9 +12,12 @@
 #include <random>
 #include <string>
 
+#include "compile_helpers.h"
 #include "compiler/fixed_point.h"
+#include "raster/setup_batch.h"
 
 using namespace pf;
+using namespace pf::test;
 
 namespace {
 
@@ -153,3 +159,243 @@ TEST(FixedArithmetic, SixtyFourBitFormats) {
   EXPECT_EQ(fixedConvert(int64_t{1} << 63 >> 1, 64, FixedFormat{8, 2}), -1);  // -0.25 -> -1 unit
 }
 
+// ---- the language ----
+
+namespace {
+
+float laneX(int i) { return static_cast<float>(i % 8) + 0.5f; }
+float laneY(int i) { return static_cast<float>(i / 8) + 0.5f; }
+
+// Runs `body` (which sets `float z`) in primitive p on one block, optimized or not.
+std::vector<float> runBody(const std::string& body, const std::string& params = "",
+                           const std::vector<float>& values = {}, bool optimize = true,
+                           const std::string& functions = "") {
+  Compiled c = compile(functions + "primitive p(" + params + "varying float X, Y; inout varying float Z) {\n" + body +
+                           "\n  Z = z;\n}\n",
+                       "test.pfl", optimize);
+  EXPECT_TRUE(c.ok) << c.diagnostics;
+  if (!c.ok) return {};
+  return runBlock(*c.find("p"), values, {}, 0, true, 1e30f).depth;
+}
+
+void expectLanes(const std::vector<float>& got, const std::function<double(double x, double y)>& want) {
+  ASSERT_EQ(got.size(), 64u);
+  for (int i = 0; i < 64; ++i)
+    EXPECT_EQ(got[i], static_cast<float>(want(laneX(i), laneY(i)))) << "lane " << i << " x " << laneX(i) << " y " << laneY(i);
+}
+
+// Value of format f of a double that the format holds exactly after rounding by the rule.
+double rounded(double x, FixedFormat f) { return value(refFromFloat(x, f), f); }
+
+}  // namespace
+
+TEST(FixedLanguage, ArithmeticPerPixel) {
+  const FixedFormat f{16, 8};
+  // x * y - x / 3 + 1 in fixed<16,8>, y = Y * 0.3 (rounded into the format), per lane.
+  const std::string body =
+      "  fixed<16,8> x = X;\n"
+      "  fixed<16,8> y = Y * 0.3;\n"
+      "  fixed<16,8> q = x * y - x / 3 + 1;\n"
+      "  float z = float(q);";
+  auto want = [&](double x, double y) {
+    const int64_t rx = refFromFloat(x, f), ry = refFromFloat(static_cast<float>(static_cast<float>(y) * 0.3f), f);
+    const int64_t r = refWrap(refWrap(refMul(rx, ry, f) - refDiv(rx, 3 << 8, f), 16) + 256, 16);
+    return value(r, f);
+  };
+  expectLanes(runBody(body), want);
+  expectLanes(runBody(body, "", {}, false), want);  // unoptimized: the same
+}
+
+TEST(FixedLanguage, WrapOnArithmeticSaturateOnConversion) {
+  // fixed<8,4> holds [-8, 7.9375]: X + Y wraps past it; a conversion of 3 X saturates.
+  expectLanes(runBody("  fixed<8,4> s = fixed<8,4>(X) + fixed<8,4>(Y);\n"
+                      "  fixed<8,4> t = X * 3.0;\n"
+                      "  float z = float(s) * 100.0 + float(t);"),
+              [](double x, double y) {
+                const double s = value(refWrap((int64_t)(x * 16) + (int64_t)(y * 16), 8), FixedFormat{8, 4});
+                return s * 100.0 + std::min(x * 3.0, 7.9375);
+              });
+}
+
+TEST(FixedLanguage, ComparisonsAndBuiltIns) {
+  // Exact comparisons, abs, min, max, clamp, negation; ints convert; floats make it a float.
+  expectLanes(runBody("  fixed<24,12> a = X - 4.0;\n"
+                      "  fixed<24,12> b = (Y - 4.0) * 0.5;\n"
+                      "  float z = 0.0;\n"
+                      "  if (a < b) z += 1.0;\n"
+                      "  if (a >= b) z += 2.0;\n"
+                      "  if (a == b) z += 4.0;\n"
+                      "  if (a != 1) z += 8.0;\n"
+                      "  if (a > 0.25) z += 16.0;\n"  // against a float: as floats
+                      "  z += 100.0 * float(abs(a)) + 1000.0 * float(min(a, b)) + 10000.0 * float(max(a, -b));\n"
+                      "  z += 100000.0 * float(clamp(a, -1, 2));\n"
+                      "  z += 0.5 * float(-a);"),
+              [](double x, double y) {
+                const double a = x - 4.0, b = (y - 4.0) * 0.5;
+                double z = 0;
+                if (a < b) z += 1;
+                if (a >= b) z += 2;
+                if (a == b) z += 4;
+                if (a != 1) z += 8;
+                if (a > 0.25) z += 16;
+                z += 100.0 * std::abs(a) + 1000.0 * std::min(a, b) + 10000.0 * std::max(a, -b);
+                z += 100000.0 * std::clamp(a, -1.0, 2.0);
+                return static_cast<float>(z + 0.5 * -a);
+              });
+}
+
+TEST(FixedLanguage, MixingWithIntsStaysExactWithFloatsBecomesFloat) {
+  // q * 3 + 1 stays fixed (exact); q += 0.3 is computed as a float and rounds back into q.
+  expectLanes(runBody("  fixed<16,8> q = X;\n"
+                      "  fixed<16,8> r = q * 3 + 1;\n"
+                      "  q += 0.3;\n"
+                      "  float z = float(r) + 100.0 * float(q);"),
+              [](double x, double) {
+                const double q = rounded(static_cast<float>(static_cast<float>(x) + 0.3f), FixedFormat{16, 8});
+                return x * 3 + 1 + 100.0 * q;  // exact in float: multiples of 1/256 below 2^15
+              });
+  // q * 0.1 is a float product (of q's float, here X itself).
+  expectLanes(runBody("  fixed<16,8> q = X;\n  float z = q * 0.1;"),
+              [](double x, double) { return static_cast<float>(x) * 0.1f; });
+}
+
+TEST(FixedLanguage, SixtyFourBitValuesCarryAcrossWords) {
+  // 2^40 + X - 2^40: X again, exactly (a float would round at 2^40 to multiples of 2^17); and
+  // (2^20 + X)(2^20 - X) - 2^40 = -X^2, whose product needs the 64-bit multiply.
+  const std::string big = "  fixed<64,16> big = fixed<64,16>(1073741824) * 1024;\n";  // 2^40
+  expectLanes(runBody(big + "  fixed<64,16> x = X;\n  float z = float((big + x) - big) + 100.0 * float((x - big) + big);"),
+              [](double x, double) { return 101.0 * x; });
+  expectLanes(runBody(big + "  fixed<64,16> m = fixed<64,16>(1048576);\n"
+                            "  fixed<64,16> x = X - 4.0;\n"
+                            "  float z = float((m + x) * (m - x) - big);"),
+              [](double x, double) { return -(x - 4.0) * (x - 4.0); });
+  // The float path on the same numbers loses X entirely: the test above can fail.
+  expectLanes(runBody("  float big = 1073741824.0 * 1024.0;\n  float z = (big + X) - big;"),
+              [](double, double) { return 0.0; });
+}
+
+TEST(FixedLanguage, ControlFlowArraysFunctionsAndUniformValues) {
+  const std::string functions =
+      "fixed<32,16> half_of(fixed<32,16> v) { return v / 2; }\n"
+      "fixed<32,16> pick(fixed<32,16> a[3], int i) { return a[i]; }\n";
+  // A varying if, a loop carrying a fixed value, an array at a run-time index, a function
+  // taking and returning fixed, a uniform fixed value from setup (parameter k), ?: with an int.
+  expectLanes(runBody("  uniform fixed<32,16> u = fixed<32,16>(k) * 3;\n"
+                      "  fixed<32,16> acc = 0;\n"
+                      "  for (int i = 0; i < int(Y); i += 1) acc += fixed<32,16>(X);\n"
+                      "  if (X > 4.0) acc = half_of(acc); else acc = -acc;\n"
+                      "  fixed<32,16> a[3];\n"
+                      "  a[0] = 1; a[1] = u; a[2] = acc;\n"
+                      "  fixed<32,16> e = pick(a, int(X) % 3);\n"
+                      "  fixed<32,16> t = X > 2.0 ? e : 7;\n"
+                      "  float z = float(acc) + 1000.0 * float(t);",
+                      "float k; ", {0.75f}, true, functions),
+              [](double x, double y) {
+                double acc = x * std::floor(y);
+                acc = x > 4.0 ? acc / 2 : -acc;  // exact: halves of multiples of 0.5
+                const double a[3] = {1.0, 2.25, acc};
+                const double e = a[static_cast<int>(x) % 3];
+                const double t = x > 2.0 ? e : 7.0;
+                return acc + 1000.0 * t;
+              });
+}
+
+TEST(FixedLanguage, ConstantsFoldToTheExecutorsValues) {
+  // Everything here is constant: the optimizer folds it with the same arithmetic the executors
+  // run, and the unoptimized program computes it at run time.
+  const std::string body =
+      "  fixed<64,40> third = fixed<64,40>(1) / 3;\n"
+      "  fixed<32,6> c = fixed<32,6>(third * 3000000);\n"
+      "  float z = float(c) - 1000000.0 + float(int(third * 7)) * 0.25;";
+  const std::vector<float> opt = runBody(body), raw = runBody(body, "", {}, false);
+  ASSERT_EQ(opt.size(), 64u);
+  ASSERT_EQ(raw.size(), 64u);
+  // round(2^40/3) = 366503875925 (2^40 = 1099511627776 = 3 * 366503875925 + 1); times 3e6 it
+  // is 1099511627775000000 / 2^40 = 999999.99999909, 1000000 at 6 fraction bits; times 7 it is
+  // 2.333..., int 2.
+  for (int i = 0; i < 64; ++i) {
+    EXPECT_EQ(opt[i], 0.5f) << i;
+    EXPECT_EQ(raw[i], 0.5f) << i;
+  }
+  // Folded away: no fixed-point instruction is left in either program.
+  Compiled c = compile("primitive p(inout varying float Z) {\n" + body + "\n  Z = z;\n}\n");
+  ASSERT_TRUE(c.ok) << c.diagnostics;
+  const CompiledPrimitive& p = *c.find("p");
+  for (const std::vector<Instr>* code : {&p.setup.code, &p.pixel.code})
+    for (const Instr& in : *code) EXPECT_FALSE(in.op >= Op::QAdd && in.op <= Op::QConv) << opName(in.op);
+}
+
+TEST(FixedLanguage, Errors) {
+  struct Case {
+    const char* body;
+    const char* message;
+  };
+  const Case cases[] = {
+      {"fixed<0,0> a;", "the bits of fixed<bits,frac> must be between 1 and 64, not 0"},
+      {"fixed<65,0> a;", "the bits of fixed<bits,frac> must be between 1 and 64, not 65"},
+      {"fixed<16,17> a;", "the fraction bits of fixed<bits,frac> must be between 0 and 16, not 17"},
+      {"fixed<16> a;", "expected ',' between the bits and the fraction bits"},
+      {"fixed a;", "expected '<' after 'fixed'"},
+      {"fixed<16,8> a = 1; fixed<32,8> b = 2; fixed<16,8> c = a + b;",
+       "operator '+' cannot combine fixed<16,8> and fixed<32,8>: values of two fixed-point formats meet only after a conversion"},
+      {"fixed<16,8> a = 1; fixed<32,8> b = 2; fixed<16,8> c = min(a, b);", "min() cannot mix fixed<16,8> and fixed<32,8>"},
+      {"fixed<16,8> a = 1; fixed<16,8> c = a % 2;", "operator '%' cannot combine fixed<16,8> and int"},
+      {"fixed<16,8> a = 1; int i = a;", "cannot initialise 'i': expected int, found fixed<16,8>"},
+      {"fixed<16,8> a = 1; float f = a.x;", "'.x' needs a point, vector, normal or color, not fixed<16,8>"},
+      {"fixed<16,8> a = 1; float f = a[0];", "cannot index a value of type fixed<16,8>"},
+      {"fixed<16,8> a = fixed<16,8>(1, 2);", "fixed<16,8>() converts one number, not 2"},
+      {"fixed<16,8> a = fixed<16,8>(point(1, 2, 3));", "fixed<16,8>() converts an int, a float or another fixed-point value, not point"},
+  };
+  for (const Case& k : cases) {
+    Compiled c = compile(std::string("primitive p(inout varying float Z) {\n  ") + k.body + "\n}\n");
+    EXPECT_FALSE(c.ok) << k.body;
+    EXPECT_NE(c.diagnostics.find(k.message), std::string::npos) << k.body << "\n" << c.diagnostics;
+    EXPECT_NE(c.diagnostics.find("test.pfl:2:"), std::string::npos) << c.diagnostics;  // file:line:col
+  }
+  Compiled param = compile("primitive p(fixed<16,8> a; inout varying float Z) { Z = 0.0; }\n");
+  EXPECT_FALSE(param.ok);
+  EXPECT_NE(param.diagnostics.find("parameter 'a' cannot be fixed<16,8>: parameters arrive from the API as floats"),
+            std::string::npos)
+      << param.diagnostics;
+}
+
+TEST(FixedLanguage, BatchedSetupMatchesScalarSetupBitForBit) {
+  // Fixed-point setup arithmetic on per-instance parameters: the 16-lane batched setup
+  // (raster/setup_batch.cpp) and the scalar setup leave the same records.
+  Compiled c = compile(
+      "primitive q(float a; float b; varying float X, Y; inout varying float Z) {\n"
+      "  fixed<48,20> s = fixed<48,20>(a) * fixed<48,20>(b) / 7 - a;\n"
+      "  if (s < 0) s = -s;\n"
+      "  uniform fixed<48,20> t = max(s, fixed<48,20>(b));\n"
+      "  bound(0, 0, 8, 8);\n"
+      "  Z = float(fixed<48,20>(X) * t + s);\n"
+      "}\n");
+  ASSERT_TRUE(c.ok) << c.diagnostics;
+  const CompiledPrimitive& prim = *c.find("q");
+  ASSERT_TRUE(BatchSetupExecutor::batchable(prim));
+  RasterState state;
+  state.vp_scale_x = state.vp_offset_x = state.vp_scale_y = state.vp_offset_y = 4;
+  state.vp_x1 = state.vp_y1 = 8;
+  const ChannelLayout layout;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> value(-3000.0f, 3000.0f);
+  const size_t words = SetupExecutor::recordWords(prim, 0);
+  std::vector<std::vector<uint32_t>> params(kSetupBatchLanes), want(kSetupBatchLanes, std::vector<uint32_t>(words, 0u)),
+      got = want;
+  SetupInput in[kSetupBatchLanes];
+  uint32_t* records[kSetupBatchLanes];
+  SetupOutput out[kSetupBatchLanes];
+  SetupExecutor scalar;
+  for (int l = 0; l < kSetupBatchLanes; ++l) {
+    params[l] = {f2u(value(rng)), f2u(value(rng))};
+    in[l] = SetupInput{params[l].data(), nullptr, &layout, &state, 1, nullptr, 0};
+    records[l] = got[l].data();
+    scalar.run(prim, in[l], want[l].data());
+  }
+  BatchSetupExecutor batch;
+  batch.run(prim, in, kSetupBatchLanes, records, out);
+  for (int l = 0; l < kSetupBatchLanes; ++l) EXPECT_EQ(want[l], got[l]) << "instance " << l;
+  // The instances part at `if (s < 0)`: those on the minority side finish scalar, the rest in
+  // the batch; all ran the fixed-point arithmetic before it in the batch's lanes.
+  EXPECT_GE(batch.counters.lanes_batched, static_cast<uint64_t>(kMinBatchLanes));
+}
