@@ -1,11 +1,10 @@
 // The SIMD pixel executor (see pixel_executor.h).
 //
-// Each value-producing instruction runs one kernel: a loop over the kLanes lanes of
-// evalScalar (scalar_ops.h) instantiated for the instruction and for which operands are wide
-// (one value per lane) or scalar (uniform / constant). With the operation and the operand
-// shapes fixed at compile time, GCC vectorizes these loops (checked in the disassembly,
-// see docs/architecture.md). A merge value written under a partial mask goes through a blend;
-// every other value writes all lanes (Instr::masked_write).
+// Each value-producing instruction runs one kernel (raster/lane_kernels.h): a loop over the
+// kLanes lanes of evalScalar instantiated for the instruction and for which operands are wide
+// (one value per lane) or scalar (uniform / constant), vectorized for the machine's instruction
+// set. A merge value written under a partial mask goes through a blend; every other value
+// writes all lanes (Instr::masked_write).
 #include "raster/pixel_executor.h"
 
 #include <array>
@@ -14,32 +13,10 @@
 #include <utility>
 
 #include "compiler/scalar_ops.h"
+#include "raster/lane_kernels.h"
 
 namespace pf {
 namespace {
-
-using Kernel = void (*)(uint32_t* __restrict, const uint32_t*, const uint32_t*, const uint32_t*, const uint32_t*, uint32_t);
-
-template <Op OP, unsigned WIDE>  // bit k set: operand k (a, b, c, d) has one value per lane
-void kernel(uint32_t* __restrict r, const uint32_t* a, const uint32_t* b, const uint32_t* c, const uint32_t* d, uint32_t imm) {
-  for (int i = 0; i < kLanes; ++i)
-    r[i] = evalScalar(OP, (WIDE & 1) ? a[i] : a[0], (WIDE & 2) ? b[i] : b[0], (WIDE & 4) ? c[i] : c[0],
-                      (WIDE & 8) ? d[i] : d[0], imm);
-}
-
-template <Op OP, size_t... W>
-constexpr std::array<Kernel, 16> kernelsFor(std::index_sequence<W...>) {
-  return {kernel<OP, static_cast<unsigned>(W)>...};
-}
-
-template <size_t... I>
-constexpr std::array<std::array<Kernel, 16>, sizeof...(I)> kernelTable(std::index_sequence<I...>) {
-  return {kernelsFor<static_cast<Op>(I)>(std::make_index_sequence<16>{})...};
-}
-
-// Kernels for every op up to Mov (the value-producing scalar instructions).
-constexpr size_t kKernelOps = static_cast<size_t>(Op::Mov) + 1;
-const auto kKernels = kernelTable(std::make_index_sequence<kKernelOps>{});
 
 alignas(64) const uint32_t kZeroLanes[kLanes] = {};
 
@@ -254,7 +231,7 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const uint32_t* r
   auto run = [&](Op op, uint32_t* dst, const uint32_t* a, bool wa, const uint32_t* b, bool wb,
                  const uint32_t* c, bool wc, uint64_t exec, const uint32_t* d = kZeroLanes, bool wd = false,
                  uint32_t imm = 0) {
-    Kernel k = kKernels[static_cast<size_t>(op)][(wa ? 1 : 0) | (wb ? 2 : 0) | (wc ? 4 : 0) | (wd ? 8 : 0)];
+    LaneKernel k = laneKernel(op, (wa ? 1 : 0) | (wb ? 2 : 0) | (wc ? 4 : 0) | (wd ? 8 : 0));
     if (exec == ~0ull) {
       k(dst, a, b, c, d, imm);
     } else {

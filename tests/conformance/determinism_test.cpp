@@ -1,14 +1,22 @@
 // primflow's output is byte-identical for any number of rasterizer threads: every GL case of the
-// conformance suite rendered with 1, 2, 3 and 8 threads, colour and depth compared bytewise.
+// conformance suite rendered with 1, 2, 3 and 8 threads, colour and depth compared bytewise;
+// and for any instruction set the pixel kernels are compiled for.
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "conformance.h"
+#include "raster/lane_kernels.h"
 
 namespace {
 
 class Determinism : public ::testing::TestWithParam<std::string> {};
+
+// Puts back the lane kernels' instruction set in use when a test started.
+struct LaneIsaSaved {
+  pf::LaneIsa isa = pf::laneIsa();
+  ~LaneIsaSaved() { pf::setLaneIsa(isa); }
+};
 
 TEST_P(Determinism, ByteIdenticalForAnyThreadCount) {
   const int w = 256, h = 256;
@@ -22,6 +30,23 @@ TEST_P(Determinism, ByteIdenticalForAnyThreadCount) {
     EXPECT_EQ(differing, 0u) << threads << " threads: colour bytes differing from 1 thread";
     EXPECT_TRUE(one.image.depth == many.image.depth) << threads << " threads: the depth buffer differs";
     EXPECT_TRUE(one.output.errors == many.output.errors && one.output.numbers == many.output.numbers);
+  }
+}
+
+// And for any instruction set of the pixel kernels (raster/lane_kernels.h) the machine runs:
+// the same bytes as the baseline (SSE2) kernels.
+TEST_P(Determinism, ByteIdenticalForEveryLaneInstructionSet) {
+  const LaneIsaSaved saved;
+  const int w = 256, h = 256;
+  ASSERT_TRUE(pf::setLaneIsa(pf::LaneIsa::Baseline));
+  pfconf::Rendering base = pfconf::renderPrimflow(GetParam(), w, h, 1);
+  ASSERT_TRUE(base.image.ok);
+  for (pf::LaneIsa isa : pf::availableLaneIsas()) {
+    ASSERT_TRUE(pf::setLaneIsa(isa));
+    pfconf::Rendering other = pfconf::renderPrimflow(GetParam(), w, h, 2);
+    ASSERT_TRUE(other.image.ok);
+    EXPECT_TRUE(base.image.rgba == other.image.rgba) << pf::laneIsaName(isa) << ": colour differs from sse2";
+    EXPECT_TRUE(base.image.depth == other.image.depth) << pf::laneIsaName(isa) << ": depth differs from sse2";
   }
 }
 
