@@ -25,14 +25,28 @@ enum class LaneIsa { Baseline, Avx2, Avx512 };
 constexpr size_t kLaneKernelOps = static_cast<size_t>(Op::Mov) + 1;
 using LaneKernelTable = std::array<std::array<LaneKernel, 16>, kLaneKernelOps>;
 
+// The mask-handling loops the executor runs around the kernels, compiled per set as well.
+struct LaneMaskOps {
+  // Bit i set where lane i of v is not zero (a varying condition's lanes).
+  uint64_t (*nonzero)(const uint32_t* v);
+  // d = s in the lanes set in mask, d unchanged elsewhere (a merge value's write).
+  void (*blend)(uint32_t* __restrict d, const uint32_t* __restrict s, uint64_t mask);
+};
+
+struct LaneIsaTables {
+  const LaneKernelTable* kernels;
+  LaneMaskOps masks;
+};
+
 namespace detail {
-extern std::atomic<const LaneKernelTable*> active_lane_kernels;
+extern std::atomic<const LaneIsaTables*> active_lane_isa;
 }
 
 // The kernel of `op` (a value-producing op, up to Op::Mov) for operand shape `wide`.
 inline LaneKernel laneKernel(Op op, unsigned wide) {
-  return (*detail::active_lane_kernels.load(std::memory_order_relaxed))[static_cast<size_t>(op)][wide];
+  return (*detail::active_lane_isa.load(std::memory_order_relaxed)->kernels)[static_cast<size_t>(op)][wide];
 }
+inline const LaneMaskOps& laneMaskOps() { return detail::active_lane_isa.load(std::memory_order_relaxed)->masks; }
 
 // The instruction sets this machine runs, best last; the one in use; its name ("sse2", "avx2",
 // "avx512").

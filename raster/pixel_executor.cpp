@@ -20,19 +20,13 @@ namespace {
 
 alignas(64) const uint32_t kZeroLanes[kLanes] = {};
 
+// The lanes where v is not zero (v uniform: all or none).
 inline uint64_t laneMaskOf(const uint32_t* v, bool wide) {
   if (!wide) return v[0] ? ~0ull : 0ull;
-  uint64_t m = 0;
-  for (int i = 0; i < kLanes; ++i) m |= static_cast<uint64_t>(v[i] != 0) << i;
-  return m;
+  return laneMaskOps().nonzero(v);
 }
 
-inline void blend(uint32_t* __restrict d, const uint32_t* __restrict s, uint64_t mask) {
-  for (int i = 0; i < kLanes; ++i) {
-    uint32_t m = 0u - static_cast<uint32_t>((mask >> i) & 1u);
-    d[i] = (s[i] & m) | (d[i] & ~m);
-  }
-}
+inline void blend(uint32_t* __restrict d, const uint32_t* __restrict s, uint64_t mask) { laneMaskOps().blend(d, s, mask); }
 
 inline bool depthPasses(DepthFunc f, float z, float zbuf) {
   switch (f) {
@@ -171,10 +165,22 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const uint32_t* r
   for (int i = 0; i < kLanes; ++i) {
     R[kRegX * kLanes + i] = fromF(static_cast<float>(bx + (i % kBlockSize)) + 0.5f);
     R[kRegY * kLanes + i] = fromF(static_cast<float>(by + (i / kBlockSize)) + 0.5f);
-    float z = 0.0f;
-    if (target.depth && ((mask >> i) & 1u))
-      z = target.depth[static_cast<size_t>(by + i / kBlockSize) * target.depth_stride + bx + i % kBlockSize];
-    R[kRegZ * kLanes + i] = fromF(z);
+  }
+  // Z: the depth buffer under the lanes in the mask (a block may reach past the framebuffer's
+  // edge: lanes outside the mask read nothing), row by row; 0 elsewhere.
+  for (int row = 0; row < kBlockSize; ++row) {
+    uint32_t* z = R + static_cast<size_t>(kRegZ) * kLanes + row * kBlockSize;
+    const unsigned row_mask = static_cast<unsigned>(mask >> (row * kBlockSize)) & ((1u << kBlockSize) - 1u);
+    if (!target.depth || row_mask == 0) {
+      std::fill_n(z, kBlockSize, 0u);
+      continue;
+    }
+    const float* depth = target.depth + static_cast<size_t>(by + row) * target.depth_stride + bx;
+    if (row_mask == (1u << kBlockSize) - 1u) {
+      std::memcpy(z, depth, sizeof(float) * kBlockSize);
+      continue;
+    }
+    for (int lx = 0; lx < kBlockSize; ++lx) z[lx] = (row_mask >> lx) & 1u ? fromF(depth[lx]) : 0u;
   }
 
   const uint32_t* xrecord = record + p.num_uniform_slots;

@@ -331,15 +331,11 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
     // Blocks are aligned to the tile; lanes outside the instance's pixels start retired.
     for (int by = y0 + (iy0 - y0) / kBlockSize * kBlockSize; by < iy1; by += kBlockSize) {
       for (int bx = x0 + (ix0 - x0) / kBlockSize * kBlockSize; bx < ix1; bx += kBlockSize) {
+        // The columns [ix0, ix1) of a row, then that row in every row of [iy0, iy1).
+        const int c0 = std::max(ix0 - bx, 0), c1 = std::min(ix1 - bx, kBlockSize);
+        const uint64_t row = ((1ull << c1) - 1) & ~((1ull << c0) - 1);
         uint64_t mask = 0;
-        for (int ly = 0; ly < kBlockSize; ++ly) {
-          int py = by + ly;
-          if (py < iy0 || py >= iy1) continue;
-          for (int lx = 0; lx < kBlockSize; ++lx) {
-            int px = bx + lx;
-            if (px >= ix0 && px < ix1) mask |= 1ull << (ly * kBlockSize + lx);
-          }
-        }
+        for (int ly = std::max(iy0 - by, 0); ly < std::min(iy1 - by, kBlockSize); ++ly) mask |= row << (ly * kBlockSize);
         if (mask) s.executor.runBlock(*inst.prim, record, layout, state, inst.shade_id, bx, by, mask, target, shared);
       }
     }

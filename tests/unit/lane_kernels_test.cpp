@@ -1,7 +1,7 @@
 // The lane kernels compiled for each instruction set (raster/lane_kernels.h) compute the same
 // bits as the baseline ones: every value-producing op, every operand shape, on random and
 // special inputs (NaN, infinities, signed zeros, subnormals, extreme ints), on every
-// instruction set this machine runs. (The reference interpreter checks the chosen set against
+// instruction set this machine runs; and the mask loops (lanes set, blend) do what they say. (The reference interpreter checks the chosen set against
 // scalar code in every language test; this checks the sets against each other everywhere.)
 #include <gtest/gtest.h>
 
@@ -98,6 +98,33 @@ TEST(LaneKernels, EveryInstructionSetComputesTheBaselineBits) {
     }
   }
   EXPECT_GT(compared, kLaneKernelOps * 16 * 3 - 1);
+}
+
+TEST(LaneKernels, MaskLoopsAgreeWithTheirDefinition) {
+  IsaGuard guard;
+  std::mt19937_64 rng(99);
+  for (LaneIsa isa : availableLaneIsas()) {
+    ASSERT_TRUE(setLaneIsa(isa));
+    for (int trial = 0; trial < 200; ++trial) {
+      // Sparse, dense, all and none.
+      const uint64_t masks[] = {rng(), rng() & rng() & rng(), ~0ull, 0ull, rng() | rng()};
+      const uint64_t mask = masks[trial % 5];
+      std::vector<uint32_t> v(kLanes), d(kLanes), s(kLanes), want(kLanes);
+      uint64_t want_nonzero = 0;
+      for (int i = 0; i < kLanes; ++i) {
+        v[i] = (mask >> i) & 1u ? static_cast<uint32_t>(rng() | 1u) << (rng() % 32) : 0u;
+        if (v[i] == 0 && (mask >> i) & 1u) v[i] = 0x80000000u;  // -0.0f is not zero here
+        want_nonzero |= static_cast<uint64_t>(v[i] != 0) << i;
+        d[i] = static_cast<uint32_t>(rng());
+        s[i] = static_cast<uint32_t>(rng());
+        want[i] = (mask >> i) & 1u ? s[i] : d[i];
+      }
+      EXPECT_EQ(laneMaskOps().nonzero(v.data()), want_nonzero) << laneIsaName(isa);
+      EXPECT_EQ(want_nonzero, mask) << laneIsaName(isa);
+      laneMaskOps().blend(d.data(), s.data(), mask);
+      EXPECT_EQ(d, want) << laneIsaName(isa);
+    }
+  }
 }
 
 TEST(LaneKernels, PinningAnUnavailableSetIsRefused) {
