@@ -9,6 +9,10 @@
 #include "compiler/scalar_ops.h"
 #include "raster/limits.h"
 
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
+
 namespace pf {
 namespace {
 
@@ -24,46 +28,73 @@ static_assert(kLanes % 16 == 0 && kLanes <= 64, "lane masks are 64-bit, handled 
 #define PF_LANE_PARAMS \
   uint32_t *__restrict r, const uint32_t *a, const uint32_t *b, const uint32_t *c, const uint32_t *d, uint32_t imm
 
-// The mask loops: written so that GCC vectorizes them (byte flags, then 8 flags packed per
-// byte with a multiply), the same source for every set.
-#define PF_NONZERO_BODY                                                                   \
-  uint8_t flag[kLanes];                                                                   \
-  for (int i = 0; i < kLanes; ++i) flag[i] = v[i] != 0;                                   \
-  uint64_t m = 0;                                                                         \
-  for (int g = 0; g < kLanes / 8; ++g) {                                                  \
-    uint64_t eight;                                                                       \
-    std::memcpy(&eight, flag + 8 * g, 8);                                                 \
-    m |= ((eight * 0x0102040810204080ull) >> 56) << (8 * g); /* bit j of the byte = flag j */ \
-  }                                                                                       \
-  return m
-
-// Per group of 8 lanes, each lane tests its own constant bit of the group's byte: a vector
-// AND with (1, 2, 4, ..., 128) and a compare, where a shift by the lane's index is not.
-#define PF_BLEND_BODY                                                       \
-  for (int g = 0; g < kLanes / 8; ++g) {                                    \
-    const uint32_t bits = static_cast<uint32_t>(mask >> (8 * g)) & 0xffu;   \
-    for (int j = 0; j < 8; ++j) {                                           \
-      const uint32_t m = (bits & (1u << j)) ? ~0u : 0u;                     \
-      d[8 * g + j] = (s[8 * g + j] & m) | (d[8 * g + j] & ~m);              \
-    }                                                                       \
-  }
+// The mask loops. Portable versions for machines other than x86-64; on x86-64 each set has
+// its own, with intrinsics: compilers turn the per-lane bit tests into long shuffle sequences.
+[[maybe_unused]] uint64_t nonzeroPortable(const uint32_t* v) {
+  uint64_t m = 0;
+  for (int i = 0; i < kLanes; ++i) m |= static_cast<uint64_t>(v[i] != 0) << i;
+  return m;
+}
+[[maybe_unused]] void blendPortable(uint32_t* __restrict d, const uint32_t* __restrict s, uint64_t mask) {
+  for (int i = 0; i < kLanes; ++i)
+    if ((mask >> i) & 1u) d[i] = s[i];
+}
 
 struct Baseline {
   template <Op OP, unsigned WIDE>
   static void run(PF_LANE_PARAMS) { PF_LANE_LOOP; }
-  static uint64_t nonzero(const uint32_t* v) { PF_NONZERO_BODY; }
-  static void blend(uint32_t* __restrict d, const uint32_t* __restrict s, uint64_t mask) { PF_BLEND_BODY }
+#if defined(__x86_64__)
+  // SSE2 (every x86-64): 4 lanes per compare; a lane's mask from its own bit of the group's
+  // nibble (AND with 1, 2, 4, 8 and compare).
+  static uint64_t nonzero(const uint32_t* v) {
+    uint64_t m = 0;
+    const __m128i zero = _mm_setzero_si128();
+    for (int g = 0; g < kLanes / 4; ++g) {
+      const __m128i is_zero = _mm_cmpeq_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(v + 4 * g)), zero);
+      m |= static_cast<uint64_t>(~_mm_movemask_ps(_mm_castsi128_ps(is_zero)) & 0xf) << (4 * g);
+    }
+    return m;
+  }
+  static void blend(uint32_t* __restrict d, const uint32_t* __restrict s, uint64_t mask) {
+    const __m128i bit = _mm_setr_epi32(1, 2, 4, 8);
+    for (int g = 0; g < kLanes / 4; ++g) {
+      const __m128i nibble = _mm_set1_epi32(static_cast<int>((mask >> (4 * g)) & 0xf));
+      const __m128i take = _mm_cmpeq_epi32(_mm_and_si128(nibble, bit), bit);
+      __m128i* dp = reinterpret_cast<__m128i*>(d + 4 * g);
+      const __m128i sv = _mm_loadu_si128(reinterpret_cast<const __m128i*>(s + 4 * g));
+      _mm_storeu_si128(dp, _mm_or_si128(_mm_and_si128(take, sv), _mm_andnot_si128(take, _mm_loadu_si128(dp))));
+    }
+  }
+#else
+  static uint64_t nonzero(const uint32_t* v) { return nonzeroPortable(v); }
+  static void blend(uint32_t* __restrict d, const uint32_t* __restrict s, uint64_t mask) { blendPortable(d, s, mask); }
+#endif
 };
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 #define PF_LANE_ISAS 1
-#include <immintrin.h>
 struct Avx2 {
   template <Op OP, unsigned WIDE>
   [[gnu::target("avx2")]] static void run(PF_LANE_PARAMS) { PF_LANE_LOOP; }
-  [[gnu::target("avx2")]] static uint64_t nonzero(const uint32_t* v) { PF_NONZERO_BODY; }
+  // 8 lanes per compare; blendv takes each lane's top bit.
+  [[gnu::target("avx2")]] static uint64_t nonzero(const uint32_t* v) {
+    uint64_t m = 0;
+    const __m256i zero = _mm256_setzero_si256();
+    for (int g = 0; g < kLanes / 8; ++g) {
+      const __m256i is_zero = _mm256_cmpeq_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(v + 8 * g)), zero);
+      m |= static_cast<uint64_t>(~_mm256_movemask_ps(_mm256_castsi256_ps(is_zero)) & 0xff) << (8 * g);
+    }
+    return m;
+  }
   [[gnu::target("avx2")]] static void blend(uint32_t* __restrict d, const uint32_t* __restrict s, uint64_t mask) {
-    PF_BLEND_BODY
+    const __m256i bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+    for (int g = 0; g < kLanes / 8; ++g) {
+      const __m256i byte = _mm256_set1_epi32(static_cast<int>((mask >> (8 * g)) & 0xff));
+      const __m256 take = _mm256_castsi256_ps(_mm256_cmpeq_epi32(_mm256_and_si256(byte, bit), bit));
+      float* dp = reinterpret_cast<float*>(d + 8 * g);
+      const __m256 sv = _mm256_loadu_ps(reinterpret_cast<const float*>(s + 8 * g));
+      _mm256_storeu_ps(dp, _mm256_blendv_ps(_mm256_loadu_ps(dp), sv, take));
+    }
   }
 };
 // 512-bit vectors: GCC's generic tuning would otherwise keep AVX-512 code at 256 bits.
