@@ -28,20 +28,6 @@ inline uint64_t laneMaskOf(const uint32_t* v, bool wide) {
 
 inline void blend(uint32_t* __restrict d, const uint32_t* __restrict s, uint64_t mask) { laneMaskOps().blend(d, s, mask); }
 
-inline bool depthPasses(DepthFunc f, float z, float zbuf) {
-  switch (f) {
-    case DepthFunc::Never: return false;
-    case DepthFunc::Less: return z < zbuf;
-    case DepthFunc::Equal: return z == zbuf;
-    case DepthFunc::LessEqual: return z <= zbuf;
-    case DepthFunc::Greater: return z > zbuf;
-    case DepthFunc::NotEqual: return z != zbuf;
-    case DepthFunc::GreaterEqual: return z >= zbuf;
-    case DepthFunc::Always: return true;
-  }
-  return false;
-}
-
 }  // namespace
 
 // Block rejection by regions of kRejectionRegion x kRejectionRegion pixels: one interval
@@ -327,15 +313,22 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const uint32_t* r
         if (alive == 0) return 0;
         continue;
       case Op::ZTest: {
+        // The depth function as a comparison kernel of (Z, the depth buffer's value).
         bool w;
         const uint32_t* z = src(ins.a, w);
         uint32_t* d = R + static_cast<size_t>(operandIndex(ins.dst)) * kLanes;
         const uint32_t* zb = R + kRegZ * kLanes;
-        for (int i = 0; i < kLanes; ++i) {
-          float zi = asF(w ? z[i] : z[0]);
-          tmp[i] = state.depth_test ? depthPasses(state.depth_func, zi, asF(zb[i])) : 1u;
+        static const uint32_t kFalse = 0u, kTrue = 1u;
+        switch (state.depth_test ? state.depth_func : DepthFunc::Always) {
+          case DepthFunc::Never: run(Op::Mov, d, &kFalse, false, kZeroLanes, false, kZeroLanes, false, exec); break;
+          case DepthFunc::Always: run(Op::Mov, d, &kTrue, false, kZeroLanes, false, kZeroLanes, false, exec); break;
+          case DepthFunc::Less: run(Op::FLt, d, z, w, zb, true, kZeroLanes, false, exec); break;
+          case DepthFunc::LessEqual: run(Op::FLe, d, z, w, zb, true, kZeroLanes, false, exec); break;
+          case DepthFunc::Greater: run(Op::FLt, d, zb, true, z, w, kZeroLanes, false, exec); break;
+          case DepthFunc::GreaterEqual: run(Op::FLe, d, zb, true, z, w, kZeroLanes, false, exec); break;
+          case DepthFunc::Equal: run(Op::FEq, d, z, w, zb, true, kZeroLanes, false, exec); break;
+          case DepthFunc::NotEqual: run(Op::FNe, d, z, w, zb, true, kZeroLanes, false, exec); break;
         }
-        blend(d, tmp, exec);
         continue;
       }
       case Op::FieldBox:
@@ -378,10 +371,20 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const uint32_t* r
         if (!target.depth || !state.depth_test || !state.depth_write) continue;
         bool w;
         const uint32_t* z = src(ins.a, w);
-        for (int i = 0; i < kLanes; ++i)
-          if ((exec >> i) & 1u)
-            target.depth[static_cast<size_t>(by + i / kBlockSize) * target.depth_stride + bx + i % kBlockSize] =
-                asF(w ? z[i] : z[0]);
+        // Row by row; whole rows of a wide Z by memcpy (the lanes outside exec may lie past the
+        // framebuffer's edge: never touched).
+        for (int row = 0; row < kBlockSize; ++row) {
+          const unsigned row_mask = static_cast<unsigned>(exec >> (row * kBlockSize)) & ((1u << kBlockSize) - 1u);
+          if (row_mask == 0) continue;
+          float* depth = target.depth + static_cast<size_t>(by + row) * target.depth_stride + bx;
+          const uint32_t* zr = w ? z + row * kBlockSize : nullptr;
+          if (zr && row_mask == (1u << kBlockSize) - 1u) {
+            std::memcpy(depth, zr, sizeof(float) * kBlockSize);
+            continue;
+          }
+          for (int lx = 0; lx < kBlockSize; ++lx)
+            if ((row_mask >> lx) & 1u) depth[lx] = asF(zr ? zr[lx] : z[0]);
+        }
         continue;
       }
       case Op::InterpReturn:
