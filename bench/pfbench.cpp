@@ -1,5 +1,6 @@
 // pfbench: primflow against OSMesa (llvmpipe) on the same GL scenes, in one process run.
 //   pfbench [--threads N] [--frames F] [--warmup W] [--scenes small,large,fill,lit] [--csv FILE]
+//           [--lanes sse2,avx2,avx512|all]   (the pixel kernels' instruction sets to time, one row each)
 // llvmpipe's thread count is LP_NUM_THREADS, read once per process: pfbench sets it to N before
 // OSMesa starts, so compare thread counts by running pfbench once per count (bench/run).
 // Times are medians of F frames after W warm-up frames, each frame ending in glFinish.
@@ -14,6 +15,7 @@
 #include <sstream>
 
 #include "bench/scene_data.h"
+#include "raster/lane_kernels.h"
 
 namespace pfbench {
 
@@ -73,12 +75,42 @@ int main(int argc, char** argv) {
   app.add_option("--warmup", warmup, "frames before timing")->check(CLI::Range(0, 100));
   app.add_option("--scenes", scenes, "comma-separated: small, large, fill, lit");
   app.add_option("--csv", csv, "append results to this CSV file");
+  std::string lanes;
+  app.add_option("--lanes", lanes,
+                 "comma-separated instruction sets of the pixel kernels to time primflow with (sse2, avx2, avx512, "
+                 "or all the machine runs; default: the one chosen at start-up)");
   CLI11_PARSE(app, argc, argv);
+  std::vector<pf::LaneIsa> lane_isas;
+  {
+    std::stringstream names(lanes);
+    std::string n;
+    while (std::getline(names, n, ',')) {
+      if (n == "all") {  // every set this machine runs
+        for (pf::LaneIsa isa : pf::availableLaneIsas()) lane_isas.push_back(isa);
+        continue;
+      }
+      bool known = false;
+      for (pf::LaneIsa isa : {pf::LaneIsa::Baseline, pf::LaneIsa::Avx2, pf::LaneIsa::Avx512})
+        if (n == pf::laneIsaName(isa)) {
+          known = true;
+          if (!pf::setLaneIsa(isa)) {
+            std::fprintf(stderr, "pfbench: this machine cannot run the %s kernels\n", n.c_str());
+            return 2;
+          }
+          lane_isas.push_back(isa);
+        }
+      if (!known) {
+        std::fprintf(stderr, "pfbench: unknown instruction set '%s' (sse2, avx2, avx512)\n", n.c_str());
+        return 2;
+      }
+    }
+    if (lane_isas.empty()) lane_isas.push_back(pf::laneIsa());
+  }
   setenv("LP_NUM_THREADS", std::to_string(threads).c_str(), 1);  // before OSMesa starts
 
   std::ostringstream rows;
-  std::printf("%-6s %7s %12s %12s %8s %12s %12s\n", "scene", "threads", "llvmpipe ms", "primflow ms", "ratio",
-              "ns/pixel run", "setup share");
+  std::printf("%-6s %7s %12s %12s %8s %12s %12s %7s\n", "scene", "threads", "llvmpipe ms", "primflow ms", "ratio",
+              "ns/pixel run", "setup share", "lanes");
   std::stringstream list(scenes);
   std::string name;
   while (std::getline(list, name, ',')) {
@@ -88,22 +120,28 @@ int main(int argc, char** argv) {
     }
     pfbench::SceneData s = pfbench::makeScene(name);
     double ref = median(pfbench::timeOsmesa(s, warmup, frames));
-    pfbench::FrameWork w;
-    double ours = median(pfbench::timePrimflow(s, warmup, frames, threads, &w));
-    // Per pixel-program run, of the whole frame's time (setup and shading included).
-    double ns_per_pixel = w.pixels_run ? ours * 1e6 / static_cast<double>(w.pixels_run) : 0;
-    double share = w.setup_instructions + w.pixel_instructions
-                       ? 100.0 * w.setup_instructions / static_cast<double>(w.setup_instructions + w.pixel_instructions)
-                       : 0;
-    std::printf("%-6s %7d %12.2f %12.2f %8.2f %12.2f %11.1f%%\n", name.c_str(), threads, ref, ours,
-                ref > 0 ? ours / ref : 0, ns_per_pixel, share);
-    rows << name << "," << threads << "," << ref << "," << ours << "," << (ref > 0 ? ours / ref : 0) << ","
-         << w.pixels_run << "," << w.pixels_shaded << "," << w.setup_instructions << "," << w.pixel_instructions << "\n";
+    for (pf::LaneIsa isa : lane_isas) {
+      pf::setLaneIsa(isa);
+      pfbench::FrameWork w;
+      double ours = median(pfbench::timePrimflow(s, warmup, frames, threads, &w));
+      // Per pixel-program run, of the whole frame's time (setup and shading included).
+      double ns_per_pixel = w.pixels_run ? ours * 1e6 / static_cast<double>(w.pixels_run) : 0;
+      double share = w.setup_instructions + w.pixel_instructions
+                         ? 100.0 * w.setup_instructions / static_cast<double>(w.setup_instructions + w.pixel_instructions)
+                         : 0;
+      std::printf("%-6s %7d %12.2f %12.2f %8.2f %12.2f %11.1f%% %7s\n", name.c_str(), threads, ref, ours,
+                  ref > 0 ? ours / ref : 0, ns_per_pixel, share, pf::laneIsaName(isa));
+      rows << name << "," << threads << "," << ref << "," << ours << "," << (ref > 0 ? ours / ref : 0) << ","
+           << w.pixels_run << "," << w.pixels_shaded << "," << w.setup_instructions << "," << w.pixel_instructions << ","
+           << pf::laneIsaName(isa) << "\n";
+    }
   }
   if (!csv.empty()) {
     bool fresh = !std::ifstream(csv).good();
     std::ofstream out(csv, std::ios::app);
-    if (fresh) out << "scene,threads,llvmpipe_ms,primflow_ms,ratio,pixels_run,pixels_shaded,setup_instructions,pixel_instructions\n";
+    if (fresh)
+      out << "scene,threads,llvmpipe_ms,primflow_ms,ratio,pixels_run,pixels_shaded,setup_instructions,pixel_instructions,"
+             "lanes\n";
     out << rows.str();
   }
   return 0;
