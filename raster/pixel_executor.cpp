@@ -73,21 +73,40 @@ void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* reco
 
   // Commit: the lanes still alive are this instance's pixels.
   counters.lanes_committed += static_cast<uint64_t>(__builtin_popcountll(alive));
-  for (int i = 0; i < kLanes; ++i) {
-    if (!((alive >> i) & 1u)) continue;
-    int tx = bx + i % kBlockSize - target.tile_x0;
-    int ty = by + i / kBlockSize - target.tile_y0;
-    size_t t = static_cast<size_t>(ty) * kTileSize + tx;
-    target.shade_ids[t] = shade_id;
-    for (int ch = 0; ch < nch; ++ch) target.slots[layout.gbuffer_slot[ch]][t] = asF(staging_[static_cast<size_t>(ch) * kLanes + i]);
-    if (layout.surface_slot >= 0 && !layout.surface_interpolated) {  // per-pixel lighting: P (divided by w) and N
-      // (An instance that does not set N -- a callee of one that does -- has no surface: 0.)
-      const bool has = prim.writes_normal;
-      const float w = has ? asF(surface_[3 * kLanes + i]) : 1.0f;
-      for (int k = 0; k < 3; ++k) {
-        target.slots[layout.surface_slot + k][t] = has ? asF(surface_[static_cast<size_t>(k) * kLanes + i]) / w : 0.0f;
-        target.slots[layout.surface_slot + 3 + k][t] = has ? asF(surface_[static_cast<size_t>(4 + k) * kLanes + i]) : 0.0f;
-      }
+  if (alive == ~0ull) ++counters.blocks_covered;
+  // Per-pixel lighting's surface: P (divided by w) and N. (An instance that does not set N --
+  // a callee of one that does -- has no surface: 0.)
+  const bool commit_surface = layout.surface_slot >= 0 && !layout.surface_interpolated;
+  auto commitSurface = [&](int i, size_t t) {
+    const bool has = prim.writes_normal;
+    const float w = has ? asF(surface_[3 * kLanes + i]) : 1.0f;
+    for (int k = 0; k < 3; ++k) {
+      target.slots[layout.surface_slot + k][t] = has ? asF(surface_[static_cast<size_t>(k) * kLanes + i]) / w : 0.0f;
+      target.slots[layout.surface_slot + 3 + k][t] = has ? asF(surface_[static_cast<size_t>(4 + k) * kLanes + i]) : 0.0f;
+    }
+  };
+  // Row by row: a whole row's channels are copied at once.
+  for (int row = 0; row < kBlockSize; ++row) {
+    const unsigned row_mask = static_cast<unsigned>(alive >> (row * kBlockSize)) & ((1u << kBlockSize) - 1u);
+    if (row_mask == 0) continue;
+    const int i0 = row * kBlockSize;
+    const size_t t0 = static_cast<size_t>(by + row - target.tile_y0) * kTileSize + static_cast<size_t>(bx - target.tile_x0);
+    if (row_mask == (1u << kBlockSize) - 1u) {
+      std::fill_n(target.shade_ids + t0, kBlockSize, shade_id);
+      for (int ch = 0; ch < nch; ++ch)
+        std::memcpy(target.slots[layout.gbuffer_slot[ch]] + t0, staging_.data() + static_cast<size_t>(ch) * kLanes + i0,
+                    sizeof(float) * kBlockSize);
+      if (commit_surface)
+        for (int lx = 0; lx < kBlockSize; ++lx) commitSurface(i0 + lx, t0 + static_cast<size_t>(lx));
+      continue;
+    }
+    for (int lx = 0; lx < kBlockSize; ++lx) {
+      if (!((row_mask >> lx) & 1u)) continue;
+      const int i = i0 + lx;
+      const size_t t = t0 + static_cast<size_t>(lx);
+      target.shade_ids[t] = shade_id;
+      for (int ch = 0; ch < nch; ++ch) target.slots[layout.gbuffer_slot[ch]][t] = asF(staging_[static_cast<size_t>(ch) * kLanes + i]);
+      if (commit_surface) commitSurface(i, t);
     }
   }
 }

@@ -33,6 +33,7 @@ struct BlockCounters {
   uint64_t blocks_rejected = 0;  // skipped whole by block_rejection.h (not in blocks_run)
   uint64_t lanes_started = 0;
   uint64_t lanes_committed = 0;
+  uint64_t blocks_covered = 0;  // blocks whose every lane committed (the instance covers them whole)
   uint64_t instructions = 0;  // executed, once per block (each covers every lane)
   uint64_t iteration_cap_lanes = 0;  // lanes stopped by the iteration cap
   const CompiledPrimitive* cap_primitive = nullptr;  // the last primitive that hit it
