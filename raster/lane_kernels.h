@@ -47,6 +47,8 @@ inline LaneKernel laneKernel(Op op, unsigned wide) {
   return (*detail::active_lane_isa.load(std::memory_order_relaxed)->kernels)[static_cast<size_t>(op)][wide];
 }
 inline const LaneMaskOps& laneMaskOps() { return detail::active_lane_isa.load(std::memory_order_relaxed)->masks; }
+// The tables in use, for a loop that runs many kernels (one load instead of one per kernel).
+inline const LaneIsaTables& laneIsaTables() { return *detail::active_lane_isa.load(std::memory_order_relaxed); }
 
 // The instruction sets this machine runs, best last; the one in use; its name ("sse2", "avx2",
 // "avx512").

@@ -238,16 +238,17 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const uint32_t* r
     cur &= ~lanes;
   };
   alignas(64) uint32_t tmp[kLanes];
+  const LaneIsaTables& isa = laneIsaTables();
 
   auto run = [&](Op op, uint32_t* dst, const uint32_t* a, bool wa, const uint32_t* b, bool wb,
                  const uint32_t* c, bool wc, uint64_t exec, const uint32_t* d = kZeroLanes, bool wd = false,
                  uint32_t imm = 0) {
-    LaneKernel k = laneKernel(op, (wa ? 1 : 0) | (wb ? 2 : 0) | (wc ? 4 : 0) | (wd ? 8 : 0));
+    LaneKernel k = (*isa.kernels)[static_cast<size_t>(op)][(wa ? 1 : 0) | (wb ? 2 : 0) | (wc ? 4 : 0) | (wd ? 8 : 0)];
     if (exec == ~0ull) {
       k(dst, a, b, c, d, imm);
     } else {
       k(tmp, a, b, c, d, imm);
-      blend(dst, tmp, exec);
+      isa.masks.blend(dst, tmp, exec);
     }
   };
   auto forChannels = [&](uint16_t set, auto&& fn) {
