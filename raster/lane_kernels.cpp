@@ -1,4 +1,5 @@
-// The lane kernels, compiled for three instruction sets (see lane_kernels.h).
+// The lane kernels (the pixel executor's and the batched setup's), compiled for three
+// instruction sets (see lane_kernels.h).
 #include "raster/lane_kernels.h"
 
 #include <array>
@@ -8,6 +9,7 @@
 
 #include "compiler/scalar_ops.h"
 #include "raster/limits.h"
+#include "raster/setup_batch.h"
 
 #if defined(__x86_64__)
 #include <immintrin.h>
@@ -24,6 +26,15 @@ static_assert(kLanes % 16 == 0 && kLanes <= 64, "lane masks are 64-bit, handled 
   for (int i = 0; i < kLanes; ++i)                                                                        \
     r[i] = evalScalar(OP, (WIDE & 1) ? a[i] : a[0], (WIDE & 2) ? b[i] : b[0], (WIDE & 4) ? c[i] : c[0], \
                       (WIDE & 8) ? d[i] : d[0], imm)
+
+// The batched setup's loop: into a temporary first, dst may be one of the operands.
+#define PF_BATCH_LOOP                                                                          \
+  alignas(64) uint32_t r[kSetupBatchLanes];                                                   \
+  for (int l = 0; l < kSetupBatchLanes; ++l) r[l] = evalScalar(OP, a[l], b[l], c[l], d[l], imm); \
+  std::memcpy(dst, r, sizeof r)
+
+#define PF_BATCH_PARAMS \
+  uint32_t *dst, const uint32_t *a, const uint32_t *b, const uint32_t *c, const uint32_t *d, uint32_t imm
 
 #define PF_LANE_PARAMS \
   uint32_t *__restrict r, const uint32_t *a, const uint32_t *b, const uint32_t *c, const uint32_t *d, uint32_t imm
@@ -43,6 +54,8 @@ static_assert(kLanes % 16 == 0 && kLanes <= 64, "lane masks are 64-bit, handled 
 struct Baseline {
   template <Op OP, unsigned WIDE>
   static void run(PF_LANE_PARAMS) { PF_LANE_LOOP; }
+  template <Op OP>
+  static void batch(PF_BATCH_PARAMS) { PF_BATCH_LOOP; }
 #if defined(__x86_64__)
   // SSE2 (every x86-64): 4 lanes per compare; a lane's mask from its own bit of the group's
   // nibble (AND with 1, 2, 4, 8 and compare).
@@ -76,6 +89,8 @@ struct Baseline {
 struct Avx2 {
   template <Op OP, unsigned WIDE>
   [[gnu::target("avx2")]] static void run(PF_LANE_PARAMS) { PF_LANE_LOOP; }
+  template <Op OP>
+  [[gnu::target("avx2")]] static void batch(PF_BATCH_PARAMS) { PF_BATCH_LOOP; }
   // 8 lanes per compare; blendv takes each lane's top bit.
   [[gnu::target("avx2")]] static uint64_t nonzero(const uint32_t* v) {
     uint64_t m = 0;
@@ -101,6 +116,8 @@ struct Avx2 {
 struct Avx512 {
   template <Op OP, unsigned WIDE>
   [[gnu::target("arch=x86-64-v4,prefer-vector-width=512")]] static void run(PF_LANE_PARAMS) { PF_LANE_LOOP; }
+  template <Op OP>
+  [[gnu::target("arch=x86-64-v4,prefer-vector-width=512")]] static void batch(PF_BATCH_PARAMS) { PF_BATCH_LOOP; }
   // AVX-512 has mask registers for exactly these: a test per 16 lanes, a masked move.
   [[gnu::target("arch=x86-64-v4,prefer-vector-width=512")]] static uint64_t nonzero(const uint32_t* v) {
     uint64_t m = 0;
@@ -131,13 +148,23 @@ constexpr LaneKernelTable tableOf(std::index_sequence<I...>) {
 template <class Isa>
 constexpr LaneKernelTable tableOf() { return tableOf<Isa>(std::make_index_sequence<kLaneKernelOps>{}); }
 
+template <class Isa, size_t... I>
+constexpr BatchKernelTable batchTableOf(std::index_sequence<I...>) {
+  return {&Isa::template batch<static_cast<Op>(I)>...};
+}
+template <class Isa>
+constexpr BatchKernelTable batchTableOf() { return batchTableOf<Isa>(std::make_index_sequence<kLaneKernelOps>{}); }
+
 constexpr LaneKernelTable kBaselineKernels = tableOf<Baseline>();
-constexpr LaneIsaTables kBaseline{&kBaselineKernels, {&Baseline::nonzero, &Baseline::blend}};
+constexpr BatchKernelTable kBaselineBatch = batchTableOf<Baseline>();
+constexpr LaneIsaTables kBaseline{&kBaselineKernels, {&Baseline::nonzero, &Baseline::blend}, &kBaselineBatch};
 #ifdef PF_LANE_ISAS
 constexpr LaneKernelTable kAvx2Kernels = tableOf<Avx2>();
 constexpr LaneKernelTable kAvx512Kernels = tableOf<Avx512>();
-constexpr LaneIsaTables kAvx2{&kAvx2Kernels, {&Avx2::nonzero, &Avx2::blend}};
-constexpr LaneIsaTables kAvx512{&kAvx512Kernels, {&Avx512::nonzero, &Avx512::blend}};
+constexpr BatchKernelTable kAvx2Batch = batchTableOf<Avx2>();
+constexpr BatchKernelTable kAvx512Batch = batchTableOf<Avx512>();
+constexpr LaneIsaTables kAvx2{&kAvx2Kernels, {&Avx2::nonzero, &Avx2::blend}, &kAvx2Batch};
+constexpr LaneIsaTables kAvx512{&kAvx512Kernels, {&Avx512::nonzero, &Avx512::blend}, &kAvx512Batch};
 #endif
 
 bool machineRuns(LaneIsa isa) {

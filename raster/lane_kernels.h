@@ -33,9 +33,16 @@ struct LaneMaskOps {
   void (*blend)(uint32_t* __restrict d, const uint32_t* __restrict s, uint64_t mask);
 };
 
+// The batched setup's kernels (raster/setup_batch.cpp): kSetupBatchLanes lanes, every operand
+// one value per lane; dst may be one of the operands.
+using BatchKernel = void (*)(uint32_t* dst, const uint32_t* a, const uint32_t* b, const uint32_t* c,
+                             const uint32_t* d, uint32_t imm);
+using BatchKernelTable = std::array<BatchKernel, kLaneKernelOps>;
+
 struct LaneIsaTables {
   const LaneKernelTable* kernels;
   LaneMaskOps masks;
+  const BatchKernelTable* batch;
 };
 
 namespace detail {
@@ -47,6 +54,9 @@ inline LaneKernel laneKernel(Op op, unsigned wide) {
   return (*detail::active_lane_isa.load(std::memory_order_relaxed)->kernels)[static_cast<size_t>(op)][wide];
 }
 inline const LaneMaskOps& laneMaskOps() { return detail::active_lane_isa.load(std::memory_order_relaxed)->masks; }
+inline BatchKernel batchKernel(Op op) {
+  return (*detail::active_lane_isa.load(std::memory_order_relaxed)->batch)[static_cast<size_t>(op)];
+}
 // The tables in use, for a loop that runs many kernels (one load instead of one per kernel).
 inline const LaneIsaTables& laneIsaTables() { return *detail::active_lane_isa.load(std::memory_order_relaxed); }
 

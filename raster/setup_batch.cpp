@@ -2,7 +2,7 @@
 //
 // Every value-producing instruction is one kernel: evalScalar (compiler/scalar_ops.h, the same
 // definition the scalar executor runs) over the kSetupBatchLanes lanes, instantiated per op so
-// that GCC vectorizes the loop. Registers, constants and parameters share one lane-major file
+// that GCC vectorizes the loop, for each instruction set (raster/lane_kernels.h). Registers, constants and parameters share one lane-major file
 // (constants broadcast), so every operand is kSetupBatchLanes consecutive words.
 #include "raster/setup_batch.h"
 
@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "compiler/scalar_ops.h"
+#include "raster/lane_kernels.h"
 #include "raster/limits.h"
 
 namespace pf {
@@ -22,24 +23,8 @@ constexpr int K = kSetupBatchLanes;
 static_assert(K <= 32, "lane sets are 32-bit");
 constexpr uint32_t kAllLanes = K == 32 ? ~0u : (1u << K) - 1u;
 
-using LaneKernel = void (*)(uint32_t*, const uint32_t*, const uint32_t*, const uint32_t*, const uint32_t*, uint32_t);
-
-template <Op OP>
-void laneKernel(uint32_t* dst, const uint32_t* a, const uint32_t* b, const uint32_t* c, const uint32_t* d, uint32_t imm) {
-  // Into a temporary first: dst may be one of the operands.
-  alignas(64) uint32_t r[K];
-  for (int l = 0; l < K; ++l) r[l] = evalScalar(OP, a[l], b[l], c[l], d[l], imm);
-  std::memcpy(dst, r, sizeof r);
-}
-
-template <size_t... I>
-constexpr std::array<LaneKernel, sizeof...(I)> laneKernels(std::index_sequence<I...>) {
-  return {laneKernel<static_cast<Op>(I)>...};
-}
-
-// The value-producing scalar instructions: every op up to Mov.
-constexpr size_t kKernelOps = static_cast<size_t>(Op::Mov) + 1;
-const auto kLaneKernels = laneKernels(std::make_index_sequence<kKernelOps>{});
+// The value-producing scalar instructions: every op up to Mov (their kernels: lane_kernels.h).
+constexpr size_t kKernelOps = kLaneKernelOps;
 
 alignas(64) const uint32_t kZeroLanes[K] = {};
 
@@ -114,6 +99,7 @@ void BatchSetupExecutor::runBatch(const CompiledPrimitive& prim, const SetupInpu
   }
 
   const size_t base[4] = {0, 0, nregs, nregs + nconst};  // by OperandKind (setup has no Uniform operands)
+  const BatchKernelTable& batch_kernels = *laneIsaTables().batch;
   uint32_t* const U = regs_.data();
   auto lanesOf = [&](uint32_t o) -> uint32_t* { return U + (base[o >> 30] + operandIndex(o)) * K; };
   auto argOf = [&](uint32_t o) -> const uint32_t* { return o == kNoOperand ? kZeroLanes : lanesOf(o); };
@@ -157,7 +143,7 @@ void BatchSetupExecutor::runBatch(const CompiledPrimitive& prim, const SetupInpu
       default: break;
     }
     if (static_cast<size_t>(ins.op) < kKernelOps) {
-      kLaneKernels[static_cast<size_t>(ins.op)](lanesOf(ins.dst), argOf(ins.a), argOf(ins.b), argOf(ins.c),
+      batch_kernels[static_cast<size_t>(ins.op)](lanesOf(ins.dst), argOf(ins.a), argOf(ins.b), argOf(ins.c),
                                                 argOf(ins.d), ins.imm);
       continue;
     }

@@ -16,6 +16,7 @@
 #include "compiler/fixed_point.h"
 #include "raster/lane_kernels.h"
 #include "raster/limits.h"
+#include "raster/setup_batch.h"
 
 using namespace pf;
 
@@ -98,6 +99,35 @@ TEST(LaneKernels, EveryInstructionSetComputesTheBaselineBits) {
     }
   }
   EXPECT_GT(compared, kLaneKernelOps * 16 * 3 - 1);
+}
+
+TEST(LaneKernels, BatchedSetupKernelsComputeTheBaselineBitsOnEverySet) {
+  IsaGuard guard;
+  std::mt19937 rng(7);
+  for (size_t op = 0; op < kLaneKernelOps; ++op) {
+    for (int trial = 0; trial < 4; ++trial) {
+      std::vector<uint32_t> in[4];
+      for (int k = 0; k < 4; ++k) {
+        in[k] = operandLanes(rng, k + trial);
+        in[k].resize(kSetupBatchLanes);
+      }
+      if (static_cast<Op>(op) == Op::QConv)
+        for (uint32_t& x : in[2]) x %= 65u;
+      const uint32_t imm = trial % 2 ? static_cast<uint32_t>(fixedImm({40, 12}, trial / 2)) : 0u;
+      std::vector<uint32_t> want(kSetupBatchLanes), got(kSetupBatchLanes);
+      ASSERT_TRUE(setLaneIsa(LaneIsa::Baseline));
+      batchKernel(static_cast<Op>(op))(want.data(), in[0].data(), in[1].data(), in[2].data(), in[3].data(), imm);
+      for (LaneIsa isa : availableLaneIsas()) {
+        ASSERT_TRUE(setLaneIsa(isa));
+        // In place, too: dst may be an operand.
+        got = in[1];
+        batchKernel(static_cast<Op>(op))(got.data(), in[0].data(), got.data(), in[2].data(), in[3].data(), imm);
+        for (int l = 0; l < kSetupBatchLanes; ++l)
+          ASSERT_TRUE(floatResult(static_cast<Op>(op)) ? sameValue(want[l], got[l]) : want[l] == got[l])
+              << opName(static_cast<Op>(op)) << " on " << laneIsaName(isa) << ", lane " << l;
+      }
+    }
+  }
 }
 
 TEST(LaneKernels, MaskLoopsAgreeWithTheirDefinition) {
