@@ -15,6 +15,11 @@ FixedFormat formatOf(const Type& t) { return FixedFormat{t.fixed_bits, t.fixed_f
 
 bool isIntScalar(const Type& t) { return t.dims.empty() && t.base == BaseType::Int; }
 
+// Both operands fixed or int: the operation stays fixed-point and exact (else it is a float one).
+bool exactOperands(const Binding& a, const Binding& b) {
+  return (a.type.isFixed() || isIntScalar(a.type)) && (b.type.isFixed() || isIntScalar(b.type));
+}
+
 }  // namespace
 
 int Lowerer::emitWord(Op op, ValueClass c, int a, int b, int cc, int d, int imm) {
@@ -59,8 +64,7 @@ int Lowerer::fixedToInt(const Binding& v) {
 
 Binding Lowerer::fixedArith(const std::string& op, const Binding& a, const Binding& b, const Type& result,
                             SourceLoc loc) {
-  const bool exact = (a.type.isFixed() || isIntScalar(a.type)) && (b.type.isFixed() || isIntScalar(b.type));
-  if (!exact || !result.isFixed()) {
+  if (!exactOperands(a, b) || !result.isFixed()) {
     // With a float (q + 0.5, or q += 0.5 into a fixed variable): computed in floats, then
     // converted into the result's type where that is fixed.
     Binding r = arith(op, asFloat(a), asFloat(b), result.isFixed() ? Type::of(BaseType::Float) : result, loc);
@@ -72,8 +76,7 @@ Binding Lowerer::fixedArith(const std::string& op, const Binding& a, const Bindi
 }
 
 int Lowerer::fixedCompare(const std::string& op, const Binding& a, const Binding& b) {
-  const bool exact = (a.type.isFixed() || isIntScalar(a.type)) && (b.type.isFixed() || isIntScalar(b.type));
-  if (!exact) {  // against a float: compared as floats
+  if (!exactOperands(a, b)) {  // against a float: compared as floats
     int x = asFloat(a).comps[0], y = asFloat(b).comps[0];
     if (op == ">" || op == ">=") std::swap(x, y);
     const Op o = op == "<" || op == ">" ? Op::FLt : op == "<=" || op == ">=" ? Op::FLe : op == "==" ? Op::FEq : Op::FNe;

@@ -168,6 +168,11 @@ constexpr LaneIsaTables kAvx512{&kAvx512Kernels, {&Avx512::nonzero, &Avx512::ble
 #endif
 
 bool machineRuns(LaneIsa isa) {
+#ifdef PF_LANE_ISAS
+  // The choice is made in a static initializer, possibly before libgcc's own CPU detection
+  // has run: run it first (it is idempotent).
+  __builtin_cpu_init();
+#endif
   switch (isa) {
     case LaneIsa::Baseline: return true;
 #ifdef PF_LANE_ISAS

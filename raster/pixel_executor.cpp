@@ -21,12 +21,10 @@ namespace {
 alignas(64) const uint32_t kZeroLanes[kLanes] = {};
 
 // The lanes where v is not zero (v uniform: all or none).
-inline uint64_t laneMaskOf(const uint32_t* v, bool wide) {
+inline uint64_t laneMaskOf(const LaneMaskOps& masks, const uint32_t* v, bool wide) {
   if (!wide) return v[0] ? ~0ull : 0ull;
-  return laneMaskOps().nonzero(v);
+  return masks.nonzero(v);
 }
-
-inline void blend(uint32_t* __restrict d, const uint32_t* __restrict s, uint64_t mask) { laneMaskOps().blend(d, s, mask); }
 
 }  // namespace
 
@@ -285,7 +283,7 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const uint32_t* r
         bool w;
         const uint32_t* c = src(ins.b, w);
         if (depth >= kMaxMaskDepth) return 0;  // codegen rejects deeper nesting; never reached
-        stack[depth++] = {cur, laneMaskOf(c, w), false, 0};
+        stack[depth++] = {cur, laneMaskOf(isa.masks, c, w), false, 0};
         cur &= stack[depth - 1].cond;
         continue;
       }
@@ -296,7 +294,7 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const uint32_t* r
       case Op::LoopTest: {
         bool w;
         const uint32_t* c = src(ins.b, w);
-        cur &= laneMaskOf(c, w);
+        cur &= laneMaskOf(isa.masks, c, w);
         continue;
       }
       case Op::Break: leaveLoop(exec, ins.imm > 1 ? ins.imm : 1, false); continue;
@@ -370,7 +368,7 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const uint32_t* r
         alignas(64) float t[kLanes];
         fieldHit(state, bx, by, exec, u[0], u[1], u[2], t);
         std::memcpy(tmp, t, sizeof t);
-        blend(R + static_cast<size_t>(operandIndex(ins.dst)) * kLanes, tmp, exec);
+        isa.masks.blend(R + static_cast<size_t>(operandIndex(ins.dst)) * kLanes, tmp, exec);
         continue;
       }
       case Op::FieldGradient: {
@@ -384,7 +382,7 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const uint32_t* r
         fieldGradient(state, exec, asF(wf ? fv[exec ? __builtin_ctzll(exec) : 0] : fv[0]), ins.imm & 3,
                       (ins.imm & 4) != 0, p, wide, g);
         std::memcpy(tmp, g, sizeof g);
-        blend(R + static_cast<size_t>(operandIndex(ins.dst)) * kLanes, tmp, exec);
+        isa.masks.blend(R + static_cast<size_t>(operandIndex(ins.dst)) * kLanes, tmp, exec);
         continue;
       }
       case Op::ZCommit: {
