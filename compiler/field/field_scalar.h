@@ -33,9 +33,14 @@ inline float applyFieldOp(FieldOp op, float a, float b) {
     case FieldOp::Div: return a / b;
     case FieldOp::Min: return fieldMin(a, b);
     case FieldOp::Max: return fieldMax(a, b);
+    case FieldOp::Less: return a < b ? 1.0f : 0.0f;
+    case FieldOp::LessEq: return a <= b ? 1.0f : 0.0f;
+    case FieldOp::Select:  // ternary: applySelect
     case FieldOp::X: case FieldOp::Y: case FieldOp::Z: case FieldOp::Const: break;
   }
   return a;
 }
+
+inline float applySelect(float cond, float if_true, float if_false) { return cond != 0.0f ? if_true : if_false; }
 
 }  // namespace pf::field

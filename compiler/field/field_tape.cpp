@@ -12,6 +12,7 @@ int fieldOpArity(FieldOp op) {
     case FieldOp::X: case FieldOp::Y: case FieldOp::Z: case FieldOp::Const: return 0;
     case FieldOp::Neg: case FieldOp::Abs: case FieldOp::Square: case FieldOp::Sqrt:
     case FieldOp::Exp: case FieldOp::Log: case FieldOp::Sin: case FieldOp::Cos: case FieldOp::Atan: return 1;
+    case FieldOp::Select: return 3;
     default: return 2;
   }
 }
@@ -37,6 +38,9 @@ std::string_view fieldOpName(FieldOp op) {
     case FieldOp::Div: return "div";
     case FieldOp::Min: return "min";
     case FieldOp::Max: return "max";
+    case FieldOp::Less: return "less";
+    case FieldOp::LessEq: return "less-eq";
+    case FieldOp::Select: return "select";
   }
   return "?";
 }
@@ -54,7 +58,8 @@ std::string FieldTape::print() const {
     out << '_' << i << ' ' << fieldOpName(in.op);
     if (in.op == FieldOp::Const) out << ' ' << in.value;
     if (fieldOpArity(in.op) >= 1) out << " _" << in.a;
-    if (fieldOpArity(in.op) == 2) out << " _" << in.b;
+    if (fieldOpArity(in.op) >= 2) out << " _" << in.b;
+    if (fieldOpArity(in.op) == 3) out << " _" << in.c;
     out << '\n';
   }
   out << "result _" << result << '\n';
@@ -68,6 +73,7 @@ size_t FieldTapeBuilder::InstrHash::operator()(const FieldInstr& in) const {
   size_t h = static_cast<size_t>(in.op);
   h = h * 1000003u ^ in.a;
   h = h * 1000003u ^ in.b;
+  h = h * 1000003u ^ in.c;
   h = h * 1000003u ^ bits;
   return h;
 }
@@ -106,6 +112,15 @@ uint32_t FieldTapeBuilder::binary(FieldOp op, uint32_t a, uint32_t b) {
   return add({op, a, b, 0.0f});
 }
 
+uint32_t FieldTapeBuilder::select(uint32_t cond, uint32_t if_true, uint32_t if_false) {
+  const FieldInstr& ic = tape_.instrs.at(cond);
+  (void)tape_.instrs.at(if_true);  // operands must be earlier values, as for binary()
+  (void)tape_.instrs.at(if_false);
+  if (ic.op == FieldOp::Const) return ic.value != 0.0f ? if_true : if_false;
+  if (if_true == if_false) return if_true;
+  return add({FieldOp::Select, cond, if_true, 0.0f, if_false});
+}
+
 FieldTape FieldTapeBuilder::finish(uint32_t result) {
   tape_.result = result;
   FieldTape done = removeDeadCode(tape_);
@@ -114,21 +129,24 @@ FieldTape FieldTapeBuilder::finish(uint32_t result) {
   return done;
 }
 
-// Marks what `result` needs, following only the chosen operand of a decided min/max, then
+// Marks what `result` needs, following only the chosen operand of a decided min/max/select, then
 // copies the needed instructions in order with renumbered operands.
 static FieldTape rebuild(const FieldTape& tape, const std::vector<Choice>* choices) {
   const size_t n = tape.instrs.size();
   auto chosen = [&](uint32_t i) -> Choice {
     if (!choices) return Choice::Both;
     const FieldOp op = tape.instrs[i].op;
-    return (op == FieldOp::Min || op == FieldOp::Max) ? (*choices)[i] : Choice::Both;
+    return (op == FieldOp::Min || op == FieldOp::Max || op == FieldOp::Select) ? (*choices)[i] : Choice::Both;
   };
-  // forward[i]: the value that stands for value i once decided min/max are bypassed.
+  // forward[i]: the value that stands for value i once decided min/max/select are bypassed.
   std::vector<uint32_t> forward(n);
   for (uint32_t i = 0; i < n; ++i) {
     const FieldInstr& in = tape.instrs[i];
     const Choice c = chosen(i);
-    forward[i] = c == Choice::Left ? forward[in.a] : c == Choice::Right ? forward[in.b] : i;
+    const bool select = in.op == FieldOp::Select;
+    forward[i] = c == Choice::Left    ? forward[select ? in.b : in.a]
+                 : c == Choice::Right ? forward[select ? in.c : in.b]
+                                      : i;
   }
   std::vector<char> live(n, 0);
   if (n) live[forward[tape.result]] = 1;
@@ -137,7 +155,8 @@ static FieldTape rebuild(const FieldTape& tape, const std::vector<Choice>* choic
     const FieldInstr& in = tape.instrs[k];
     const int arity = fieldOpArity(in.op);
     if (arity >= 1) live[forward[in.a]] = 1;
-    if (arity == 2) live[forward[in.b]] = 1;
+    if (arity >= 2) live[forward[in.b]] = 1;
+    if (arity == 3) live[forward[in.c]] = 1;
   }
   FieldTape out;
   std::vector<uint32_t> renumber(n, 0);
@@ -146,7 +165,8 @@ static FieldTape rebuild(const FieldTape& tape, const std::vector<Choice>* choic
     FieldInstr in = tape.instrs[i];
     const int arity = fieldOpArity(in.op);
     if (arity >= 1) in.a = renumber[forward[in.a]];
-    if (arity == 2) in.b = renumber[forward[in.b]];
+    if (arity >= 2) in.b = renumber[forward[in.b]];
+    if (arity == 3) in.c = renumber[forward[in.c]];
     renumber[i] = static_cast<uint32_t>(out.instrs.size());
     out.instrs.push_back(in);
   }

@@ -19,25 +19,37 @@
 
 namespace pf::field {
 
-// The operations every evaluator implements. Unary ops read `a`; binary ops read `a` and `b`.
+// The operations every evaluator implements. Unary ops read `a`; binary ops read `a` and `b`;
+// Select reads all three.
+//
+// Point-dependent choices (HyperFun's `if` on x, the language's `if` on p): Less and LessEq give
+// 1 where a < b (a <= b) and 0 elsewhere, NaN included (C's comparisons); Select gives b where
+// a != 0 and c elsewhere -- only the chosen operand's value, so an unchosen branch's inf or NaN
+// (a guarded division) never reaches the result. Every evaluator computes both branches; the
+// interval form decides a Select over a box when its condition's interval excludes 0 or is 0,
+// and tape simplification then drops the other branch, as it drops a min/max side.
 enum class FieldOp : uint8_t {
   X, Y, Z, Const,                               // leaves
   Neg, Abs, Square, Sqrt, Exp, Log, Sin, Cos,   // unary
   Atan,                                         // unary (after the others: Fidget has no atan)
   Add, Sub, Mul, Div, Min, Max,                 // binary
+  Less, LessEq,                                 // binary: 1 or 0
+  Select,                                       // ternary: a != 0 ? b : c
 };
 
-int fieldOpArity(FieldOp op);                 // 0, 1 or 2
+int fieldOpArity(FieldOp op);                 // 0, 1, 2 or 3
 std::string_view fieldOpName(FieldOp op);     // "add", "var-x", ... (Fidget's spelling)
 
 struct FieldInstr {
   FieldOp op = FieldOp::Const;
   uint32_t a = 0, b = 0;  // operand value indices (earlier instructions)
   float value = 0.0f;     // Const only
+  uint32_t c = 0;         // Select's third operand
   bool operator==(const FieldInstr&) const = default;
 };
 
-// Which operand of a min or max an interval evaluation proved to be the result over a box.
+// Which operand of a min or max an interval evaluation proved to be the result over a box
+// (for a Select: Left is its `b`, the value where the condition holds, Right its `c`).
 enum class Choice : uint8_t { Both = 0, Left = 1, Right = 2 };
 
 struct FieldTape {
@@ -58,6 +70,8 @@ class FieldTapeBuilder {
   uint32_t constant(float v);
   uint32_t unary(FieldOp op, uint32_t a);
   uint32_t binary(FieldOp op, uint32_t a, uint32_t b);
+  // cond != 0 ? if_true : if_false (a known condition picks its operand now).
+  uint32_t select(uint32_t cond, uint32_t if_true, uint32_t if_false);
   size_t size() const { return tape_.instrs.size(); }
 
   // The finished tape with `result` as its value, dead instructions removed.
@@ -72,7 +86,7 @@ class FieldTapeBuilder {
   std::unordered_map<FieldInstr, uint32_t, InstrHash> known_;
 };
 
-// The tape with each min/max whose choice is Left or Right replaced by that operand, and every
+// The tape with each min/max/select whose choice is Left or Right replaced by that operand, and every
 // instruction the result no longer needs removed. choices has one entry per instruction (only
 // min/max entries are read). The simplified tape computes the same value wherever the choices
 // hold -- bit for bit, since a min/max that returns one operand returns it unchanged.

@@ -16,8 +16,8 @@ namespace pf::field {
 namespace {
 
 // A value during the symbolic run: known at compile time (its 32-bit pattern), or a value of
-// the tape being built (point-dependent floats; point-dependent bools and ints have no tape
-// value -- using one is the error).
+// the tape being built (point-dependent floats, and bools as 1 or 0; point-dependent ints have
+// no tape value -- using one is the error).
 struct Symbol {
   bool known = false;
   uint32_t bits = 0;
@@ -123,8 +123,8 @@ class TapeTranslator {
   bool decide(int cond, SourceLoc loc, const char* what) {
     if (const Symbol s = get(cond, loc); s.poison >= 0) failPoisoned(s);
     if (!knownValue(cond, loc))
-      fail(loc, std::string(what) + " depends on the field's point: a field's branches must be decided when it is "
-                                    "compiled (write a point-dependent choice with min, max or abs)");
+      fail(loc, std::string(what) + " depends on the field's point: a field's loops must run the same number of times "
+                                    "at every point (an 'if' or ?: on the point is fine)");
     return get(cond, loc).bits != 0;
   }
 
@@ -139,7 +139,7 @@ class TapeTranslator {
     for (const IrNode& n : b) {
       Outcome o;
       if (n.kind == IrNode::Kind::If) {
-        o = block(decide(n.cond, n.inst.loc, "this 'if' condition") ? *n.then_block : *n.else_block);
+        o = ifNode(n);
       } else if (n.kind == IrNode::Kind::Loop) {
         o = loop(n);
       } else {
@@ -150,12 +150,181 @@ class TapeTranslator {
     return {};
   }
 
+  // --- Point-dependent control flow --------------------------------------------------------
+  // An if decided at compile time runs one branch. One whose condition depends on the point runs
+  // both, each on its own copy of the environment, and joins them with the tape's Select: every
+  // value the branches leave different becomes cond ? then : else (a point-dependent int cannot
+  // be chosen so: it becomes an error where it is used). This is the pixel executor's masked
+  // execution done symbolically: `alive_` is the set of points still running here (a 1/0 tape
+  // value), and a break, continue or return (a break out of the function's run-once loop) taken
+  // at some points only records those points' values as an exit of its loop, merged back where
+  // the loop ends (break) or its body ends (continue). A loop's count must still be known.
+  static constexpr uint32_t kAll = Symbol::kNoNode;       // predicate: every point
+  static constexpr uint32_t kNone = Symbol::kNoNode - 1;  // predicate: no point
+  struct Exit {
+    uint32_t points;            // where it was taken (a predicate)
+    std::vector<Symbol> env;    // the values there
+  };
+  struct LoopFrame {
+    uint32_t alive_at_entry;
+    uint32_t alive;             // points not yet gone from this loop (break, or a break past it)
+    std::vector<Exit> breaks;   // this loop's partial breaks, in the order they were taken
+    std::vector<Exit> continues;  // partial continues of the current iteration
+  };
+  uint32_t alive_ = kAll;
+  std::vector<LoopFrame> loops_;
+  int exits_recorded_ = 0;
+
+  uint32_t both(uint32_t a, uint32_t b) {
+    if (a == kNone || b == kNone) return kNone;
+    if (a == kAll) return b;
+    if (b == kAll) return a;
+    return builder_.binary(FieldOp::Min, a, b);
+  }
+  uint32_t either(uint32_t a, uint32_t b) {
+    if (a == kAll || b == kAll) return kAll;
+    if (a == kNone) return b;
+    if (b == kNone) return a;
+    return builder_.binary(FieldOp::Max, a, b);
+  }
+  uint32_t negate(uint32_t a) {
+    if (a == kAll) return kNone;
+    if (a == kNone) return kAll;
+    return builder_.binary(FieldOp::Sub, builder_.constant(1.0f), a);
+  }
+
+  // Value v where `points` hold: t, elsewhere e.
+  Symbol choose(size_t v, uint32_t points, const Symbol& t, const Symbol& e, SourceLoc loc) {
+    if (points == kAll) return t;
+    if (points == kNone) return e;
+    if (t.known == e.known && t.bits == e.bits && t.node == e.node && t.poison == e.poison) return e;
+    // A value one side never set (a temporary of the other branch) is read only where that
+    // branch ran: it keeps the side that has it.
+    const auto unset = [](const Symbol& s) { return !s.known && s.node == Symbol::kNoNode && s.poison < 0; };
+    if (unset(t)) return e;
+    if (unset(e)) return t;
+    if (t.poison >= 0) return t;
+    if (e.poison >= 0) return e;
+    const ValueClass cls = f_.values[v].cls;
+    if (cls == ValueClass::F32 || cls == ValueClass::Bool) {
+      const bool b = cls == ValueClass::Bool;
+      return {false, 0, builder_.select(points, b ? boolOf(t) : floatOf(t), b ? boolOf(e) : floatOf(e))};
+    }
+    poisons_.push_back({loc, "an int chosen by a condition that depends on the field's point has no tape form: "
+                             "a field's point-dependent choices are between floats"});
+    return {false, 0, Symbol::kNoNode, static_cast<int>(poisons_.size()) - 1};
+  }
+
+  // env_ = the exits' values at their points (the first exit taken wins), env_ elsewhere.
+  void mergeExits(const std::vector<Exit>& exits, SourceLoc loc) {
+    for (size_t k = exits.size(); k-- > 0;)
+      for (size_t v = 0; v < env_.size(); ++v) env_[v] = choose(v, exits[k].points, exits[k].env[v], env_[v], loc);
+    if (builder_.size() > kMaxFieldTapeSize)
+      fail(loc, "field '" + f_.name + "' unrolls to more than " + std::to_string(kMaxFieldTapeSize) + " tape operations");
+  }
+
+  // The points `points` take `flow` (a break or continue) with values `env`: they leave.
+  void recordExit(const Outcome& flow, uint32_t points, std::vector<Symbol> env, SourceLoc loc) {
+    const int levels = flow.flow == Flow::Break ? flow.levels : 1;
+    if (levels < 1 || static_cast<size_t>(levels) > loops_.size()) fail(loc, "a break or continue outside a loop");
+    const size_t target = loops_.size() - static_cast<size_t>(levels);
+    if (flow.flow == Flow::Break) {
+      loops_[target].breaks.push_back({points, std::move(env)});
+      for (size_t i = target; i < loops_.size(); ++i) loops_[i].alive = both(loops_[i].alive, negate(points));
+    } else {
+      loops_.back().continues.push_back({points, std::move(env)});
+    }
+    alive_ = both(alive_, negate(points));
+    ++exits_recorded_;
+  }
+
+  Outcome ifNode(const IrNode& n) {
+    const SourceLoc loc = n.inst.loc;
+    const Symbol c = get(n.cond, loc);
+    if (c.poison >= 0) failPoisoned(c);
+    if (c.known) return block(c.bits != 0 ? *n.then_block : *n.else_block);
+    const uint32_t cond = boolNode(n.cond, loc);
+    const uint32_t saved_alive = alive_, result_before = result_;
+    const int exits_before = exits_recorded_;
+    std::vector<Symbol> before = env_;
+    alive_ = both(saved_alive, cond);
+    const Outcome then_flow = block(*n.then_block);
+    std::vector<Symbol> then_env = std::move(env_);
+    const uint32_t then_alive = alive_, then_result = result_;
+    env_ = std::move(before);
+    result_ = result_before;
+    alive_ = both(saved_alive, negate(cond));
+    const Outcome else_flow = block(*n.else_block);
+    const uint32_t else_alive = alive_;
+    const bool then_leaves = then_flow.flow != Flow::Normal, else_leaves = else_flow.flow != Flow::Normal;
+    if (then_result != result_) {
+      if (then_leaves || else_leaves || then_result == Symbol::kNoNode || result_ == Symbol::kNoNode)
+        fail(loc, "field '" + f_.name + "' computes its value in only one branch of this point-dependent 'if'");
+      result_ = builder_.select(cond, then_result, result_);
+    }
+    if (then_leaves && else_leaves && then_flow.flow == else_flow.flow && then_flow.levels == else_flow.levels) {
+      alive_ = saved_alive;  // every point here leaves the same way: the enclosing block sees it whole
+      for (size_t v = 0; v < env_.size(); ++v) env_[v] = choose(v, cond, then_env[v], env_[v], loc);
+      return then_flow;
+    }
+    alive_ = saved_alive;
+    if (then_leaves) recordExit(then_flow, then_alive, then_env, loc);
+    if (else_leaves) recordExit(else_flow, else_alive, env_, loc);
+    if (then_leaves) {
+      alive_ = else_leaves ? kNone : else_alive;  // the else-branch's points go on, with its values
+    } else if (else_leaves) {
+      env_ = std::move(then_env);
+      alive_ = then_alive;
+    } else {
+      for (size_t v = 0; v < env_.size(); ++v) env_[v] = choose(v, cond, then_env[v], env_[v], loc);
+      // Exits taken inside either branch narrowed its points; otherwise every point goes on.
+      alive_ = exits_recorded_ != exits_before ? either(then_alive, else_alive) : saved_alive;
+    }
+    if (builder_.size() > kMaxFieldTapeSize)
+      fail(loc, "field '" + f_.name + "' unrolls to more than " + std::to_string(kMaxFieldTapeSize) + " tape operations");
+    return {};
+  }
+
+  // The tape value of a float symbol (known: a constant) / of a bool symbol (1 or 0).
+  uint32_t floatOf(const Symbol& s) { return s.known ? builder_.constant(asF(s.bits)) : s.node; }
+  uint32_t boolOf(const Symbol& s) { return s.known ? builder_.constant(s.bits != 0 ? 1.0f : 0.0f) : s.node; }
+  // A bool operand's tape value: 1 where it holds, 0 elsewhere.
+  uint32_t boolNode(int v, SourceLoc loc) {
+    const Symbol s = get(v, loc);
+    if (s.poison >= 0) failPoisoned(s);
+    if (!s.known && s.node == Symbol::kNoNode) fail(loc, "this condition has no tape form");
+    return boolOf(s);
+  }
+
   Outcome loop(const IrNode& n) {
+    loops_.push_back({alive_, alive_, {}, {}});
+    const Outcome o = loopIterations(n);
+    // The points that broke out part-way take the values they had then.
+    LoopFrame frame = std::move(loops_.back());
+    loops_.pop_back();
+    mergeExits(frame.breaks, n.inst.loc);
+    // Points that left past this loop (a return from inside it) stay gone.
+    alive_ = frame.alive_at_entry;
+    if (!loops_.empty()) alive_ = both(alive_, loops_.back().alive);
+    return o;
+  }
+
+  Outcome loopIterations(const IrNode& n) {
     for (;;) {
       Outcome c = block(*n.cond_block);
       if (c.flow != Flow::Normal) return c;
       if (n.cond >= 0 && !decide(n.cond, n.inst.loc, "this loop's condition")) return {};
       Outcome b = block(*n.body_block);
+      // A break of every point still running, after some continued: a partial break, the
+      // others go on.
+      if (b.flow == Flow::Break && !loops_.back().continues.empty()) {
+        recordExit(b, alive_, env_, n.inst.loc);
+        b = {};
+      }
+      // The points that continued part-way rejoin at the step, with their values.
+      mergeExits(loops_.back().continues, n.inst.loc);
+      loops_.back().continues.clear();
+      alive_ = loops_.back().alive;
       if (b.flow == Flow::Break) return b.levels > 1 ? Outcome{Flow::Break, b.levels - 1} : Outcome{};
       Outcome s = block(*n.step_block);
       if (s.flow == Flow::Break) return s.levels > 1 ? Outcome{Flow::Break, s.levels - 1} : Outcome{};
@@ -187,9 +356,26 @@ class TapeTranslator {
       case Op::ShadeOut: result_ = node(in.a, loc); return {};
       case Op::XLoadVertexAt: return {};  // lowering's zero interpolator_data: unused by fields
       case Op::Mov: set(in.dst, get(in.a, loc)); return {};
-      case Op::Sel:
-        set(in.dst, get(decide(in.a, loc, "this choice (?:)") ? in.b : in.c, loc));
+      case Op::Sel: {
+        const Symbol c = get(in.a, loc);
+        if (c.poison >= 0) failPoisoned(c);
+        if (c.known) {
+          set(in.dst, get(c.bits != 0 ? in.b : in.c, loc));
+          return {};
+        }
+        // A point-dependent choice: between floats or bools, on the tape.
+        const ValueClass cls = f_.values[static_cast<size_t>(in.dst)].cls;
+        if (cls != ValueClass::F32 && cls != ValueClass::Bool)
+          fail(loc, "this choice (?:) depends on the field's point and picks an int: a field's point-dependent "
+                    "choices are between floats");
+        const Symbol t = get(in.b, loc), e = get(in.c, loc);
+        if (t.poison >= 0) failPoisoned(t);
+        if (e.poison >= 0) failPoisoned(e);
+        const uint32_t cond = boolNode(in.a, loc);
+        setNode(in.dst, builder_.select(cond, cls == ValueClass::Bool ? boolOf(t) : floatOf(t),
+                                        cls == ValueClass::Bool ? boolOf(e) : floatOf(e)), loc);
         return {};
+      }
       default: break;
     }
     const bool pure = static_cast<int>(in.op) < static_cast<int>(Op::Mov) && in.op != Op::CrossSign;
@@ -263,9 +449,23 @@ class TapeTranslator {
         setNode(in.dst, builder_.unary(FieldOp::Exp, builder_.binary(FieldOp::Mul, node(in.b, loc), log_x)), loc);
         return {};
       }
-      // Point-dependent comparisons and logic: fine until something branches on them.
-      case Op::FLt: case Op::FLe: case Op::FEq: case Op::FNe: case Op::BAnd: case Op::BOr: case Op::BNot:
-        set(in.dst, {false, 0, Symbol::kNoNode});
+      // Point-dependent comparisons and logic: 1 where they hold, 0 elsewhere (C's meaning: a
+      // comparison with NaN is false, except !=).
+      case Op::FLt: binary(FieldOp::Less); return {};
+      case Op::FLe: binary(FieldOp::LessEq); return {};
+      case Op::FEq: case Op::FNe: {
+        const uint32_t a = node(in.a, loc), b = node(in.b, loc);
+        const uint32_t eq = builder_.binary(FieldOp::Min, builder_.binary(FieldOp::LessEq, a, b),
+                                            builder_.binary(FieldOp::LessEq, b, a));
+        setNode(in.dst, in.op == Op::FEq ? eq : builder_.binary(FieldOp::Sub, builder_.constant(1.0f), eq), loc);
+        return {};
+      }
+      case Op::BAnd: case Op::BOr:
+        setNode(in.dst, builder_.binary(in.op == Op::BAnd ? FieldOp::Min : FieldOp::Max, boolNode(in.a, loc),
+                                        boolNode(in.b, loc)), loc);
+        return {};
+      case Op::BNot:
+        setNode(in.dst, builder_.binary(FieldOp::Sub, builder_.constant(1.0f), boolNode(in.a, loc)), loc);
         return {};
       default: break;
     }

@@ -1,9 +1,11 @@
 // HyperFun to FieldTape: runs a parsed model at compile time, symbolically (hyperfun_reader.h).
 //
 // Statements execute in order on an environment of Reals (hyperfun_library.h): numbers known
-// now, or values on the tape. Whatever depends on the point x ends up as tape instructions;
-// conditions and indexes must be known now, so `if` and `while` are resolved here (a while loop
-// is unrolled) and a condition that depends on x is an error. An object call compiles the
+// now, or values on the tape. Whatever depends on the point x ends up as tape instructions.
+// An `if` whose condition is known now runs one branch; one whose condition depends on x runs
+// both, each on its own copy of the environment, and joins them with the tape's Select: every
+// variable and array item the branches leave different becomes `cond ? then : else`. A `while`
+// is unrolled, so its condition and every index must be known now. An object call compiles the
 // callee afresh on copies of the caller's arrays (HyperFun passes x and a by value and copies s
 // back), which inlines it; the builder shares what the copies have in common.
 #include "compiler/field/hyperfun_reader.h"
@@ -37,7 +39,21 @@ struct Frame {
   const ObjectDef& def;
   std::map<std::string, ArrayValue> arrays;
   std::map<std::string, Real> variables;
+  // Variables assigned in one branch only of an `if` that depends on x: the if's position.
+  std::map<std::string, std::pair<int, int>> one_branch;
 };
+
+// A condition's value: a Real that is 0 or 1 when `is_bool` (a comparison, and, or, not), or
+// any real (HyperFun's truth: |v| >= EPS).
+struct Truth {
+  Real value;
+  bool is_bool = false;
+};
+
+bool sameReal(const Real& a, const Real& b) {
+  return a.is_known == b.is_known && (a.is_known ? (a.value == b.value || (a.value != a.value && b.value != b.value))
+                                                 : a.id == b.id);
+}
 
 double hfRound(double v) {
   const double c = std::ceil(v);
@@ -54,7 +70,7 @@ std::string formatNumber(double v) {
 class Compiler {
  public:
   Compiler(const SourceFile& file, const Program& program, DiagnosticLog& log, FieldTapeBuilder& builder)
-      : file_(file), program_(program), log_(log), alg_(builder) {}
+      : file_(file), program_(program), log_(log), builder_(builder), alg_(builder) {}
 
   TapeAlgebra& algebra() { return alg_; }
 
@@ -62,7 +78,7 @@ class Compiler {
   // the callee's s back into the caller's).
   Real compileObject(size_t index, std::vector<Real> x, std::vector<Real> a, std::vector<Real>& s) {
     const ObjectDef& def = program_.objects[index];
-    Frame frame{index, def, {}, {}};
+    Frame frame{index, def, {}, {}, {}};
     frame.arrays["x"] = ArrayValue(std::move(x));
     frame.arrays["a"] = ArrayValue(std::move(a));
     frame.arrays["s"] = ArrayValue(s);
@@ -101,6 +117,7 @@ class Compiler {
                quoted(s.name) + " is an array: assign an item ('" + s.name + "[1] = ...;') or a list ('" + s.name +
                    " = [1, 2, 3];')");
         f.variables[s.name] = real(f, s.value);
+        f.one_branch.erase(s.name);
         return;
       }
       case Stmt::Kind::AssignElement: {
@@ -122,9 +139,19 @@ class Compiler {
         }
         return;
       }
-      case Stmt::Kind::If:
-        run(f, condition(f, s) ? s.body : s.else_body);
+      case Stmt::Kind::If: {
+        const Truth t = conditionTruth(f, s.value);
+        if (t.value.is_known) {
+          run(f, truth(t.value.value) ? s.body : s.else_body);
+          return;
+        }
+        const Real cond = truthOf(t);
+        Frame otherwise = f;
+        run(f, s.body);
+        run(otherwise, s.else_body);
+        join(f, otherwise, cond, s);
         return;
+      }
       case Stmt::Kind::While: {
         int iterations = 0;
         while (condition(f, s)) {
@@ -146,48 +173,104 @@ class Compiler {
   }
 
   // --- Conditions ----------------------------------------------------------------------------
+  // A while loop's condition: it must be known now (the loop is unrolled).
   bool condition(Frame& f, const Stmt& s) {
-    const std::optional<double> v = conditionValue(f, s.value);
-    if (!v) {
-      const bool is_if = s.kind == Stmt::Kind::If;
+    const Truth t = conditionTruth(f, s.value);
+    if (!t.value.is_known)
       fail(s.value_line, s.value_col,
-           std::string("condition depends on the point x: ") +
-               (is_if ? "an 'if' that takes different branches at different points"
-                      : "a 'while' that loops a different number of times at different points") +
-               " is not supported yet (primflow's field tapes have no branches)");
-    }
-    return truth(*v);
+           "condition depends on the point x: a 'while' that loops a different number of times at different points "
+           "is not supported (loops are unrolled when the model is compiled; an 'if' on x is fine)");
+    return truth(t.value.value);
   }
 
-  // A condition's value as HyperFun computes it (1 or 0 for comparisons), or nullopt when it
-  // depends on the point.
-  std::optional<double> conditionValue(Frame& f, const Expr& e) {
+  // A condition's value as HyperFun computes it: comparisons give 1 or 0 (= and /= within
+  // EPS), and/or/not read their operands' truth. Known operands fold now, in double; the rest
+  // become the tape's Less/LessEq (0 or 1 per point) combined by min, max and 1 - v.
+  Truth conditionTruth(Frame& f, const Expr& e) {
+    TapeAlgebra& m = alg_;
     if (e.kind == Expr::Kind::Unary && e.op == Op::Not) {
-      const auto v = conditionValue(f, e.args[0]);
-      if (!v) return std::nullopt;
-      return truth(*v) ? 0.0 : 1.0;
+      const Truth a = conditionTruth(f, e.args[0]);
+      if (a.value.is_known) return {Real::known(truth(a.value.value) ? 0.0 : 1.0), true};
+      return {m.sub(Real::known(1.0), truthOf(a)), true};
     }
     if (e.kind == Expr::Kind::Binary && e.op >= Op::Less) {
-      const auto a = conditionValue(f, e.args[0]);
-      const auto b = conditionValue(f, e.args[1]);
-      if (!a || !b) return std::nullopt;
-      bool r = false;
-      switch (e.op) {
-        case Op::Less: r = *a < *b; break;
-        case Op::LessEq: r = *a <= *b; break;
-        case Op::Greater: r = *a > *b; break;
-        case Op::GreaterEq: r = *a >= *b; break;
-        case Op::Equal: r = std::fabs(*a - *b) < kEps; break;
-        case Op::NotEqual: r = std::fabs(*a - *b) >= kEps; break;
-        case Op::And: r = truth(*a) && truth(*b); break;
-        case Op::Or: r = truth(*a) || truth(*b); break;
-        default: break;
+      const Truth ta = conditionTruth(f, e.args[0]);
+      const Truth tb = conditionTruth(f, e.args[1]);
+      const Real a = ta.value, b = tb.value;
+      if (a.is_known && b.is_known) {
+        bool r = false;
+        switch (e.op) {
+          case Op::Less: r = a.value < b.value; break;
+          case Op::LessEq: r = a.value <= b.value; break;
+          case Op::Greater: r = a.value > b.value; break;
+          case Op::GreaterEq: r = a.value >= b.value; break;
+          case Op::Equal: r = std::fabs(a.value - b.value) < kEps; break;
+          case Op::NotEqual: r = std::fabs(a.value - b.value) >= kEps; break;
+          case Op::And: r = truth(a.value) && truth(b.value); break;
+          case Op::Or: r = truth(a.value) || truth(b.value); break;
+          default: break;
+        }
+        return {Real::known(r ? 1.0 : 0.0), true};
       }
-      return r ? 1.0 : 0.0;
+      switch (e.op) {
+        case Op::Less: return {compare(FieldOp::Less, a, b), true};
+        case Op::LessEq: return {compare(FieldOp::LessEq, a, b), true};
+        case Op::Greater: return {compare(FieldOp::Less, b, a), true};
+        case Op::GreaterEq: return {compare(FieldOp::LessEq, b, a), true};
+        case Op::Equal: return {compare(FieldOp::Less, m.abs(m.sub(a, b)), Real::known(kEps)), true};
+        case Op::NotEqual: return {compare(FieldOp::LessEq, Real::known(kEps), m.abs(m.sub(a, b))), true};
+        case Op::And: return {m.min(truthOf(ta), truthOf(tb)), true};
+        case Op::Or: return {m.max(truthOf(ta), truthOf(tb)), true};
+        default: fail(e, "unexpected operator " + opSpelling(e.op));
+      }
     }
-    const Real v = real(f, e);
-    if (!v.is_known) return std::nullopt;
-    return v.value;
+    return {real(f, e), false};
+  }
+
+  // 1 where the condition holds, 0 elsewhere.
+  Real truthOf(const Truth& t) {
+    if (t.is_bool) return t.value;
+    if (t.value.is_known) return Real::known(truth(t.value.value) ? 1.0 : 0.0);
+    return compare(FieldOp::LessEq, Real::known(kEps), alg_.abs(t.value));
+  }
+
+  Real compare(FieldOp op, Real a, Real b) {
+    return Real::onTape(builder_.binary(op, alg_.materialize(a), alg_.materialize(b)));
+  }
+
+  Real select(Real cond, Real if_true, Real if_false) {
+    if (sameReal(if_true, if_false)) return if_true;
+    return Real::onTape(builder_.select(alg_.materialize(cond), alg_.materialize(if_true), alg_.materialize(if_false)));
+  }
+
+  // After an `if` on x: `f` holds what the then-branch left, `otherwise` what the else-branch
+  // left; f becomes cond ? then : else, value by value. A variable only one branch assigned
+  // (and that had no value before) has no value at the points of the other: reading it later
+  // is an error naming the if.
+  void join(Frame& f, Frame& otherwise, Real cond, const Stmt& s) {
+    for (auto it = f.variables.begin(); it != f.variables.end();) {
+      auto other = otherwise.variables.find(it->first);
+      if (other == otherwise.variables.end()) {
+        f.one_branch[it->first] = {s.line, s.col};
+        it = f.variables.erase(it);
+        continue;
+      }
+      it->second = select(cond, it->second, other->second);
+      ++it;
+    }
+    for (const auto& [name, value] : otherwise.variables)
+      if (!f.variables.count(name) && !f.one_branch.count(name)) f.one_branch[name] = {s.line, s.col};
+    for (const auto& [name, at] : otherwise.one_branch)
+      if (!f.variables.count(name)) f.one_branch.emplace(name, at);
+    for (auto& [name, arr] : f.arrays) {
+      const ArrayValue& other = otherwise.arrays.at(name);
+      for (size_t k = 0; k < arr.items.size(); ++k) {
+        if (arr.assigned[k] && other.assigned[k])
+          arr.items[k] = select(cond, arr.items[k], other.items[k]);
+        else
+          arr.assigned[k] = 0;  // assigned by one branch only: as if never assigned
+      }
+    }
   }
 
   // --- Expressions ---------------------------------------------------------------------------
@@ -253,6 +336,9 @@ class Compiler {
   Real variable(Frame& f, const Expr& e) {
     auto it = f.variables.find(e.name);
     if (it != f.variables.end()) return it->second;
+    if (auto one = f.one_branch.find(e.name); one != f.one_branch.end())
+      fail(e, quoted(e.name) + " is assigned in only one branch of the 'if' at line " + std::to_string(one->second.first) +
+                  ", whose condition depends on the point x: assign it in both branches, or before the 'if'");
     if (findArray(f, e.name))
       fail(e, quoted(e.name) + " is an array: use one of its items ('" + e.name + "[1]'), or pass it to a function");
     if (objectIndex(e.name)) fail(e, quoted(e.name) + " is an object: call it ('" + e.name + "(x, a)')");
@@ -351,6 +437,7 @@ class Compiler {
   const SourceFile& file_;
   const Program& program_;
   DiagnosticLog& log_;
+  FieldTapeBuilder& builder_;
   TapeAlgebra alg_;
   long statements_ = 0;
 };

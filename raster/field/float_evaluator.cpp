@@ -20,7 +20,8 @@ void buildSlotProgram(const FieldTape& tape, SlotProgram& p, SlotProgramScratch&
     const FieldInstr& in = tape.instrs[i];
     const int arity = fieldOpArity(in.op);
     if (arity >= 1) last_use[in.a] = i;
-    if (arity == 2) last_use[in.b] = i;
+    if (arity >= 2) last_use[in.b] = i;
+    if (arity == 3) last_use[in.c] = i;
   }
   last_use[tape.result] = static_cast<uint32_t>(n);
   std::vector<uint16_t>& slot_of = scratch.slot_of;
@@ -33,7 +34,8 @@ void buildSlotProgram(const FieldTape& tape, SlotProgram& p, SlotProgramScratch&
     const int arity = fieldOpArity(in.op);
     FloatSlotInstr s{in.op, 0, 0, 0, in.value};
     if (arity >= 1) s.a = slot_of[in.a];
-    if (arity == 2) s.b = slot_of[in.b];
+    if (arity >= 2) s.b = slot_of[in.b];
+    if (arity == 3) s.c = slot_of[in.c];
     // The result takes a slot before the operands read for the last time free theirs: a result
     // never shares a slot with an operand, so the SIMD loops may take them as restrict.
     if (free_slots.empty()) {
@@ -44,7 +46,8 @@ void buildSlotProgram(const FieldTape& tape, SlotProgram& p, SlotProgramScratch&
       free_slots.pop_back();
     }
     if (arity >= 1 && last_use[in.a] == i) free_slots.push_back(s.a);
-    if (arity == 2 && last_use[in.b] == i && in.b != in.a) free_slots.push_back(s.b);
+    if (arity >= 2 && last_use[in.b] == i && in.b != in.a) free_slots.push_back(s.b);
+    if (arity == 3 && last_use[in.c] == i && in.c != in.a && in.c != in.b) free_slots.push_back(s.c);
     slot_of[i] = s.out;
     // A value nobody reads (only possible for the result) keeps its slot to the end.
     p.code.push_back(s);

@@ -17,7 +17,8 @@ namespace pf::field {
 struct FloatSlotInstr {
   FieldOp op;
   uint16_t out, a, b;
-  float value;  // Const
+  float value;     // Const
+  uint16_t c = 0;  // Select's third operand
 };
 
 // A tape as instructions on slots, a slot reused once the last reader of its value has run, and

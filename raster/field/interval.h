@@ -61,5 +61,10 @@ Interval intervalMul(Interval a, Interval b);
 Interval intervalDiv(Interval a, Interval b);
 Interval intervalMin(Interval a, Interval b);
 Interval intervalMax(Interval a, Interval b);
+// The smallest interval holding both (either may be NaN, so the whole line if either is).
+inline Interval intervalHull(Interval a, Interval b) {
+  if (a.isWhole() || b.isWhole()) return Interval::whole();
+  return {a.lo < b.lo ? a.lo : b.lo, a.hi > b.hi ? a.hi : b.hi};
+}
 
 }  // namespace pf::field

@@ -1,4 +1,4 @@
-// IntervalEvaluator: one pass over the tape in interval arithmetic, noting min/max choices.
+// IntervalEvaluator: one pass over the tape in interval arithmetic, noting min/max/select choices.
 #include "raster/field/interval_evaluator.h"
 
 namespace pf::field {
@@ -9,6 +9,24 @@ static Choice minChoice(Interval a, Interval b) {
   if (a.isWhole() || b.isWhole()) return Choice::Both;
   if (a.hi <= b.lo) return Choice::Left;
   if (b.hi <= a.lo) return Choice::Right;
+  return Choice::Both;
+}
+
+// Less / LessEq over a box: 1 or 0 where the comparison is decided, [0, 1] elsewhere (an
+// interval that may be NaN decides nothing: a NaN compares false).
+static Interval comparison(Interval a, Interval b, bool or_equal) {
+  if (!a.isWhole() && !b.isWhole()) {
+    if (or_equal ? a.hi <= b.lo : a.hi < b.lo) return Interval::point(1.0f);
+    if (or_equal ? a.lo > b.hi : a.lo >= b.hi) return Interval::point(0.0f);
+  }
+  return {0.0f, 1.0f};
+}
+
+// Which operand a Select takes over the box: its condition's interval excludes 0, or is 0.
+static Choice selectChoice(Interval cond) {
+  if (cond.isWhole()) return Choice::Both;
+  if (cond.lo > 0.0f || cond.hi < 0.0f) return Choice::Left;
+  if (cond.lo == 0.0f && cond.hi == 0.0f) return Choice::Right;
   return Choice::Both;
 }
 
@@ -45,6 +63,14 @@ Interval IntervalEvaluator::evaluate(Interval x, Interval y, Interval z, std::ve
         // max(a, b) is a where b <= a everywhere: minChoice(b, a) says Left exactly then.
         if (choices) (*choices)[i] = minChoice(v[in.b], v[in.a]);
         break;
+      case FieldOp::Less: v[i] = comparison(v[in.a], v[in.b], false); break;
+      case FieldOp::LessEq: v[i] = comparison(v[in.a], v[in.b], true); break;
+      case FieldOp::Select: {
+        const Choice c = selectChoice(v[in.a]);
+        if (choices) (*choices)[i] = c;
+        v[i] = c == Choice::Left ? v[in.b] : c == Choice::Right ? v[in.c] : intervalHull(v[in.b], v[in.c]);
+        break;
+      }
     }
   }
   return code.empty() ? Interval::whole() : v[tape_->result];

@@ -45,7 +45,7 @@ bool rayPolynomials(const FieldTape& tape, const std::array<double, 3>& origin, 
   for (size_t i = 0; i < tape.instrs.size(); ++i) {
     const FieldInstr& in = tape.instrs[i];
     const int arity = fieldOpArity(in.op);
-    if ((arity >= 1 && !valid[in.a]) || (arity == 2 && !valid[in.b])) {
+    if ((arity >= 1 && !valid[in.a]) || (arity >= 2 && !valid[in.b]) || (arity == 3 && !valid[in.c])) {
       valid[i] = 0;
       continue;
     }
@@ -55,7 +55,7 @@ bool rayPolynomials(const FieldTape& tape, const std::array<double, 3>& origin, 
     bool ok = true;
     // Operations without a polynomial meaning apply only to constants.
     auto onConstant = [&](double value) {
-      if (a.degree != 0 || (arity == 2 && b.degree != 0)) return false;
+      if (a.degree != 0 || (arity >= 2 && b.degree != 0)) return false;
       r = constantPoly(value);
       return true;
     };
@@ -98,6 +98,12 @@ bool rayPolynomials(const FieldTape& tape, const std::array<double, 3>& origin, 
       case FieldOp::Atan: ok = onConstant(std::atan(a.c[0])); break;
       case FieldOp::Min: ok = onConstant(std::min(a.c[0], b.c[0])); break;
       case FieldOp::Max: ok = onConstant(std::max(a.c[0], b.c[0])); break;
+      case FieldOp::Less: ok = onConstant(a.c[0] < b.c[0] ? 1.0 : 0.0); break;
+      case FieldOp::LessEq: ok = onConstant(a.c[0] <= b.c[0] ? 1.0 : 0.0); break;
+      case FieldOp::Select:  // a condition constant along the ray picks one polynomial
+        ok = a.degree == 0;
+        if (ok) r = a.c[0] != 0.0 ? b : v[in.c];
+        break;
     }
     if (!ok) {
       if (stop_at_invalid) return false;
@@ -123,9 +129,10 @@ std::vector<int> polynomialDegrees(const FieldTape& tape) {
   for (size_t i = 0; i < tape.instrs.size(); ++i) {
     const FieldInstr& in = tape.instrs[i];
     const int a = fieldOpArity(in.op) >= 1 ? degree[in.a] : 0;
-    const int b = fieldOpArity(in.op) == 2 ? degree[in.b] : 0;
+    const int b = fieldOpArity(in.op) >= 2 ? degree[in.b] : 0;
+    const int c = fieldOpArity(in.op) == 3 ? degree[in.c] : 0;
     int d = -1;
-    if (a >= 0 && b >= 0) {
+    if (a >= 0 && b >= 0 && c >= 0) {
       switch (in.op) {
         case FieldOp::X: case FieldOp::Y: case FieldOp::Z: d = 1; break;
         case FieldOp::Const: d = 0; break;
@@ -134,7 +141,7 @@ std::vector<int> polynomialDegrees(const FieldTape& tape) {
         case FieldOp::Add: case FieldOp::Sub: d = std::max(a, b); break;
         case FieldOp::Mul: d = a + b; break;
         case FieldOp::Div: d = b == 0 ? a : -1; break;
-        default: d = (a == 0 && b == 0) ? 0 : -1; break;  // constants only (folded by the builder)
+        default: d = (a == 0 && b == 0 && c == 0) ? 0 : -1; break;  // constants only (folded by the builder)
       }
     }
     degree[i] = d;

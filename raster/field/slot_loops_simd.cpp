@@ -59,6 +59,7 @@ void RunFloatSlotsWith(D d, const FloatSlotInstr* code, size_t count, float* bas
     float* HWY_RESTRICT o = base + static_cast<size_t>(in.out) * FloatEvaluator::kBatch;
     const float* HWY_RESTRICT a = base + static_cast<size_t>(in.a) * FloatEvaluator::kBatch;
     const float* HWY_RESTRICT b = base + static_cast<size_t>(in.b) * FloatEvaluator::kBatch;
+    const float* HWY_RESTRICT c = base + static_cast<size_t>(in.c) * FloatEvaluator::kBatch;
     switch (in.op) {
       case FieldOp::X: case FieldOp::Y: case FieldOp::Z: {
         const float* src = in.op == FieldOp::X ? x : in.op == FieldOp::Y ? y : z;
@@ -107,6 +108,14 @@ void RunFloatSlotsWith(D d, const FloatSlotInstr* code, size_t count, float* bas
           r = hn::IfThenElse(pick_a, va, vb);
           break;
         }
+        case FieldOp::Less: case FieldOp::LessEq: {  // ordered compares: false for NaN, as C's
+          const auto vb = hn::LoadU(d, b + j);
+          r = hn::IfThenElseZero(in.op == FieldOp::Less ? hn::Lt(va, vb) : hn::Le(va, vb), hn::Set(d, 1.0f));
+          break;
+        }
+        case FieldOp::Select:  // a != 0 (a NaN condition counts as true, as in C)
+          r = hn::IfThenElse(hn::Eq(va, hn::Zero(d)), hn::LoadU(d, c + j), hn::LoadU(d, b + j));
+          break;
         default: break;
       }
       hn::StoreU(r, d, o + j);
@@ -139,6 +148,7 @@ void RunGradientSlotsWith(D d, const FloatSlotInstr* code, size_t count, float* 
     float* HWY_RESTRICT o = base + static_cast<size_t>(in.out) * 4 * K;
     const float* HWY_RESTRICT a = base + static_cast<size_t>(in.a) * 4 * K;
     const float* HWY_RESTRICT b = base + static_cast<size_t>(in.b) * 4 * K;
+    const float* HWY_RESTRICT c = base + static_cast<size_t>(in.c) * 4 * K;
     if (in.op == FieldOp::X || in.op == FieldOp::Y || in.op == FieldOp::Z) {
       const int axis = in.op == FieldOp::X ? 0 : in.op == FieldOp::Y ? 1 : 2;
       const float* src = axis == 0 ? x : axis == 1 ? y : z;
@@ -152,6 +162,12 @@ void RunGradientSlotsWith(D d, const FloatSlotInstr* code, size_t count, float* 
       if (in.op == FieldOp::Const) {
         r = hn::Set(d, in.value);
         dx = dy = dz = zero;
+      } else if (in.op == FieldOp::Select) {  // the chosen operand's value and derivatives
+        const auto take_c = hn::Eq(hn::LoadU(d, a + j), zero);
+        r = hn::IfThenElse(take_c, hn::LoadU(d, c + j), hn::LoadU(d, b + j));
+        dx = hn::IfThenElse(take_c, hn::LoadU(d, c + K + j), hn::LoadU(d, b + K + j));
+        dy = hn::IfThenElse(take_c, hn::LoadU(d, c + 2 * K + j), hn::LoadU(d, b + 2 * K + j));
+        dz = hn::IfThenElse(take_c, hn::LoadU(d, c + 3 * K + j), hn::LoadU(d, b + 3 * K + j));
       } else {
         const V av = hn::LoadU(d, a + j), ax = hn::LoadU(d, a + K + j), ay = hn::LoadU(d, a + 2 * K + j),
                 az = hn::LoadU(d, a + 3 * K + j);
@@ -210,6 +226,10 @@ void RunGradientSlotsWith(D d, const FloatSlotInstr* code, size_t count, float* 
               dz = hn::Mul(hn::Sub(az, hn::Mul(r, bz)), inv);
               break;
             }
+            case FieldOp::Less: case FieldOp::LessEq:  // a step: derivative 0 (where defined)
+              r = hn::IfThenElseZero(in.op == FieldOp::Less ? hn::Lt(av, bv) : hn::Le(av, bv), one);
+              dx = dy = dz = zero;
+              break;
             default: {  // Min, Max: the side the float form returns, value and derivatives
               const auto wins = in.op == FieldOp::Min ? hn::Le(av, bv) : hn::Ge(av, bv);
               const auto take_a = hn::AndNot(hn::IsNaN(av), hn::Or(wins, hn::IsNaN(bv)));

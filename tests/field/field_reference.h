@@ -37,7 +37,7 @@ inline double evaluateDouble(const FieldTape& tape, double x, double y, double z
   for (size_t i = 0; i < tape.instrs.size(); ++i) {
     const FieldInstr& in = tape.instrs[i];
     const double a = fieldOpArity(in.op) >= 1 ? v[in.a] : 0.0;
-    const double b = fieldOpArity(in.op) == 2 ? v[in.b] : 0.0;
+    const double b = fieldOpArity(in.op) >= 2 ? v[in.b] : 0.0;
     double r = 0.0;
     switch (in.op) {
       case FieldOp::X: r = x; break;
@@ -59,6 +59,9 @@ inline double evaluateDouble(const FieldTape& tape, double x, double y, double z
       case FieldOp::Div: r = a / b; break;
       case FieldOp::Min: r = dmin(a, b); break;
       case FieldOp::Max: r = dmax(a, b); break;
+      case FieldOp::Less: r = a < b ? 1.0 : 0.0; break;
+      case FieldOp::LessEq: r = a <= b ? 1.0 : 0.0; break;
+      case FieldOp::Select: r = a != 0.0 ? b : v[in.c]; break;
     }
     v[i] = r;
   }

@@ -145,7 +145,7 @@ TEST(FieldUnit, UnsupportedValuesAreErrorsWhereUsed) {
   EXPECT_NE(compileError(source, {1.0f}).find("f.pfl:2:23: error: 'floor (and fract, mod)' of a value that depends"),
             std::string::npos) << compileError(source, {1.0f});
   // An error inside a library function also names the field that called it.
-  const std::string in_library = compileError("field float g(point p) {\n  return hfSign(p.x);\n}\n");
+  const std::string in_library = compileError("field float g(point p) {\n  return hfInt(p.x);\n}\n");
   EXPECT_NE(in_library.find("<stdlib>/hyperfun.pfl:"), std::string::npos) << in_library;
   EXPECT_NE(in_library.find("f.pfl:1:1: note: in field 'g', through the functions it calls"), std::string::npos) << in_library;
 }
@@ -200,11 +200,64 @@ struct BadField {
   const char* expected;
 };
 
+// Branches on the point: both sides run, joined by the tape's Select -- ifs, ?:, && || !, and
+// break / continue / return taken at some points only (the masked execution of the pixel
+// executor, done while compiling). Each against the same control flow written in C++.
+TEST(FieldUnit, PointDependentBranchesBecomeSelects) {
+  expectMatches(compileOk("field float f(point p) {\n  if (p.x > 0.0) { return 1.0; }\n  return -1.0;\n}\n"),
+                [](double x, double, double) { return x > 0 ? 1.0 : -1.0; }, 0.0);
+  expectMatches(compileOk("field float f(point p) { return p.x > 0.0 ? p.y : p.z; }"),
+                [](double x, double y, double z) { return x > 0 ? y : z; }, 0.0);
+  expectMatches(compileOk("field float f(point p) {\n"
+                          "  if (p.x > 0.0 && !(p.y > 0.5) || p.z <= -1.0) { return p.x * p.y; }\n"
+                          "  else if (p.x == p.y || p.y != p.y) { return 7.0; }\n"
+                          "  return p.z;\n}\n"),
+                [](double x, double y, double z) { return (x > 0 && !(y > 0.5)) || z <= -1 ? x * y : z; }, 1e-6);
+  // An early return from inside a loop of a function: a break out of two loops at some points.
+  expectMatches(compileOk("float g(point p) {\n  float s = 0.0;\n"
+                          "  for (int i = 0; i < 5; i += 1) {\n    if (p.x < float(i) - 1.5) { return s; }\n"
+                          "    s += p.y;\n  }\n  return -s;\n}\n"
+                          "field float f(point p) { return g(p) + 1.0; }\n"),
+                [](double x, double y, double) {
+                  double s = 0;
+                  for (int i = 0; i < 5; ++i) {
+                    if (x < i - 1.5) return s + 1;
+                    s += y;
+                  }
+                  return -s + 1;
+                });
+  // continue at some points; then a continue before a break of the rest.
+  expectMatches(compileOk("field float f(point p) {\n  float s = 0.0;\n"
+                          "  for (int i = 0; i < 4; i += 1) {\n    if (p.x > float(i) - 2.0) { continue; }\n"
+                          "    s += p.y * float(i + 1);\n  }\n  return s;\n}\n"),
+                [](double x, double y, double) {
+                  double s = 0;
+                  for (int i = 0; i < 4; ++i) {
+                    if (x > i - 2.0) continue;
+                    s += y * (i + 1);
+                  }
+                  return s;
+                });
+  expectMatches(compileOk("field float f(point p) {\n  float s = 0.0;\n"
+                          "  for (int i = 0; i < 3; i += 1) {\n    s += 1.0;\n    if (p.x > 0.0) { continue; }\n"
+                          "    break;\n  }\n  return s;\n}\n"),
+                [](double x, double, double) { return x > 0 ? 3.0 : 1.0; }, 0.0);
+  // The unchosen side's inf never reaches the value: a guarded division, at the guard itself.
+  const FieldTape guarded = compileOk("field float f(point p) { return p.x != 0.0 ? 1.0 / p.x : 0.0; }");
+  EXPECT_EQ(testing::evaluateDouble(guarded, 0.0, 0.0, 0.0), 0.0);
+  EXPECT_EQ(testing::evaluateDouble(guarded, 0.5, 0.0, 0.0), 2.0);
+  EXPECT_EQ(countOps(guarded, FieldOp::Select), 1u);
+  // A value assigned in one branch only keeps its earlier value elsewhere.
+  expectMatches(compileOk("field float f(point p) {\n  float r = p.z;\n  if (p.x < p.y) { r = p.x; }\n  return r;\n}\n"),
+                [](double x, double y, double z) { return x < y ? x : z; }, 0.0);
+}
+
 TEST(FieldUnit, WhatATapeCannotHoldIsAnErrorAtItsLine) {
   const BadField cases[] = {
-      {"field float f(point p) {\n  if (p.x > 0.0) { return 1.0; }\n  return -1.0;\n}\n", {},
-       "f.pfl:2:3: error: this 'if' condition depends on the field's point"},
-      {"field float f(point p) {\n  return p.x > 0.0 ? 1.0 : p.y;\n}\n", {}, "f.pfl:2:20: error: this choice (?:) depends on the field's point"},
+      {"field float f(point p) {\n  int k = p.x > 0.0 ? 1 : 2;\n  return float(k);\n}\n", {},
+       "f.pfl:2:21: error: this choice (?:) depends on the field's point and picks an int"},
+      {"field float f(point p) {\n  int k = 1;\n  if (p.x > 0.0) { k = 2; }\n  return float(k);\n}\n", {},
+       "error: an int chosen by a condition that depends on the field's point has no tape form"},
       {"field float f(point p) {\n  return floor(p.x);\n}\n", {}, "f.pfl:2:10: error: 'floor (and fract, mod)' of a value that depends on the field's point has no tape form"},
       {"field float f(point p) {\n  return sign(p.x);\n}\n", {}, "error: 'sign' of a value that depends on the field's point"},
       {"field float f(point p) {\n  return noise(p);\n}\n", {}, "error: 'noise' of a value"},

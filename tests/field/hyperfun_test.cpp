@@ -240,10 +240,8 @@ TEST(HyperFun, IfAndWhileResolveWhenTheModelCompiles) {
             "m.hf:1:16: error: 3 parameters given, but 'my_model' has a[2]");
 }
 
-TEST(HyperFun, APointDependentConditionIsRejectedAtTheCondition) {
-  expectHas(compileError(model("r = 1;\nif x[1] > 0 then r = 2; endif;\nmy_model = r;")),
-            "m.hf:3:4: error: condition depends on the point x: an 'if' that takes different branches at "
-            "different points is not supported yet (primflow's field tapes have no branches)");
+// (An `if` on x compiles to the tape's Select: tests/field/point_choice_test.cpp.)
+TEST(HyperFun, APointDependentLoopIsRejectedAtTheCondition) {
   expectHas(compileError(model("r = x[2];\nwhile r < 3 loop r = r + 1; endloop;\nmy_model = r;")),
             "m.hf:3:7: error: condition depends on the point x: a 'while'");
   expectHas(compileError(model("i = 0;\nwhile i < 1 loop i = i * 2; endloop;\nmy_model = i;")),

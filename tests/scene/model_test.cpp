@@ -194,12 +194,13 @@ TEST(Model, BadModelsAreReportedWithFileLineAndColumn) {
             std::string::npos);
   EXPECT_NE(error("/nonexistent/model.vm").find("/nonexistent/model.vm: error: cannot open the model file"),
             std::string::npos);
-  EXPECT_NE(error(writeTemp("pf_model.hf", "my_model(x[3], a[1]) {\n  if x[1] > 0 then r = 1; else r = 2; endif;\n"
+  EXPECT_NE(error(writeTemp("pf_model.hf", "my_model(x[3], a[1]) {\n  r = 0;\n  while r < x[1] loop r = r + 1; endloop;\n"
                                           "  my_model = r;\n}\n"))
-                .find("pf_model.hf:2:6: error: condition depends on the point x"),
+                .find("pf_model.hf:3:9: error: condition depends on the point x"),
             std::string::npos);
-  const std::string bad_pfl = writeTemp("pf_bad_field.pfl", "field float f(point p) {\n  return p.x > 0.0 ? 1.0 : -1.0;\n}\n");
-  EXPECT_NE(error(bad_pfl).find("pf_bad_field.pfl:2:20: error: this choice (?:) depends on the field's point"),
+  const std::string bad_pfl =
+      writeTemp("pf_bad_field.pfl", "field float f(point p) {\n  return p.x > 0.0 ? floor(p.y) : -1.0;\n}\n");
+  EXPECT_NE(error(bad_pfl).find("pf_bad_field.pfl:2:22: error: 'floor (and fract, mod)' of a value that depends on the field's point"),
             std::string::npos) << error(bad_pfl);
 }
 
