@@ -1,7 +1,11 @@
 // HyperFun's built-in maths, R-functions and hf* library as tape builders (hyperfun_library.h).
+// The argument checks are in hyperfun_library_internal.h; the convolution surfaces over triangles,
+// meshes, arcs and radius-sized segments in hyperfun_convolution.cpp.
 #include "compiler/field/hyperfun_library.h"
 
 #include <cmath>
+
+#include "compiler/field/hyperfun_library_internal.h"
 
 namespace pf::field::hyperfun {
 
@@ -10,49 +14,6 @@ namespace {
 
 using Items = std::vector<Real>;
 Real K(double v) { return Real::known(v); }
-
-[[noreturn]] void reject(int argument, std::string message) { throw LibraryError{argument, std::move(message)}; }
-
-// "'center' (argument 2 of 'hfSphere')"
-std::string paramLabel(const LibraryCall& c, int i) {
-  std::string_view p = c.function.params;
-  for (int k = 0; k < i; ++k) p = p.substr(p.find(", ") + 2);
-  p = p.substr(0, p.find(", "));
-  return "'" + std::string(p) + "' (argument " + std::to_string(i + 1) + " of '" + std::string(c.function.name) + "')";
-}
-
-// The items of array argument i, which must hold `size` items.
-Items& items(LibraryCall& c, int i, size_t size) {
-  Items& a = *c.arrays[i];
-  if (a.size() != size)
-    reject(i, paramLabel(c, i) + " must be an array of " + std::to_string(size) + " items; '" + c.array_names[i] +
-                  "' has " + std::to_string(a.size()));
-  return a;
-}
-
-// Array arguments [first, last] that must all hold as many items as argument `first`.
-size_t sameSizes(LibraryCall& c, int first, int last) {
-  const size_t n = c.arrays[first]->size();
-  for (int i = first + 1; i <= last; ++i) items(c, i, n);
-  return n;
-}
-
-// A real argument that must be known when the model is compiled.
-double knownArg(LibraryCall& c, int i, std::string_view why) {
-  if (!c.reals[i].is_known)
-    reject(i, paramLabel(c, i) + " depends on the point x; it must be known when the model is compiled (" +
-                  std::string(why) + ")");
-  return c.reals[i].value;
-}
-
-// An item of an array argument that must be known when the model is compiled.
-double knownItem(LibraryCall& c, int i, size_t k, std::string_view why) {
-  const Real r = (*c.arrays[i])[k];
-  if (!r.is_known)
-    reject(i, "item " + std::to_string(k + 1) + " of " + paramLabel(c, i) + " depends on the point x; it must be known "
-                  "when the model is compiled (" + std::string(why) + ")");
-  return r.value;
-}
 
 // |v|^p for a known or point-dependent p: a small whole p multiplies, any other p is exp(p*log|v|)
 // (|v| = 0 then gives exp(-inf) = 0 for p > 0, as pow does).
@@ -361,6 +322,52 @@ Real hfNoiseG(LibraryCall& c) {
   return product;
 }
 
+// --- SARDF distance primitives (Fayolle): distances, positive inside ----------------------------
+
+// r0 - sqrt((sqrt(off-axis squares) - R)^2 + axial offset^2): the distance to the torus.
+template <int Axis>
+Real hfDTorus(LibraryCall& c) {
+  TapeAlgebra& m = c.alg;
+  const Offsets o = offsets(c, 0, 1);
+  int u, v;
+  offAxes(Axis, u, v);
+  const Real ring = m.sub(m.sqrt(m.add(m.square(o.d[u]), m.square(o.d[v]))), c.reals[2]);
+  return m.sub(c.reals[3], m.sqrt(m.add(m.square(ring), m.square(o.d[Axis]))));
+}
+
+// R - |axis x (center - x)| / |axis|: the distance to the line through center along axis.
+Real hfDCylinder(LibraryCall& c) {
+  TapeAlgebra& m = c.alg;
+  Items& x = items(c, 0, 3);
+  Items& ctr = items(c, 1, 3);
+  Items& a = items(c, 2, 3);
+  Real to[3], cross2 = K(0.0), axis2 = K(0.0);
+  for (int k = 0; k < 3; ++k) {
+    to[k] = m.sub(ctr[k], x[k]);
+    axis2 = m.add(axis2, m.square(a[k]));
+  }
+  if (axis2.is_known && axis2.value == 0.0)
+    reject(2, paramLabel(c, 2) + " is the zero vector: the cylinder has no direction (HyperFun divides by 0)");
+  for (int k = 0; k < 3; ++k) {
+    const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+    cross2 = m.add(cross2, m.square(m.sub(m.mul(a[k1], to[k2]), m.mul(a[k2], to[k1]))));
+  }
+  return m.sub(c.reals[3], m.sqrt(m.div(cross2, axis2)));
+}
+
+// With t = atan(R): -(sqrt(off-axis squares) cos t - |axial offset| sin t), the (signed) distance
+// to the double cone of slope R around the axis.
+template <int Axis>
+Real hfDCone(LibraryCall& c) {
+  TapeAlgebra& m = c.alg;
+  const Offsets o = offsets(c, 0, 1);
+  int u, v;
+  offAxes(Axis, u, v);
+  const Real t = m.atan(c.reals[2]);
+  const Real radial = m.mul(m.sqrt(m.add(m.square(o.d[u]), m.square(o.d[v]))), m.cos(t));
+  return m.sub(m.mul(m.abs(o.d[Axis]), m.sin(t)), radial);
+}
+
 // --- Blends ------------------------------------------------------------------------------------
 
 template <bool Union>
@@ -478,14 +485,12 @@ Real hfSpaceMap(LibraryCall& c) {
 }
 
 // Messages for the unsupported functions; '$' stands for the function's name.
-constexpr std::string_view kConvolution =
-    "'$' is not supported yet: primflow does not have its convolution integral (HyperFun's closed form with "
-    "arctan terms)";
 constexpr std::string_view kAttribute =
     "attribute functions are not supported yet: '$' sets the s array's colour or material, and primflow's field "
     "tapes carry the shape only";
 constexpr std::string_view kSardf =
-    "'$' is not supported yet: primflow has none of HyperFun's SARDF distance functions";
+    "'$' is not supported yet: primflow has HyperFun's SARDF distance primitives (hfDTorus, hfDCylinder, hfDCone) "
+    "but not its SARDF operations or hfDEllipsoid";
 constexpr std::string_view kNotYet = "'$' is not supported yet";
 constexpr std::string_view kOnlyInR =
     "'$' is not supported: it calls back into R and exists only in HyperFun's R package";
@@ -531,6 +536,18 @@ const LibraryFunction kFunctions[] = {
     {"hfConvLine", "x, begin, end, S, T", "AAAAR", hfConvSegments<false>, {}},
     {"hfConvCurve", "x, vect, S, T", "AAAR", hfConvSegments<true>, {}},
     {"hfNoiseG", "x, amp, freq, phase", "ARRR", hfNoiseG, {}},
+    {"hfConvTriangle", "x, vect, S, T", "AAAR", hfConvTriangle, {}},
+    {"hfConvMesh", "x, vect, tri, S, T", "AAAAR", hfConvMesh, {}},
+    {"hfConvArc", "x, center, radius, theta, axis, angle, S, T", "AAAAAAAR", hfConvArc, {}},
+    {"hfConvLineR", "x, begin, end, R", "AAAR", hfConvLineR, {}},
+    // SARDF distance primitives.
+    {"hfDTorusX", "x, center, R, r0", "AARR", hfDTorus<0>, {}},
+    {"hfDTorusY", "x, center, R, r0", "AARR", hfDTorus<1>, {}},
+    {"hfDTorusZ", "x, center, R, r0", "AARR", hfDTorus<2>, {}},
+    {"hfDCylinder", "x, center, axis, R", "AAAR", hfDCylinder, {}},
+    {"hfDConeX", "x, center, R", "AAR", hfDCone<0>, {}},
+    {"hfDConeY", "x, center, R", "AAR", hfDCone<1>, {}},
+    {"hfDConeZ", "x, center, R", "AAR", hfDCone<2>, {}},
     // Blends.
     {"hfBlendUni", "f1, f2, a0, a1, a2", "RRRRR", hfBlend<true>, {}},
     {"hfBlendInt", "f1, f2, a0, a1, a2", "RRRRR", hfBlend<false>, {}},
@@ -550,12 +567,9 @@ const LibraryFunction kFunctions[] = {
     {"hfSpaceMapExp", "xt, source, target, b", "AAAA", hfSpaceMap<false>, {}},
     {"hfSpaceMapCubic", "xt, source, target, b", "AAAA", hfSpaceMap<true>, {}},
     // Registered in HyperFun but not supported yet.
-    no("hfConvLineR", kConvolution), no("hfConvArc", kConvolution), no("hfConvTriangle", kConvolution),
-    no("hfConvMesh", kConvolution),
     no("hfBezierVolume", kNotYet), no("hfDUni", kSardf), no("hfDInt", kSardf), no("hfDSub", kSardf),
-    no("hfDBlendUni", kSardf), no("hfDBlendInt", kSardf), no("hfDConeX", kSardf), no("hfDConeY", kSardf),
-    no("hfDConeZ", kSardf), no("hfDCylinder", kSardf), no("hfDEllipsoid", kSardf), no("hfDTorusX", kSardf),
-    no("hfDTorusY", kSardf), no("hfDTorusZ", kSardf), no("hfSawtooth", kNotYet), no("hfR", kOnlyInR),
+    no("hfDBlendUni", kSardf), no("hfDBlendInt", kSardf), no("hfDEllipsoid", kSardf), no("hfSawtooth", kNotYet),
+    no("hfR", kOnlyInR),
     no("hfA_Wave", kAttribute), no("hfA_CheckerBoard", kAttribute), no("hfA_Union", kAttribute),
     no("hfA_Crackles", kAttribute), no("hfA_Circles", kAttribute), no("hfA_NoiseG", kAttribute),
     no("hfA_NoiseP", kAttribute), no("hfA_Turbulence", kAttribute), no("hfA_SetColor", kAttribute),

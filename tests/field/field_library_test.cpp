@@ -1,5 +1,6 @@
-// The field library written in the language (compiler/hyperfun.pfl) against the HyperFun reader
-// (compiler/field/hyperfun_library.cpp): two implementations of HyperFun's library, one in the
+// The field library written in the language (compiler/hyperfun.pfl, hyperfun_convolution.pfl)
+// against the HyperFun reader (compiler/field/hyperfun_library.cpp, hyperfun_convolution.cpp): two
+// implementations of HyperFun's library, one in the
 // language and one building tapes in C++, must give the same field for the same model. Each case
 // is a `field` unit and the HyperFun model it stands for; their tapes are evaluated in double at
 // random points. (The reader's own tests check its formulas against hyperfun.md's in double.)
@@ -73,6 +74,36 @@ const LibraryCase kCases[] = {
     {"return hfConvPointTerm(p, point(-0.5, 0.0, 0.0), 1.5) + hfConvPointTerm(p, point(0.5, 0.2, 0.1), 2.0) - 0.4;",
      "array v[6], w[2]; v = [-0.5, 0, 0, 0.5, 0.2, 0.1]; w = [1.5, 2.0];"
      "my_model = hfConvPoint(x, v, w, 0.4);"},
+    {"return hfConvTriangleTerm(p, point(-1.0, -0.5, 0.2), point(1.2, -0.3, -0.1), point(0.1, 1.0, 0.4), 1.5)"
+     " + hfConvTriangleTerm(p, point(0.3, 0.2, -1.0), point(0.5, -0.6, 0.8), point(-0.7, 0.4, 0.5), 0.8) - 0.1;",
+     "array v[18], w[2]; v = [-1, -0.5, 0.2, 1.2, -0.3, -0.1, 0.1, 1, 0.4, 0.3, 0.2, -1, 0.5, -0.6, 0.8, -0.7, 0.4, 0.5];"
+     "w = [1.5, 0.8]; my_model = hfConvTriangle(x, v, w, 0.1);"},
+    {"return hfConvTriangleTerm(p, point(0.0, 0.0, 0.0), point(1.0, 0.0, 0.0), point(0.0, 1.0, 0.0), 2.0)"
+     " + hfConvTriangleTerm(p, point(1.0, 0.0, 0.0), point(0.0, 0.0, 1.0), point(0.0, 1.0, 0.0), 1.2)"
+     " + hfConvTriangleTerm(p, point(0.0, 0.0, 0.0), point(1.0, 0.0, 0.0), point(2.0, 0.0, 0.0), 1.2) - 0.3;",
+     "array v[12], t[9], w[3]; v = [0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1]; t = [1, 2, 3, 2, 4, 3, 1, 2, 2];"
+     "w = [2, 1.2, 1.2]; my_model = hfConvMesh(x, v, t, w, 0.3);"},
+    {"return hfConvArcTerm(p, point(0.1, -0.2, 0.3), 1.1, 100.0, vector(0.3, 0.5, 1.0), 35.0, 1.3)"
+     " + hfConvArcTerm(p, point(-0.5, 0.4, 0.0), 0.7, 250.0, vector(1.0, 0.0, 0.0), -60.0, 2.0)"
+     " + hfConvArcTerm(p, point(0.6, 0.1, -0.4), 0.5, 400.0, vector(-0.2, 1.0, 0.4), 120.0, 0.9) - 0.2;",
+     "array c[9], r[3], th[3], ax[9], ang[3], w[3]; c = [0.1, -0.2, 0.3, -0.5, 0.4, 0, 0.6, 0.1, -0.4];"
+     "r = [1.1, 0.7, 0.5]; th = [100, 250, 400]; ax = [0.3, 0.5, 1, 1, 0, 0, -0.2, 1, 0.4]; ang = [35, -60, 120];"
+     "w = [1.3, 2.0, 0.9]; my_model = hfConvArc(x, c, r, th, ax, ang, w, 0.2);"},
+    {"float S = hfConvLineRWidth(0.4);"
+     "return min(hfConvLineTerm(p, point(-1.0, 0.0, 0.0), point(1.0, 0.5, 0.0), S)"
+     " + hfConvLineTerm(p, point(0.0, -1.0, 0.5), point(0.0, 0.2, -0.5), S), 1.0) - hfConvLineRThreshold(0.4, length(vector(0.0, 1.2, -1.0)));",
+     "array b[6], e[6]; b = [-1, 0, 0, 0, -1, 0.5]; e = [1, 0.5, 0, 0, 0.2, -0.5]; my_model = hfConvLineR(x, b, e, 0.4);"},
+    {"float S = hfConvLineRWidth(2.0);"  // the sum passes 1 near the origin only
+     "return min(hfConvLineTerm(p, point(-1.0, 0.0, 0.0), point(1.0, 0.0, 0.0), S) + hfConvLineTerm(p, point(0.0, -1.0, 0.0), point(0.0, 1.0, 0.0), S)"
+     " + hfConvLineTerm(p, point(0.0, 0.0, -0.7), point(0.0, 0.0, 0.7), S), 1.0) - hfConvLineRThreshold(2.0, 1.4);",
+     "array b[9], e[9]; b = [-1, 0, 0, 0, -1, 0, 0, 0, -0.7]; e = [1, 0, 0, 0, 1, 0, 0, 0, 0.7]; my_model = hfConvLineR(x, b, e, 2);"},
+    {"return hfDTorusX(p, point(0.0, 0.1, 0.0), 1.0, 0.3) + hfDTorusY(p, point(0.2, 0.0, 0.0), 0.8, 0.2) + hfDTorusZ(p, point(0.0, 0.0, 0.1), 1.2, 0.4)"
+     " + hfDCylinder(p, point(0.1, -0.2, 0.3), vector(1.0, 2.0, -0.5), 0.6)"
+     " + hfDConeX(p, point(0.0, 0.0, 0.0), 0.5) + hfDConeY(p, point(0.2, 0.0, 0.0), 0.7) + hfDConeZ(p, point(0.0, 0.2, 0.0), 1.9);",
+     "array c[3], d[3], e[3], f[3], u[3], g[3], h[3]; c = [0, 0.1, 0]; d = [0.2, 0, 0]; e = [0, 0, 0.1]; f = [0.1, -0.2, 0.3];"
+     "u = [1, 2, -0.5]; g = [0, 0, 0]; h = [0, 0.2, 0];"
+     "my_model = hfDTorusX(x, c, 1.0, 0.3) + hfDTorusY(x, d, 0.8, 0.2) + hfDTorusZ(x, e, 1.2, 0.4) + hfDCylinder(x, f, u, 0.6)"
+     " + hfDConeX(x, g, 0.5) + hfDConeY(x, d, 0.7) + hfDConeZ(x, h, 1.9);"},
     {"point q = hfShift3D(p, 0.2, -0.1, 0.3); q = hfScale3D(q, 1.5, 0.8, 1.2); q = hfStretch3D(q, point(0.1, 0.0, 0.0), 1.1, 0.9, 1.3);"
      "return hfEllipsoid(q, point(0.0, 0.0, 0.0), 1.0, 0.6, 0.8);",
      "array xt[3], c[3], o[3]; xt[1] = x[1]; xt[2] = x[2]; xt[3] = x[3]; c = [0, 0, 0]; o = [0.1, 0, 0];"

@@ -586,8 +586,8 @@ TEST(HyperFun, LibraryCallErrorsArePrecise) {
   expectHas(compileError(model("my_model = sign(x[1]);")),
             "m.hf:2:12: error: 'sign' of a value that depends on the point is not supported yet");
   expectHas(compileError(model("my_model = floor(x[1]);")), "m.hf:2:12: error: 'floor' of a value");
-  expectHas(compileError(model("array e[3];\ne = [0, 0, 0];\nmy_model = hfConvArc(x, e, e, e, e, e, e, 1);")),
-            "m.hf:4:12: error: 'hfConvArc' is not supported yet: primflow does not have its convolution integral");
+  expectHas(compileError(model("array e[3];\ne = [0, 0, 0];\nmy_model = hfDEllipsoid(x, e, 1, 1, 1);")),
+            "m.hf:4:12: error: 'hfDEllipsoid' is not supported yet: primflow has HyperFun's SARDF distance primitives");
   expectHas(compileError(model("my_model = hfA_Wave(1, 2, 3, 4);")),
             "m.hf:2:12: error: attribute functions are not supported yet: 'hfA_Wave'");
   expectHas(compileError(model("my_model = hfDUni(x[1], x[2], 1, 1);")),
