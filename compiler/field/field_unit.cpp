@@ -34,7 +34,6 @@ const char* sourceName(Op op) {
   switch (op) {
     case Op::FFloor: return "floor (and fract, mod)";
     case Op::FCeil: return "ceil";
-    case Op::FSign: return "sign";
     case Op::FNoise: return "noise";
     case Op::F2I: return "conversion to int";
     case Op::QAdd: case Op::QSub: case Op::QMul: case Op::QDiv: case Op::QNeg: case Op::QAbs:
@@ -427,6 +426,12 @@ class TapeTranslator {
                                                                           builder_.unary(FieldOp::Square, y)));
         const uint32_t half = builder_.unary(FieldOp::Atan, builder_.binary(FieldOp::Div, y, builder_.binary(FieldOp::Add, r, x)));
         setNode(in.dst, builder_.binary(FieldOp::Mul, builder_.constant(2.0f), half), loc);
+        return {};
+      }
+      case Op::FSign: {  // 1, -1 or 0 (and 0 for NaN, as the pixel programs' sign)
+        const uint32_t v = node(in.a, loc), zero = builder_.constant(0.0f);
+        const uint32_t negative = builder_.select(builder_.binary(FieldOp::Less, v, zero), builder_.constant(-1.0f), zero);
+        setNode(in.dst, builder_.select(builder_.binary(FieldOp::Less, zero, v), builder_.constant(1.0f), negative), loc);
         return {};
       }
       case Op::FTan: {

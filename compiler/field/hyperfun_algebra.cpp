@@ -70,6 +70,24 @@ Real TapeAlgebra::pow(Real a, Real b) {
   return exp(mul(b, log(a)));
 }
 
+Real TapeAlgebra::less(Real a, Real b) {
+  if (a.is_known && b.is_known) return Real::known(a.value < b.value ? 1.0 : 0.0);
+  return emit(FieldOp::Less, a, b);
+}
+
+Real TapeAlgebra::lessEq(Real a, Real b) {
+  if (a.is_known && b.is_known) return Real::known(a.value <= b.value ? 1.0 : 0.0);
+  return emit(FieldOp::LessEq, a, b);
+}
+
+Real TapeAlgebra::select(Real cond, Real if_true, Real if_false) {
+  if (cond.is_known) return cond.value != 0.0 ? if_true : if_false;
+  const bool same = if_true.is_known == if_false.is_known &&
+                    (if_true.is_known ? if_true.value == if_false.value : if_true.id == if_false.id);
+  if (same) return if_true;
+  return Real::onTape(b_.select(cond.id, materialize(if_true), materialize(if_false)));
+}
+
 Real TapeAlgebra::unite(Real a, Real b) { return add(add(a, b), sqrt(add(square(a), square(b)))); }
 Real TapeAlgebra::intersect(Real a, Real b) { return sub(add(a, b), sqrt(add(square(a), square(b)))); }
 // a & -b, written a - b - sqrt(a^2 + b^2): the same doubles, since (-b)^2 = b^2 and a + (-b) = a - b.

@@ -63,7 +63,6 @@ double hfRound(double v) {
   const double ce = std::ceil(v);
   return ce - v > 0.5 ? ce - 1.0 : ce;
 }
-constexpr auto kSign = [](double v) { return v < 0.0 ? -1.0 : 1.0; };  // HyperFun's sign as its code means it
 constexpr auto kMod = [](double a, double b) { return std::fmod(hfRound(a), hfRound(b)); };
 constexpr auto kCeil = [](double v) { return std::ceil(v); };
 constexpr auto kFloor = [](double v) { return std::floor(v); };
@@ -99,6 +98,13 @@ Real fAtan2(LibraryCall& c) {
   const Real r = m.sqrt(m.add(m.square(x), m.square(y)));
   return m.mul(K(2.0), m.atan(m.div(y, m.add(r, x))));
 }
+// HyperFun's sign as its code means it (the code returns 1 always): -1 for v < 0, else 1; of a
+// point-dependent v, a Select on the tape.
+Real fSign(LibraryCall& c) {
+  TapeAlgebra& m = c.alg;
+  return m.select(m.less(c.reals[0], K(0.0)), K(-1.0), K(1.0));
+}
+
 Real fTan(LibraryCall& c) {
   const Real v = c.reals[0];
   return v.is_known ? K(std::tan(v.value)) : c.alg.div(c.alg.sin(v), c.alg.cos(v));
@@ -488,9 +494,6 @@ Real hfSpaceMap(LibraryCall& c) {
 constexpr std::string_view kAttribute =
     "attribute functions are not supported yet: '$' sets the s array's colour or material, and primflow's field "
     "tapes carry the shape only";
-constexpr std::string_view kSardf =
-    "'$' is not supported yet: primflow has HyperFun's SARDF distance primitives (hfDTorus, hfDCylinder, hfDCone) "
-    "but not its SARDF operations or hfDEllipsoid";
 constexpr std::string_view kNotYet = "'$' is not supported yet";
 constexpr std::string_view kOnlyInR =
     "'$' is not supported: it calls back into R and exists only in HyperFun's R package";
@@ -504,7 +507,7 @@ const LibraryFunction kFunctions[] = {
     {"tan", "v", "R", fTan, {}}, {"asin", "v", "R", fAsin, {}}, {"acos", "v", "R", fAcos, {}},
     {"atan", "v", "R", fAtan, {}}, {"abs", "v", "R", unary<&TapeAlgebra::abs>, {}},
     {"sinh", "v", "R", fSinh, {}}, {"cosh", "v", "R", fCosh, {}}, {"tanh", "v", "R", fTanh, {}},
-    {"sign", "v", "R", knownOnly<kSign>, {}}, {"mod", "a, b", "RR", knownPair<kMod>, {}},
+    {"sign", "v", "R", fSign, {}}, {"mod", "a, b", "RR", knownPair<kMod>, {}},
     {"max", "a, b", "RR", binary<&TapeAlgebra::max>, {}}, {"min", "a, b", "RR", binary<&TapeAlgebra::min>, {}},
     {"atan2", "y, x", "RR", fAtan2, {}}, {"ceil", "v", "R", knownOnly<kCeil>, {}},
     {"floor", "v", "R", knownOnly<kFloor>, {}}, {"int", "v", "R", knownOnly<kInt>, {}},
@@ -548,6 +551,13 @@ const LibraryFunction kFunctions[] = {
     {"hfDConeX", "x, center, R", "AAR", hfDCone<0>, {}},
     {"hfDConeY", "x, center, R", "AAR", hfDCone<1>, {}},
     {"hfDConeZ", "x, center, R", "AAR", hfDCone<2>, {}},
+    {"hfDEllipsoid", "x, center, a, b, c", "AARRR", hfDEllipsoid, {}},
+    // SARDF operations (hyperfun_sardf.cpp).
+    {"hfDUni", "f1, f2, r, alpha", "RRRR", hfDUni, {}},
+    {"hfDInt", "f1, f2, r, alpha", "RRRR", hfDInt, {}},
+    {"hfDSub", "f1, f2, r, alpha", "RRRR", hfDSub, {}},
+    {"hfDBlendUni", "f1, f2, r", "RRR", hfDBlendUni, {}},
+    {"hfDBlendInt", "f1, f2, r", "RRR", hfDBlendInt, {}},
     // Blends.
     {"hfBlendUni", "f1, f2, a0, a1, a2", "RRRRR", hfBlend<true>, {}},
     {"hfBlendInt", "f1, f2, a0, a1, a2", "RRRRR", hfBlend<false>, {}},
@@ -567,8 +577,7 @@ const LibraryFunction kFunctions[] = {
     {"hfSpaceMapExp", "xt, source, target, b", "AAAA", hfSpaceMap<false>, {}},
     {"hfSpaceMapCubic", "xt, source, target, b", "AAAA", hfSpaceMap<true>, {}},
     // Registered in HyperFun but not supported yet.
-    no("hfBezierVolume", kNotYet), no("hfDUni", kSardf), no("hfDInt", kSardf), no("hfDSub", kSardf),
-    no("hfDBlendUni", kSardf), no("hfDBlendInt", kSardf), no("hfDEllipsoid", kSardf), no("hfSawtooth", kNotYet),
+    no("hfBezierVolume", kNotYet), no("hfSawtooth", kNotYet),
     no("hfR", kOnlyInR),
     no("hfA_Wave", kAttribute), no("hfA_CheckerBoard", kAttribute), no("hfA_Union", kAttribute),
     no("hfA_Crackles", kAttribute), no("hfA_Circles", kAttribute), no("hfA_NoiseG", kAttribute),

@@ -67,6 +67,11 @@ class TapeAlgebra {
   Real unite(Real a, Real b);      // a | b = a + b + sqrt(a^2 + b^2)
   Real intersect(Real a, Real b);  // a & b = a + b - sqrt(a^2 + b^2), and a @ b
   Real subtract(Real a, Real b);   // a \ b = a & -b
+  // Point-dependent choices: 1 where a < b (a <= b) holds, 0 elsewhere (false with NaN, as C);
+  // cond != 0 ? if_true : if_false, only the chosen side's value (FieldOp::Select).
+  Real less(Real a, Real b);
+  Real lessEq(Real a, Real b);
+  Real select(Real cond, Real if_true, Real if_false);
   // The Cauchy kernel 1/(1 + s^2 r^2)^2 integrated along the segment from b to e (r: the distance
   // from x to the segment's point), in closed form: hfConvLine's and hfConvCurve's term.
   Real cauchySegment(const Real x[3], const Real b[3], const Real e[3], Real s);

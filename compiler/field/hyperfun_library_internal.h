@@ -1,5 +1,5 @@
-// Shared by the source files of HyperFun's library (hyperfun_library.cpp and
-// hyperfun_convolution.cpp), not by its users: the checks on a library call's arguments, which
+// Shared by the source files of HyperFun's library (hyperfun_library.cpp,
+// hyperfun_convolution.cpp and hyperfun_sardf.cpp), not by its users: the checks on a library call's arguments, which
 // throw LibraryError with a message naming the argument, and the library functions defined
 // outside hyperfun_library.cpp, for its table.
 #pragma once
@@ -63,5 +63,13 @@ Real hfConvTriangle(LibraryCall& c);
 Real hfConvMesh(LibraryCall& c);
 Real hfConvArc(LibraryCall& c);
 Real hfConvLineR(LibraryCall& c);
+
+// The SARDF operations and hfDEllipsoid (hyperfun_sardf.cpp).
+Real hfDUni(LibraryCall& c);
+Real hfDInt(LibraryCall& c);
+Real hfDSub(LibraryCall& c);
+Real hfDBlendUni(LibraryCall& c);
+Real hfDBlendInt(LibraryCall& c);
+Real hfDEllipsoid(LibraryCall& c);
 
 }  // namespace pf::field::hyperfun

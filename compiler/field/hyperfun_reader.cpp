@@ -70,7 +70,7 @@ std::string formatNumber(double v) {
 class Compiler {
  public:
   Compiler(const SourceFile& file, const Program& program, DiagnosticLog& log, FieldTapeBuilder& builder)
-      : file_(file), program_(program), log_(log), builder_(builder), alg_(builder) {}
+      : file_(file), program_(program), log_(log), alg_(builder) {}
 
   TapeAlgebra& algebra() { return alg_; }
 
@@ -234,13 +234,11 @@ class Compiler {
     return compare(FieldOp::LessEq, Real::known(kEps), alg_.abs(t.value));
   }
 
-  Real compare(FieldOp op, Real a, Real b) {
-    return Real::onTape(builder_.binary(op, alg_.materialize(a), alg_.materialize(b)));
-  }
+  Real compare(FieldOp op, Real a, Real b) { return op == FieldOp::Less ? alg_.less(a, b) : alg_.lessEq(a, b); }
 
   Real select(Real cond, Real if_true, Real if_false) {
     if (sameReal(if_true, if_false)) return if_true;
-    return Real::onTape(builder_.select(alg_.materialize(cond), alg_.materialize(if_true), alg_.materialize(if_false)));
+    return alg_.select(cond, if_true, if_false);
   }
 
   // After an `if` on x: `f` holds what the then-branch left, `otherwise` what the else-branch
@@ -437,7 +435,6 @@ class Compiler {
   const SourceFile& file_;
   const Program& program_;
   DiagnosticLog& log_;
-  FieldTapeBuilder& builder_;
   TapeAlgebra alg_;
   long statements_ = 0;
 };

@@ -133,6 +133,14 @@ const LibraryCase kCases[] = {
      "return hfSphere(q, point(0.0, 0.0, 0.0), 0.9);",
      "array xt[3], c[3], src[3], tgt[3], b[3]; xt[1] = x[1]; xt[2] = x[2]; xt[3] = x[3]; c = [0, 0, 0]; src = [0, 0, 0]; tgt = [0.3, 0.2, 0];"
      "b = [1.5, 1.6, 1.7]; dummy = hfSpaceMapCubic(xt, src, tgt, b); my_model = hfSphere(xt, c, 0.9);"},
+    // SARDF operations: operands that take every quadrant and both the bounded and the stripe
+    // pieces over [-1.6, 1.6]^3; hfSign of the point (a Select in both).
+    {"return hfDUni(p.x, p.y, 0.4, 0.3) + hfDInt(p.y - 0.2, p.z, 0.5, 0.25) + hfDSub(p.x + p.z, p.y, 0.3, 0.35)"
+     " + hfDBlendUni(p.x, p.z, 0.5) + hfDBlendInt(p.y, p.x, 0.6) + hfSign(p.z - 0.1);",
+     "my_model = hfDUni(x[1], x[2], 0.4, 0.3) + hfDInt(x[2] - 0.2, x[3], 0.5, 0.25) + hfDSub(x[1] + x[3], x[2], 0.3, 0.35)"
+     " + hfDBlendUni(x[1], x[3], 0.5) + hfDBlendInt(x[2], x[1], 0.6) + sign(x[3] - 0.1);"},
+    {"return hfDEllipsoid(p, point(0.1, -0.2, 0.0), 1.2, 0.5, 0.8);",
+     "array c[3]; c = [0.1, -0.2, 0]; my_model = hfDEllipsoid(x, c, 1.2, 0.5, 0.8);"},
     {"return hfPow(p.x, 3.0) - hfPow(abs(p.y) + 0.5, 0.7) + hfLogd(p.z * p.z + 1.0) + hfTan(p.x * 0.4) + hfSinh(p.y) - hfCosh(p.z * 0.5) + hfTanh(p.x);",
      "my_model = x[1]^3 - (abs(x[2]) + 0.5)^0.7 + logd(x[3]*x[3] + 1) + tan(x[1]*0.4) + sinh(x[2]) - cosh(x[3]*0.5) + tanh(x[1]);"},
 };

@@ -247,6 +247,9 @@ TEST(FieldUnit, PointDependentBranchesBecomeSelects) {
   EXPECT_EQ(testing::evaluateDouble(guarded, 0.0, 0.0, 0.0), 0.0);
   EXPECT_EQ(testing::evaluateDouble(guarded, 0.5, 0.0, 0.0), 2.0);
   EXPECT_EQ(countOps(guarded, FieldOp::Select), 1u);
+  // sign and step of the point are choices too.
+  expectMatches(compileOk("field float f(point p) { return sign(p.x) + 10.0 * step(0.5, p.y); }"),
+                [](double x, double y, double) { return (x > 0 ? 1.0 : x < 0 ? -1.0 : 0.0) + (y < 0.5 ? 0.0 : 10.0); }, 0.0);
   // A value assigned in one branch only keeps its earlier value elsewhere.
   expectMatches(compileOk("field float f(point p) {\n  float r = p.z;\n  if (p.x < p.y) { r = p.x; }\n  return r;\n}\n"),
                 [](double x, double y, double z) { return x < y ? x : z; }, 0.0);
@@ -259,7 +262,7 @@ TEST(FieldUnit, WhatATapeCannotHoldIsAnErrorAtItsLine) {
       {"field float f(point p) {\n  int k = 1;\n  if (p.x > 0.0) { k = 2; }\n  return float(k);\n}\n", {},
        "error: an int chosen by a condition that depends on the field's point has no tape form"},
       {"field float f(point p) {\n  return floor(p.x);\n}\n", {}, "f.pfl:2:10: error: 'floor (and fract, mod)' of a value that depends on the field's point has no tape form"},
-      {"field float f(point p) {\n  return sign(p.x);\n}\n", {}, "error: 'sign' of a value that depends on the field's point"},
+      {"field float f(point p) {\n  return ceil(p.x);\n}\n", {}, "error: 'ceil' of a value that depends on the field's point"},
       {"field float f(point p) {\n  return noise(p);\n}\n", {}, "error: 'noise' of a value"},
       {"field float f(point p) {\n  float s = 0.0;\n  while (s < p.x) { s += 1.0; }\n  return s;\n}\n", {},
        "f.pfl:3:3: error: this loop's condition depends on the field's point"},

@@ -583,15 +583,13 @@ TEST(HyperFun, LibraryCallErrorsArePrecise) {
               [](double x, double y, double z) {
                 return std::atan2(y, x) + std::atan(z) - std::asin(x * 0.3) + std::acos(y * 0.3);
               });
-  expectHas(compileError(model("my_model = sign(x[1]);")),
-            "m.hf:2:12: error: 'sign' of a value that depends on the point is not supported yet");
   expectHas(compileError(model("my_model = floor(x[1]);")), "m.hf:2:12: error: 'floor' of a value");
-  expectHas(compileError(model("array e[3];\ne = [0, 0, 0];\nmy_model = hfDEllipsoid(x, e, 1, 1, 1);")),
-            "m.hf:4:12: error: 'hfDEllipsoid' is not supported yet: primflow has HyperFun's SARDF distance primitives");
+  expectHas(compileError(model("array e[3];\ne = [0, 0, 0];\nmy_model = hfDEllipsoid(x, e, 1, 0, 1);")),
+            "m.hf:4:34: error: 'b' (argument 4 of 'hfDEllipsoid') is within 1e-6 of 0");
   expectHas(compileError(model("my_model = hfA_Wave(1, 2, 3, 4);")),
             "m.hf:2:12: error: attribute functions are not supported yet: 'hfA_Wave'");
-  expectHas(compileError(model("my_model = hfDUni(x[1], x[2], 1, 1);")),
-            "m.hf:2:12: error: 'hfDUni' is not supported yet");
+  expectHas(compileError(model("my_model = hfDUni(x[1], x[2], 1);")),
+            "m.hf:2:12: error: 'hfDUni' takes 4 arguments (f1, f2, r, alpha), found 3");
   expectHas(compileError(model("my_model = hfNoSuchThing(x, a);")),
             "m.hf:2:12: error: unknown function 'hfnosuchthing'");
 }
