@@ -351,7 +351,12 @@ void Renderer::flush() {
     return;
   }
   const int tiles = scene_.tiles_x * scene_.tiles_y;
-  pool_.parallelFor(tiles, [this](int tile, int worker) { runTile(tile, *scratch_[worker]); });
+  try {
+    pool_.parallelFor(tiles, [this](int tile, int worker) { runTile(tile, *scratch_[worker]); });
+  } catch (...) {  // a failed allocation in a tile: the frame is dropped, the renderer stays usable
+    discardPending();
+    throw;
+  }
   stats_.gbuffer_bytes = 0;
   for (auto& s : scratch_) {
     stats_.blocks_run += s->executor.counters.blocks_run;
@@ -370,6 +375,15 @@ void Renderer::flush() {
       cap_report_.primitive = s->executor.counters.cap_primitive->name;
     }
     stats_.gbuffer_bytes += (s->gbuffer.capacity() + s->shade_ids.capacity()) * 4;
+    s->executor.counters = BlockCounters{};
+    s->pixels_shaded = 0;
+    s->tiles_run = 0;
+  }
+  scene_.reset();
+}
+
+void Renderer::discardPending() {
+  for (auto& s : scratch_) {
     s->executor.counters = BlockCounters{};
     s->pixels_shaded = 0;
     s->tiles_run = 0;

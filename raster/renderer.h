@@ -101,6 +101,9 @@ class Renderer : private SubInstanceSink {
 
   const FrameStats& stats() const { return stats_; }
   void resetStats() { stats_ = FrameStats{}; }
+  // Drops everything recorded since the last flush (after a failed allocation: the API reports
+  // GL_OUT_OF_MEMORY and the next frame starts clean).
+  void discardPending();
 
  private:
   struct WorkerScratch {

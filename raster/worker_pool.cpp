@@ -4,6 +4,7 @@
 #include "raster/worker_pool.h"
 
 #include <cstdlib>
+#include <utility>
 
 namespace pf {
 
@@ -39,7 +40,15 @@ void WorkerPool::drain(int worker) {
       if (next_job_ >= jobs_) return;
       job = next_job_++;
     }
-    (*fn_)(job, worker);
+    try {
+      (*fn_)(job, worker);
+    } catch (...) {
+      // The first failure (a failed allocation, say) stops the hand-out; parallelFor rethrows it
+      // on the calling thread once every worker is idle. No exception leaves a worker thread.
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (!failure_) failure_ = std::current_exception();
+      next_job_ = jobs_;
+    }
   }
 }
 
@@ -80,6 +89,7 @@ void WorkerPool::parallelFor(int jobs, const std::function<void(int, int)>& fn) 
   std::unique_lock<std::mutex> lock(mutex_);
   done_.wait(lock, [&] { return next_job_ >= jobs_ && busy_ == 0; });
   fn_ = nullptr;
+  if (failure_) std::rethrow_exception(std::exchange(failure_, nullptr));
 }
 
 }  // namespace pf

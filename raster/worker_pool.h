@@ -4,6 +4,7 @@
 #pragma once
 
 #include <condition_variable>
+#include <exception>
 #include <functional>
 #include <mutex>
 #include <thread>
@@ -20,6 +21,7 @@ class WorkerPool {
 
   int threadCount() const { return static_cast<int>(workers_.size()) + 1; }
   // Runs fn(job, worker) for job in [0, jobs); worker in [0, threadCount()). Returns when all ran.
+  // If a job throws, no further jobs start and the first exception is rethrown here.
   void parallelFor(int jobs, const std::function<void(int job, int worker)>& fn);
 
  private:
@@ -35,6 +37,7 @@ class WorkerPool {
   int busy_ = 0;
   unsigned generation_ = 0;
   bool stopping_ = false;
+  std::exception_ptr failure_;  // the first job's exception in this parallelFor
 };
 
 // The thread count a context uses when it is not told: PF_NUM_THREADS, else all cores.

@@ -127,18 +127,19 @@ PFcontext pfCreateContext(GLenum format, GLint depthBits) {
 
 GLboolean pfMakeCurrent(PFcontext ctx, void* buffer, GLenum type, GLsizei width, GLsizei height) {
   if (!ctx) {
-    if (pf::g_current) pf::g_current->renderer.flush();
+    if (pf::g_current) pf::g_current->flush();
     pf::g_current = nullptr;
     return GL_TRUE;
   }
   if (!buffer || type != GL_UNSIGNED_BYTE || width < 1 || height < 1 ||
       width > pf::kMaxFramebufferSize || height > pf::kMaxFramebufferSize)
     return GL_FALSE;
-  ctx->renderer.flush();
+  ctx->flush();
   if (ctx->depth_bits > 0) {
     try {
       ctx->depth.assign(static_cast<size_t>(width) * height, 1.0f);
     } catch (const std::bad_alloc&) {
+      ctx->setError(GL_OUT_OF_MEMORY);  // the context keeps its previous drawable
       return GL_FALSE;
     }
   }

@@ -191,6 +191,7 @@ struct PFcontextRec {
   std::vector<uint32_t> rows;
   std::vector<float> row_shading;  // row_channels floats per sequence point
   std::string reject_reason;  // non-empty: the sequence points do not fit the primitive
+  bool begin_out_of_memory = false;  // a failed allocation dropped the glBegin in progress
   // Scratch for building instances (kept to avoid allocation per instance).
   std::vector<uint32_t> param_block;
   std::vector<float> vertex_channels;
@@ -203,9 +204,16 @@ struct PFcontextRec {
   pf::MatrixStack& matrixStack() {
     return matrix_mode == GL_PROJECTION ? projection : matrix_mode == GL_TEXTURE ? texture : modelview;
   }
-  // Runs all recorded drawing, then reports runaway primitives: GL_TOO_MANY_ITERATIONS_EXT and
-  // a line on stderr.
+  // Runs all recorded drawing; a failed allocation while drawing: GL_OUT_OF_MEMORY, the frame
+  // dropped.
+  void flush();
+  // flush(), then reports runaway primitives: GL_TOO_MANY_ITERATIONS_EXT and a line on stderr.
   void finish();
+  // A failed allocation (std::bad_alloc) in a command: GL_OUT_OF_MEMORY and a line on stderr;
+  // what the command was building is dropped whole -- the glBegin in progress (`in_begin`), or
+  // everything recorded since the last flush -- so the context goes on in a consistent state
+  // (GL 1.5 section 2.5 leaves the state undefined; primflow keeps it usable).
+  void outOfMemory(const char* command);
   pf::RasterState rasterState() const;
 };
 

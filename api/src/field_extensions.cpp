@@ -2,6 +2,7 @@
 // context's field table (its id is what the `implicit` primitive's `field` parameter names),
 // and read the diagnostics. See docs/api.md, "Fields".
 #include <cmath>
+#include <new>
 
 #include <primflow/gl.h>
 
@@ -35,8 +36,14 @@ GLuint pfglCompileFieldParamsEXT(GLenum format, const GLchar* name, const GLchar
   const FieldFormat f = format == GL_FIELD_FIDGET_EXT     ? FieldFormat::Fidget
                         : format == GL_FIELD_HYPERFUN_EXT ? FieldFormat::HyperFun
                                                           : FieldFormat::Language;
-  std::optional<pf::field::FieldTape> tape =
-      pf::field::compileFieldSource(f, name, source, std::vector<double>(params, params + count), time, log);
+  std::optional<pf::field::FieldTape> tape;
+  try {
+    tape = pf::field::compileFieldSource(f, name, source, std::vector<double>(params, params + count), time, log);
+  } catch (const std::bad_alloc&) {
+    ctx->setError(GL_OUT_OF_MEMORY);
+    ctx->field_failed_log = std::string(name) + ": error: out of memory while compiling";
+    return 0;
+  }
   if (!tape) {
     ctx->field_failed_log = log.format();
     return 0;

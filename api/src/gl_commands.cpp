@@ -5,6 +5,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdio>
+#include <new>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -34,8 +35,30 @@ float clamp01(double v) { return v < 0 ? 0.0f : v > 1 ? 1.0f : static_cast<float
 
 }  // namespace
 
+void PFcontextRec::outOfMemory(const char* command) {
+  setError(GL_OUT_OF_MEMORY);
+  if (in_begin) {
+    begin_out_of_memory = true;
+    rows = {};
+    row_shading = {};
+    rows_count = 0;
+  } else {
+    renderer.discardPending();
+  }
+  std::fprintf(stderr, "primflow: %s: out of memory: %s dropped\n", command,
+               in_begin ? "the glBegin in progress" : "the drawing recorded since the last flush");
+}
+
+void PFcontextRec::flush() {
+  try {
+    renderer.flush();
+  } catch (const std::bad_alloc&) {  // the renderer has dropped the frame
+    outOfMemory("drawing");
+  }
+}
+
 void PFcontextRec::finish() {
-  renderer.flush();
+  flush();
   primitives.replaced.clear();  // nothing pending refers to replaced programs any more
   pf::IterationCapReport r = renderer.takeIterationCapReport();
   if (r.pixels == 0 && r.instances == 0) return;

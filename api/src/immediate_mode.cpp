@@ -11,6 +11,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdio>
+#include <new>
 
 #include <primflow/gl.h>
 
@@ -87,7 +88,20 @@ void planFeed(PFcontextRec& ctx, const pf::CompiledPrimitive& prim) {
 void rowChannels(PFcontextRec& ctx);
 
 // Binds the current values as one sequence point of the open glBegin.
+void recordSequencePoint(PFcontextRec& ctx);
+
+// One sequence point of the glBegin in progress, recorded as a row (a failed allocation drops
+// the glBegin: GL_OUT_OF_MEMORY).
 void sequencePoint(PFcontextRec& ctx) {
+  if (ctx.begin_out_of_memory) return;  // this glBegin was dropped: nothing more to record
+  try {
+    recordSequencePoint(ctx);
+  } catch (const std::bad_alloc&) {
+    ctx.outOfMemory("a sequence point");
+  }
+}
+
+void recordSequencePoint(PFcontextRec& ctx) {
   const size_t row = ctx.rows_count++;
   ctx.rows.resize(ctx.rows_count * static_cast<size_t>(ctx.row_floats));
   uint32_t* out = ctx.rows.data() + row * static_cast<size_t>(ctx.row_floats);
@@ -377,6 +391,7 @@ void pfglBegin(GLenum mode) {
     return;
   }
   ctx->in_begin = true;
+  ctx->begin_out_of_memory = false;
   ctx->begin_mode = mode;
   ctx->begin_primitive = it->second.get();
   ctx->begin_mvp = ctx->projection.top * ctx->modelview.top;
@@ -422,6 +437,11 @@ void pfglEnd(void) {
     return;
   }
   ctx->in_begin = false;
+  if (ctx->begin_out_of_memory) {  // already reported (GL_OUT_OF_MEMORY): nothing to draw
+    ctx->begin_out_of_memory = false;
+    ctx->begin_primitive = nullptr;
+    return;
+  }
   const pf::CompiledPrimitive& prim = *ctx->begin_primitive;
   if (ctx->reject_reason.empty() && !isGlMode(ctx->begin_mode) && prim.sequence_points > 0 &&
       ctx->rows_count % static_cast<size_t>(prim.sequence_points) != 0)
@@ -433,7 +453,11 @@ void pfglEnd(void) {
     std::fprintf(stderr, "primflow: glEnd: instances of '%s' rejected, nothing drawn: %s\n", prim.name.c_str(),
                  ctx->reject_reason.c_str());
   } else if (ctx->color) {
-    submitInstances(*ctx);
+    try {
+      submitInstances(*ctx);
+    } catch (const std::bad_alloc&) {  // instances half binned: the frame so far is dropped
+      ctx->outOfMemory("glEnd");
+    }
   }
   ctx->begin_primitive = nullptr;
 }

@@ -1,9 +1,10 @@
 // The PixelFlow extensions for primitives compiled at run time (paper section 4: every
 // primitive, built-in or not, registers itself the same way): compile, read the log, look up
 // the glBegin mode of a primitive by name.
-#include <set>
 #include <algorithm>
 #include <cstring>
+#include <new>
+#include <set>
 
 #include <primflow/gl.h>
 
@@ -47,9 +48,15 @@ GLuint pfglCompilePrimitivesEXT(const GLchar* source) {
   std::string name = "module" + std::to_string(ctx->primitives.module_logs.size() + 1) + ".pfl";
   std::set<std::string> interpolators;  // the context's, for interpolation labels
   for (const auto& [known, id] : ctx->primitives.interpolator_ids) interpolators.insert(known);
-  if (!pf::compileSource(name, source, module, log, pf::EmitStage::None, nullptr, true, &ctx->primitives.by_name,
-                         &interpolators)) {
-    ctx->primitives.failed_log = log.format();
+  try {
+    if (!pf::compileSource(name, source, module, log, pf::EmitStage::None, nullptr, true, &ctx->primitives.by_name,
+                           &interpolators)) {
+      ctx->primitives.failed_log = log.format();
+      return 0;
+    }
+  } catch (const std::bad_alloc&) {
+    ctx->setError(GL_OUT_OF_MEMORY);
+    ctx->primitives.failed_log = name + ": error: out of memory while compiling";
     return 0;
   }
   // Instances already recorded keep the programs they were submitted with (the registry keeps

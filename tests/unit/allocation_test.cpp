@@ -22,19 +22,32 @@
 namespace {
 std::atomic<bool> g_counting{false};
 std::atomic<long> g_allocations{0};
+// Not 0: every allocation of at least this many bytes fails (the OutOfMemory test's "memory").
+std::atomic<std::size_t> g_fail_from_bytes{0};
+void failIfTooLarge(std::size_t n) {
+  const std::size_t limit = g_fail_from_bytes.load(std::memory_order_relaxed);
+  if (limit != 0 && n >= limit) throw std::bad_alloc();
+}
 }  // namespace
 
 void* operator new(std::size_t n) {
   if (g_counting.load(std::memory_order_relaxed)) g_allocations.fetch_add(1, std::memory_order_relaxed);
+  failIfTooLarge(n);
   if (void* p = std::malloc(n ? n : 1)) return p;
   throw std::bad_alloc();
 }
 void* operator new(std::size_t n, std::align_val_t a) {
   if (g_counting.load(std::memory_order_relaxed)) g_allocations.fetch_add(1, std::memory_order_relaxed);
+  failIfTooLarge(n);
   const std::size_t align = static_cast<std::size_t>(a);
   if (void* p = std::aligned_alloc(align, (n + align - 1) / align * align)) return p;
   throw std::bad_alloc();
 }
+// This file replaces the global operator new with malloc, so free is the matching release; GCC
+// cannot see the replacement when it inlines a std::allocator, hence the pragma.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+#endif
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
@@ -195,4 +208,88 @@ TEST(Allocation, RootsAndScratchGradientsAllocateNothing) {
   g_counting = false;
   EXPECT_EQ(g_allocations.load(), 0);
   EXPECT_NE(sum, 0.0);
+}
+
+namespace {
+
+// A red triangle over pixel (100, 100) of a 256x256 drawable in window coordinates.
+void drawRedTriangle() {
+  pfglBegin(GL_TRIANGLES);
+  pfglColor3f(1, 0, 0);
+  pfglVertex3f(60, 60, 0);
+  pfglVertex3f(160, 70, 0);
+  pfglVertex3f(90, 170, 0);
+  pfglEnd();
+}
+
+bool redAt(const std::vector<unsigned char>& px, int x, int y) {
+  const unsigned char* p = px.data() + (static_cast<size_t>(y) * 256 + x) * 4;
+  return p[0] == 255 && p[1] == 0 && p[2] == 0;
+}
+
+}  // namespace
+
+// A request past memory gives GL_OUT_OF_MEMORY, never a crash, and the context draws again
+// afterwards: allocations of 64 KB or more made to fail while a glBegin records its vertices,
+// while the rasterizer's threads draw a frame (their tile buffers), and for a framebuffer.
+TEST(OutOfMemory, FailedAllocationsAreGlOutOfMemoryAndTheContextGoesOn) {
+  std::vector<unsigned char> px(256 * 256 * 4);
+  const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_THREADS, 2, 0};
+  PFcontext ctx = pfCreateContextAttribs(attribs);
+  ASSERT_NE(ctx, nullptr);
+  ASSERT_TRUE(pfMakeCurrent(ctx, px.data(), GL_UNSIGNED_BYTE, 256, 256));
+  pfglMatrixMode(GL_PROJECTION);
+  pfglOrtho(0, 256, 0, 256, -1, 1);
+
+  // While a glBegin records: its vertex rows outgrow 64 KB.
+  g_fail_from_bytes = 64 * 1024;
+  pfglBegin(GL_TRIANGLES);
+  for (int i = 0; i < 30000; ++i) {
+    pfglVertex3f(10, 10, 0);
+    pfglVertex3f(20, 10, 0);
+    pfglVertex3f(10, 20, 0);
+  }
+  pfglEnd();
+  g_fail_from_bytes = 0;
+  pfglFinish();
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_OUT_OF_MEMORY));
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  pfglClear(GL_COLOR_BUFFER_BIT);
+  drawRedTriangle();
+  pfglFinish();
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  EXPECT_TRUE(redAt(px, 100, 100));
+
+  // While the frame is drawn: a fresh context's first frame sizes its tiles' buffers.
+  std::vector<unsigned char> px2(256 * 256 * 4);
+  PFcontext fresh = pfCreateContextAttribs(attribs);
+  ASSERT_TRUE(pfMakeCurrent(fresh, px2.data(), GL_UNSIGNED_BYTE, 256, 256));
+  pfglMatrixMode(GL_PROJECTION);
+  pfglOrtho(0, 256, 0, 256, -1, 1);
+  pfglClear(GL_COLOR_BUFFER_BIT);
+  drawRedTriangle();
+  g_fail_from_bytes = 16 * 1024;
+  pfglFinish();
+  g_fail_from_bytes = 0;
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_OUT_OF_MEMORY));
+  pfglClear(GL_COLOR_BUFFER_BIT);
+  drawRedTriangle();
+  pfglFinish();
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  EXPECT_TRUE(redAt(px2, 100, 100));
+
+  // A framebuffer past memory: pfMakeCurrent fails, the context keeps its drawable.
+  std::vector<unsigned char> big(16);
+  g_fail_from_bytes = 64 * 1024;
+  EXPECT_FALSE(pfMakeCurrent(fresh, big.data(), GL_UNSIGNED_BYTE, 8192, 8192));
+  g_fail_from_bytes = 0;
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_OUT_OF_MEMORY));
+  pfglClear(GL_COLOR_BUFFER_BIT);
+  drawRedTriangle();
+  pfglFinish();
+  EXPECT_TRUE(redAt(px2, 100, 100));
+
+  pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
+  pfDestroyContext(fresh);
+  pfDestroyContext(ctx);
 }
