@@ -19,6 +19,11 @@
 
 namespace pf::field {
 
+// The longest tape a front end builds (a HyperFun model or a language field unrolls its loops
+// and calls): past it, compiling is an error -- a hostile or runaway model must not take
+// seconds and gigabytes before it is refused (the largest shipped model, Prospero, has 7,866).
+constexpr size_t kMaxFieldTapeSize = 1u << 18;
+
 // The operations every evaluator implements. Unary ops read `a`; binary ops read `a` and `b`;
 // Select reads all three.
 //

@@ -27,9 +27,8 @@
 
 namespace pf::field {
 
-// How far a field's compile-time loops may unroll, and how long its tape may grow.
+// How far a field's compile-time loops may unroll (its tape's length: kMaxFieldTapeSize).
 constexpr long kMaxFieldLoopIterations = 1'000'000;
-constexpr size_t kMaxFieldTapeSize = 1u << 20;
 
 // Compiles field `name` of language source `text` (named `filename` in diagnostics) to a tape;
 // a source with one field compiles that one whatever `name` says (an empty name included). `params` give the values of the field's

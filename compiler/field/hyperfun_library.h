@@ -42,6 +42,7 @@ class TapeAlgebra {
   Real y() { return Real::onTape(b_.y()); }
   Real z() { return Real::onTape(b_.z()); }
   uint32_t materialize(Real r) { return r.is_known ? b_.constant(static_cast<float>(r.value)) : r.id; }
+  size_t tapeSize() const { return b_.size(); }
 
   Real add(Real a, Real b);
   Real sub(Real a, Real b);

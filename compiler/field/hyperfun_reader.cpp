@@ -110,6 +110,9 @@ class Compiler {
     if (++statements_ > kMaxStatements)
       fail(s.line, s.col, "the model needs more than " + std::to_string(kMaxStatements) +
                               " statements to compile (loops and object calls are unrolled)");
+    if (alg_.tapeSize() > kMaxFieldTapeSize)
+      fail(s.line, s.col, "the model unrolls to more than " + std::to_string(kMaxFieldTapeSize) +
+                              " tape operations (loops and object calls are unrolled)");
     switch (s.kind) {
       case Stmt::Kind::Assign: {
         if (findArray(f, s.name))

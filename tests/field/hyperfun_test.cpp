@@ -632,6 +632,10 @@ TEST(HyperFun, NestingAndWorkAreBounded) {
   expectHas(compileError(model("i = 0;\nwhile i < 3000 loop\n j = 0;\n while j < 3000 loop j = j + 1; endloop;\n"
                                " i = i + 1;\nendloop;\nmy_model = 1;")),
             "m.hf:4:2: error: the model needs more than 2000000 statements to compile");
+  // A loop that never ends but grows the tape each time stops at the tape's limit, long before
+  // the iteration limit (found by fuzz_field: it took seconds and ~1 GB before).
+  expectHas(compileError(model("n = 1;\np = x[1];\nwhile n < 6 loop\n p = 2 * p - x[2];\n q = p * p + x[3];\n p = q - p * x[1];\n n = n + 0;\nendloop;\nmy_model = p;")),
+            "error: the model unrolls to more than 262144 tape operations (loops and object calls are unrolled)");
 }
 
 }  // namespace

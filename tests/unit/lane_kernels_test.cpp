@@ -163,6 +163,8 @@ TEST(LaneKernels, PinningAnUnavailableSetIsRefused) {
   for (LaneIsa isa : {LaneIsa::Baseline, LaneIsa::Avx2, LaneIsa::Avx512}) {
     const bool available = std::find(isas.begin(), isas.end(), isa) != isas.end();
     EXPECT_EQ(setLaneIsa(isa), available) << laneIsaName(isa);
-    if (available) EXPECT_EQ(laneIsa(), isa);
+    if (available) {
+      EXPECT_EQ(laneIsa(), isa);
+    }
   }
 }
