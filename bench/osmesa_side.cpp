@@ -11,7 +11,7 @@
 
 namespace pfbench {
 
-std::vector<double> timeOsmesa(const SceneData& s, int warmup, int frames) {
+std::vector<double> timeOsmesa(const SceneData& s, int warmup, int frames, std::vector<unsigned char>* image) {
   std::vector<double> times;
   OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr);
   if (!ctx) return times;
@@ -26,6 +26,7 @@ std::vector<double> timeOsmesa(const SceneData& s, int warmup, int frames) {
     auto t1 = std::chrono::steady_clock::now();
     if (i >= warmup) times.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
   }
+  if (image) *image = readFrame(s);
   OSMesaDestroyContext(ctx);
   return times;
 }

@@ -11,7 +11,8 @@
 
 namespace pfbench {
 
-std::vector<double> timePrimflow(const SceneData& s, int warmup, int frames, int threads, FrameWork* work) {
+std::vector<double> timePrimflow(const SceneData& s, int warmup, int frames, int threads, FrameWork* work,
+                                 std::vector<unsigned char>* image) {
   std::vector<double> times;
   const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_THREADS, threads, 0};
   PFcontext ctx = pfCreateContextAttribs(attribs);
@@ -34,6 +35,7 @@ std::vector<double> timePrimflow(const SceneData& s, int warmup, int frames, int
   work->pixels_shaded = st.pixels_shaded / f;
   work->setup_instructions = st.setup_instructions / f;
   work->pixel_instructions = st.pixel_instructions / f;
+  if (image) *image = readFrame(s);
   pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
   pfDestroyContext(ctx);
   return times;

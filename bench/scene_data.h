@@ -22,8 +22,9 @@ struct SceneData {
 //          are the material).
 SceneData makeScene(const std::string& name);
 
-// Renders `frames` frames after `warmup` ones; returns each frame's milliseconds.
-std::vector<double> timeOsmesa(const SceneData& s, int warmup, int frames);
+// Renders `frames` frames after `warmup` ones; returns each frame's milliseconds. `image`, if
+// given, receives the last frame (RGBA, row 0 at the bottom, read back with glReadPixels).
+std::vector<double> timeOsmesa(const SceneData& s, int warmup, int frames, std::vector<unsigned char>* image = nullptr);
 // The work primflow counted for one frame.
 struct FrameWork {
   uint64_t pixels_run = 0;          // pixel-program runs (lanes started)
@@ -32,6 +33,7 @@ struct FrameWork {
   uint64_t pixel_instructions = 0;  // executed by pixel programs, once per 8x8 block
 };
 
-std::vector<double> timePrimflow(const SceneData& s, int warmup, int frames, int threads, FrameWork* work);
+std::vector<double> timePrimflow(const SceneData& s, int warmup, int frames, int threads, FrameWork* work,
+                                 std::vector<unsigned char>* image = nullptr);
 
 }  // namespace pfbench
