@@ -5,6 +5,8 @@
 #include <map>
 #include <set>
 
+#include "compiler/covered_program.h"
+
 namespace pf {
 namespace {
 
@@ -47,6 +49,14 @@ class Generator {
     // no further than its last `return` before it: worth trying only if there is one.
     for (size_t pc = 0; pc < pixel_.code.size() && pixel_.code[pc].op != Op::LoopBegin; ++pc)
       if (pixel_.code[pc].op == Op::Retire) pixel_.last_early_retire = static_cast<int32_t>(pc);
+    for (size_t pc = 0; pc < pixel_.code.size(); ++pc) {
+      const Op op = pixel_.code[pc].op;
+      if (op == Op::LoopBegin || op == Op::ZTest || op == Op::FieldBox || op == Op::FieldHit || op == Op::FieldGradient)
+        break;
+      if (op == Op::Retire) pixel_.last_coverage_retire = static_cast<int32_t>(pc);
+    }
+    if (std::optional<PixelProgram> covered = coveredVariant(pixel_))
+      pixel_.covered = std::make_shared<const PixelProgram>(std::move(*covered));
     result_.pixel = std::move(pixel_);
     result_.setup.code = std::move(setup_.code);
     result_.setup.constants = std::move(setup_.constants);
@@ -480,4 +490,5 @@ CodegenResult generateCode(const IrFunction& f) {
   return g.run();
 }
 
-}  // namespace pf
+}  // namespace pf#include "compiler/covered_program.h"
+

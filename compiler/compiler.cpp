@@ -170,6 +170,10 @@ bool compileSource(const std::string& filename, const std::string& text, Compile
         *listing += std::string(unitWord(u)) + " " + u.name + ": setup program (once per instance)\n" + disassemble(prim->setup, false);
       if (emit == EmitStage::Pixel)
         *listing += std::string(unitWord(u)) + " " + u.name + ": pixel program (per 8x8 block, masked)\n" + disassemble(prim->pixel, true);
+      if (emit == EmitStage::Pixel && prim->pixel.covered)
+        *listing += std::string(unitWord(u)) + " " + u.name +
+                    ": pixel program for blocks it certainly covers (no leading returns)\n" +
+                    disassemble(*prim->pixel.covered, true);
     }
     prim->ir = std::move(kept);
     prim->is_interpolator = u.kind == UnitKind::Interpolator;

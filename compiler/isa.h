@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -160,6 +161,13 @@ struct PixelProgram : Bytecode {
   bool reads_surface = false;  // reads the built-in P or N registers (else they are not set up)
   // The last Retire before the first loop (-1: none): how far block rejection needs to look.
   int32_t last_early_retire = -1;
+  // The last Retire before anything block rejection cannot follow (a depth test, a field
+  // search, a loop; -1: none): the Retires that decide coverage.
+  int32_t last_coverage_retire = -1;
+  // The program for blocks where block rejection proves that no Retire up to
+  // last_coverage_retire runs: without them and what only they read
+  // (compiler/covered_program.h); null if there is none.
+  std::shared_ptr<const PixelProgram> covered;
 };
 
 // Readable listing, used by `pfc --emit=setup|pixel` and tests.

@@ -70,6 +70,13 @@ Range mul(const Range& a, const Range& b) {
   r.maybe_nan = nan;
   return r;
 }
+Range square(const Range& a) {
+  if (a.lo >= 0 || a.hi <= 0) return mul(a, a);  // one sign: the product's ends are the squares
+  Range r = widen(0.0, std::max(a.lo * a.lo, a.hi * a.hi));
+  r.lo = 0.0;  // a float square is never negative
+  r.maybe_nan = a.maybe_nan;
+  return r;
+}
 Range div(const Range& a, const Range& b) {
   if (b.lo <= 0.0 && b.hi >= 0.0) return kUnknown;  // a divisor that may be 0 (or -0)
   return mul(a, {1.0 / b.hi, 1.0 / b.lo, b.maybe_nan});
@@ -82,9 +89,13 @@ bool isInterpOp(Op op) {
 
 }  // namespace
 
-bool BlockRejection::rejects(const PixelProgram& program, const uint32_t* record, const RasterState& state, int x0,
-                             int y0, int x1, int y1) {
-  if (x1 <= x0 || y1 <= y0) return true;  // no pixel at all
+RegionVerdict BlockRejection::verdict(const PixelProgram& program, const uint32_t* record, const RasterState& state,
+                                      int x0, int y0, int x1, int y1) {
+  if (x1 <= x0 || y1 <= y0) return RegionVerdict::Rejected;  // no pixel at all
+  // Acceptance: no coverage Retire (pc <= last_coverage_retire) reached by any lane on the path
+  // the uniform branches take, and the walk got past the last of them.
+  const size_t coverage_end = program.last_coverage_retire >= 0 ? static_cast<size_t>(program.last_coverage_retire) + 1 : 0;
+  bool coverage_retire_may_run = program.last_coverage_retire < 0;
   regs_.assign(program.num_regs, kUnknown);
   if (program.num_regs > kRegY) {
     regs_[kRegX] = {x0 + 0.5, x1 - 0.5, false};
@@ -137,13 +148,14 @@ bool BlockRejection::rejects(const PixelProgram& program, const uint32_t* record
   // Nothing after the last early Retire can reject the block.
   const size_t n = std::min(program.code.size(), static_cast<size_t>(program.last_early_retire) + 1);
   size_t steps = 0;
-  for (size_t pc = 0; pc < n && steps < 4 * program.code.size(); ++steps) {
+  size_t pc = 0;
+  for (; pc < n && steps < 4 * program.code.size(); ++steps) {
     const Instr& in = program.code[pc++];
     bool certain;
     const bool live = regionState(certain);
     switch (in.op) {
       case Op::MaskIf:
-        if (depth >= kMaxProgramNesting) return false;
+        if (depth >= kMaxProgramNesting) return RegionVerdict::Unknown;
         frames[depth++] = {live ? read(in.b == kNoOperand ? in.a : in.b, As::Bool) : kUnknownBool, false};
         continue;
       case Op::MaskElse:
@@ -158,23 +170,24 @@ bool BlockRejection::rejects(const PixelProgram& program, const uint32_t* record
     if (!live) continue;
     switch (in.op) {
       case Op::Retire:
-        if (certain) return true;  // every lane still alive leaves: nothing of the block is drawn
+        if (certain) return RegionVerdict::Rejected;  // every lane still alive leaves: nothing is drawn
+        if (pc <= coverage_end) coverage_retire_may_run = true;  // (pc is already past it)
         continue;
       case Op::Jmp: pc = in.a; continue;
       case Op::JmpIfNot: {  // uniform
         const Range b = read(in.b, As::Bool);
         if (certainlyFalse(b)) pc = in.a;
-        else if (!certainlyTrue(b)) return false;
+        else if (!certainlyTrue(b)) return RegionVerdict::Unknown;
         continue;
       }
       case Op::LoopBegin: case Op::LoopTest: case Op::Break: case Op::Continue: case Op::LoopContinue:
       case Op::LoopBack: case Op::LoopEnd:
-        return false;  // loops are not followed: nothing after them is used
+        return RegionVerdict::Unknown;  // loops are not followed: nothing after them is used
       default: break;
     }
     if (isInterpOp(in.op) || in.dst == kNoOperand || operandKind(in.dst) != OperandKind::Reg) continue;
     const uint32_t dst = operandIndex(in.dst);
-    if (dst >= regs_.size()) return false;
+    if (dst >= regs_.size()) return RegionVerdict::Unknown;
     auto f = [&](uint32_t o) { return read(o, As::Float); };
     auto iv = [&](uint32_t o) { return read(o, As::Int); };
     auto bv = [&](uint32_t o) { return read(o, As::Bool); };
@@ -182,7 +195,10 @@ bool BlockRejection::rejects(const PixelProgram& program, const uint32_t* record
     switch (in.op) {
       case Op::FAdd: r = add(f(in.a), f(in.b)); break;
       case Op::FSub: r = add(f(in.a), negate(f(in.b))); break;
-      case Op::FMul: r = mul(f(in.a), f(in.b)); break;
+      case Op::FMul:
+        // x * x is a square: never below 0 (as a product of two independent ranges could be).
+        r = in.a == in.b ? square(f(in.a)) : mul(f(in.a), f(in.b));
+        break;
       case Op::FDiv: r = div(f(in.a), f(in.b)); break;
       case Op::FNeg: r = negate(f(in.a)); break;
       case Op::FAbs: {
@@ -279,7 +295,10 @@ bool BlockRejection::rejects(const PixelProgram& program, const uint32_t* record
     // A merge value written under a mask some lanes may not be in keeps their old values.
     regs_[dst] = in.masked_write && !certain ? hull(regs_[dst], r) : r;
   }
-  return false;
+  // Accepted when the walk followed the whole leading part (not cut short by the step limit) and
+  // no coverage Retire on its path could run.
+  if (pc >= n && !coverage_retire_may_run && program.covered) return RegionVerdict::Accepted;
+  return RegionVerdict::Unknown;
 }
 
 }  // namespace pf

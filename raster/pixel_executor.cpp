@@ -34,11 +34,11 @@ inline uint64_t laneMaskOf(const LaneMaskOps& masks, const uint32_t* v, bool wid
 // made for -- compared by content, since a later frame may put other values at the same
 // address. (The state is not part of it: the evaluated prefix stops at the first loop, and
 // pixel programs read the state only inside loops.)
-bool PixelExecutor::regionRejected(const PixelProgram& program, const uint32_t* record, const RasterState& state,
-                                   int bx, int by) {
+RegionVerdict PixelExecutor::regionVerdict(const PixelProgram& program, const uint32_t* record, const RasterState& state,
+                                           int bx, int by) {
   const int rx = bx / kRejectionRegion * kRejectionRegion, ry = by / kRejectionRegion * kRejectionRegion;
   constexpr int kPerRow = kTileSize / kRejectionRegion;
-  RegionVerdict& v = region_verdicts_[(rx / kRejectionRegion) % kPerRow + (ry / kRejectionRegion) % kPerRow * kPerRow];
+  RegionMemo& v = region_memos_[(rx / kRejectionRegion) % kPerRow + (ry / kRejectionRegion) % kPerRow * kPerRow];
   const size_t words = program.num_uniform_slots;
   if (v.program != &program || v.x != rx || v.y != ry || v.record.size() != words ||
       !std::equal(v.record.begin(), v.record.end(), record)) {
@@ -46,9 +46,9 @@ bool PixelExecutor::regionRejected(const PixelProgram& program, const uint32_t* 
     v.x = rx;
     v.y = ry;
     v.record.assign(record, record + words);
-    v.rejected = rejection_.rejects(program, record, state, rx, ry, rx + kRejectionRegion, ry + kRejectionRegion);
+    v.verdict = rejection_.verdict(program, record, state, rx, ry, rx + kRejectionRegion, ry + kRejectionRegion);
   }
-  return v.rejected;
+  return v.verdict;
 }
 
 bool PixelExecutor::blockRejectionWanted() { return std::getenv("PF_NO_BLOCK_REJECTION") == nullptr; }
@@ -60,14 +60,23 @@ void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* reco
   const int nch = layout.count;
   // Only blocks that start full are tested: an instance whose bound cuts every block it touches
   // (a small triangle) would pay for the test and rarely gain (measured: docs/performance.md).
-  if (mask == ~0ull && prim.pixel.last_early_retire >= 0 && use_block_rejection &&
-      regionRejected(prim.pixel, record, state, bx, by)) {
-    ++counters.blocks_rejected;
-    return;
+  // A region certainly retired is skipped; one where no coverage test can fail runs the program
+  // without them.
+  const PixelProgram* program = &prim.pixel;
+  if (mask == ~0ull && prim.pixel.last_early_retire >= 0 && use_block_rejection) {
+    const RegionVerdict v = regionVerdict(prim.pixel, record, state, bx, by);
+    if (v == RegionVerdict::Rejected) {
+      ++counters.blocks_rejected;
+      return;
+    }
+    if (v == RegionVerdict::Accepted && prim.pixel.covered) {
+      program = prim.pixel.covered.get();
+      ++counters.blocks_accepted;
+    }
   }
   ++counters.blocks_run;
   counters.lanes_started += static_cast<uint64_t>(__builtin_popcountll(mask));
-  const uint64_t alive = execute(prim, record, layout, state, bx, by, mask, target, shared_records, nullptr);
+  const uint64_t alive = execute(prim, *program, record, layout, state, bx, by, mask, target, shared_records, nullptr);
 
   // Commit: the lanes still alive are this instance's pixels.
   counters.lanes_committed += static_cast<uint64_t>(__builtin_popcountll(alive));
@@ -124,8 +133,8 @@ void PixelExecutor::runSharedInterpolators(const CompiledPrimitive& prim, const 
     if (prim.computesInterpolator(s.program->name)) continue;
     PixelExecutor& sub = *shared_;
     sub.shade_out_.assign(4 * kLanes, 0u);
-    sub.execute(*s.program, shared_records + s.record_offset, kNoChannels, state, bx, by, exec, BlockTarget{},
-                nullptr, p_lanes);
+    sub.execute(*s.program, s.program->pixel, shared_records + s.record_offset, kNoChannels, state, bx, by, exec,
+                BlockTarget{}, nullptr, p_lanes);
     for (int k = 0; k < 4; ++k) {
       uint32_t* d = staging_.data() + static_cast<size_t>(s.first + k) * kLanes;
       const uint32_t* v = sub.shade_out_.data() + static_cast<size_t>(k) * kLanes;
@@ -142,11 +151,11 @@ void PixelExecutor::runSharedInterpolators(const CompiledPrimitive& prim, const 
   }
 }
 
-uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const uint32_t* record, const ChannelLayout& layout,
-                                const RasterState& state, int bx, int by, uint64_t mask, const BlockTarget& target,
-                                const uint32_t* shared_records, const uint32_t* p_in) {
+uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const PixelProgram& program, const uint32_t* record,
+                                const ChannelLayout& layout, const RasterState& state, int bx, int by, uint64_t mask,
+                                const BlockTarget& target, const uint32_t* shared_records, const uint32_t* p_in) {
   ++run_serial_;  // field_hit()'s tapes belong to this run only
-  const PixelProgram& p = prim.pixel;
+  const PixelProgram& p = program;
   const int nch = layout.count;
   const size_t reg_words = static_cast<size_t>(p.num_regs) * kLanes;
   if (regs_.size() < reg_words) regs_.resize(reg_words);

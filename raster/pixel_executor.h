@@ -31,6 +31,7 @@ struct BlockTarget {
 struct BlockCounters {
   uint64_t blocks_run = 0;
   uint64_t blocks_rejected = 0;  // skipped whole by block_rejection.h (not in blocks_run)
+  uint64_t blocks_accepted = 0;  // run by the covered program, without coverage tests (in blocks_run)
   uint64_t lanes_started = 0;
   uint64_t lanes_committed = 0;
   uint64_t blocks_covered = 0;  // blocks whose every lane committed (the instance covers them whole)
@@ -70,9 +71,10 @@ class PixelExecutor {
  private:
   // Runs a program over the block; returns the lanes alive at its end. `p_in`: P's 4 components
   // (kLanes each) for a shared interpolator, null for a primitive (P starts at (0, 0, 0, 1)).
-  uint64_t execute(const CompiledPrimitive& prim, const uint32_t* record, const ChannelLayout& layout,
-                   const RasterState& state, int bx, int by, uint64_t mask, const BlockTarget& target,
-                   const uint32_t* shared_records, const uint32_t* p_in);
+  // `program` is prim.pixel, or its covered variant (block_rejection.h).
+  uint64_t execute(const CompiledPrimitive& prim, const PixelProgram& program, const uint32_t* record,
+                   const ChannelLayout& layout, const RasterState& state, int bx, int by, uint64_t mask,
+                   const BlockTarget& target, const uint32_t* shared_records, const uint32_t* p_in);
   // Runs the layout's shared interpolators for the `exec` lanes at surface point P (4 operands)
   // into their staging channels -- all but those `prim` computes itself (its `name:` labels).
   void runSharedInterpolators(const CompiledPrimitive& prim, const ChannelLayout& layout, const RasterState& state,
@@ -89,15 +91,16 @@ class PixelExecutor {
 
   field::FieldRayCaster caster_;
   BlockRejection rejection_;
-  // The verdicts of a tile's regions (regionRejected) and what each was computed for.
-  struct RegionVerdict {
+  // The verdicts of a tile's regions (regionVerdict) and what each was computed for.
+  struct RegionMemo {
     const PixelProgram* program = nullptr;
     int x = -1, y = -1;
     std::vector<uint32_t> record;
-    bool rejected = false;
+    RegionVerdict verdict = RegionVerdict::Unknown;
   };
-  RegionVerdict region_verdicts_[(kTileSize / kRejectionRegion) * (kTileSize / kRejectionRegion)];
-  bool regionRejected(const PixelProgram& program, const uint32_t* record, const RasterState& state, int bx, int by);
+  RegionMemo region_memos_[(kTileSize / kRejectionRegion) * (kTileSize / kRejectionRegion)];
+  RegionVerdict regionVerdict(const PixelProgram& program, const uint32_t* record, const RasterState& state, int bx,
+                              int by);
   float field_box_[6] = {0, 0, 0, 0, 0, 0};
   std::unordered_map<const field::ImplicitField*, std::unique_ptr<field::GradientEvaluator>> gradients_;
   // The gradient of a short tape (HitTapes): one evaluator per executor -- so per rasterizer

@@ -364,6 +364,7 @@ void Renderer::flush() {
     stats_.lanes_started += s->executor.counters.lanes_started;
     stats_.lanes_committed += s->executor.counters.lanes_committed;
     stats_.blocks_covered += s->executor.counters.blocks_covered;
+    stats_.blocks_accepted += s->executor.counters.blocks_accepted;
     stats_.pixel_instructions += s->executor.counters.instructions;
     stats_.pixels_shaded += s->pixels_shaded;
     stats_.tiles_run += s->tiles_run;

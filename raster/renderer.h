@@ -32,6 +32,7 @@ struct FrameStats {
   uint64_t lanes_started = 0;
   uint64_t lanes_committed = 0;
   uint64_t blocks_covered = 0;        // blocks run whose every lane committed
+  uint64_t blocks_accepted = 0;       // blocks run without coverage tests (PixelProgram::covered)
   uint64_t pixels_shaded = 0;
   uint64_t gbuffer_bytes = 0;         // G-buffer planes allocated for the last frame
   uint64_t setup_instructions = 0;    // executed by setup programs

@@ -43,6 +43,9 @@ void printStats(PFcontext ctx, double ms) {
   std::printf("blocks covered     %llu (every lane committed: %.1f%% of the blocks run)\n",
               static_cast<unsigned long long>(s.blocks_covered),
               s.blocks_run ? 100.0 * s.blocks_covered / double(s.blocks_run) : 0.0);
+  std::printf("blocks accepted    %llu (run without coverage tests: %.1f%% of the blocks run)\n",
+              static_cast<unsigned long long>(s.blocks_accepted),
+              s.blocks_run ? 100.0 * s.blocks_accepted / double(s.blocks_run) : 0.0);
   std::printf("active lanes       %.1f%% at start, %.1f%% committed\n",
               s.blocks_run ? 100.0 * s.lanes_started / (64.0 * s.blocks_run) : 0.0,
               s.blocks_run ? 100.0 * s.lanes_committed / (64.0 * s.blocks_run) : 0.0);

@@ -55,6 +55,8 @@ TEST(BlockCounters, CoveredBlocksAreThoseEveryLaneOfWhichIsDrawn) {
     const uint64_t blocks = static_cast<uint64_t>(kSize / 8) * (kSize / 8);
     EXPECT_EQ(w.blocks_run + w.blocks_rejected, blocks) << threads;
     EXPECT_EQ(w.blocks_covered, w.blocks_run) << threads;
+    // Every 32x32 region is inside all three edges: every block runs the covered program.
+    EXPECT_EQ(w.blocks_accepted, w.blocks_run) << threads;
     EXPECT_EQ(w.lanes_committed, static_cast<uint64_t>(kSize) * kSize) << threads;
     // About two pixels (0.02 of the half-width of 64 pixels is 1.3 pixels on a side).
     const float tiny[6] = {0.1f, 0.1f, 0.12f, 0.1f, 0.1f, 0.12f};

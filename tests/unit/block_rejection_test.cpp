@@ -1,8 +1,9 @@
-// Hierarchical block rejection (raster/block_rejection.h): sound -- a region it rejects is one
-// where the program draws no pixel, checked against running the program on every pixel, for
-// edge tests, discriminants, divisions, NaN and infinite parameters -- and invisible: images
-// and depth buffers with and without it are bit-identical for triangles, spheres, quadrics and
-// tori; and it does reject what lies outside a primitive.
+// Hierarchical block rejection and acceptance (raster/block_rejection.h): sound -- a region it
+// rejects is one where the program draws no pixel, one it accepts one where it draws every
+// pixel, checked against running the program on every pixel, for edge tests, discriminants,
+// divisions, NaN and infinite parameters -- and invisible: images and depth buffers with and
+// without it are bit-identical for triangles, spheres, quadrics and tori (the covered programs
+// run there); and it does reject what lies outside a primitive.
 #include <gtest/gtest.h>
 
 #include <primflow/gl.h>
@@ -15,6 +16,7 @@
 
 #include "compile_helpers.h"
 #include "gl_context.h"
+#include "setup_batch_helpers.h"
 #include "raster/block_rejection.h"
 
 using namespace pf;
@@ -60,7 +62,7 @@ TEST(BlockRejection, RejectsOnlyBlocksWhereNothingIsDrawn) {
   ASSERT_GE(p.pixel.last_early_retire, 0);
   std::mt19937 rng(11);
   BlockRejection rejection;
-  int rejected = 0, empty = 0;
+  int rejected = 0, empty = 0, accepted = 0, full = 0;
   for (int trial = 0; trial < 3000; ++trial) {
     std::vector<float> k(8);
     for (float& v : k) v = pick(rng);
@@ -76,15 +78,52 @@ TEST(BlockRejection, RejectsOnlyBlocksWhereNothingIsDrawn) {
     bool any = false;
     for (int y = 0; y < 8; ++y)
       for (int x = 0; x < 8; ++x) any = any || r.drawn(x, y);
-    const bool says_empty = rejection.rejects(p.pixel, record.data(), st, 0, 0, 8, 8);
-    if (says_empty) {
+    const RegionVerdict verdict = rejection.verdict(p.pixel, record.data(), st, 0, 0, 8, 8);
+    if (verdict == RegionVerdict::Rejected) {
       ++rejected;
       EXPECT_FALSE(any) << "trial " << trial << ": rejected a block the program draws in";
     }
+    bool all = true;
+    for (int y = 0; y < 8; ++y)
+      for (int x = 0; x < 8; ++x) all = all && r.drawn(x, y);
+    if (verdict == RegionVerdict::Accepted) {  // the probe's only returns are coverage tests
+      ++accepted;
+      EXPECT_TRUE(all) << "trial " << trial << ": accepted a block where the program retires a pixel";
+    }
     empty += !any;
+    bool finite = true;
+    for (float v : k) finite = finite && std::isfinite(v);
+    full += all && finite;
   }
-  // Most empty blocks are recognised (the conditions are the evaluator's strong suit).
+  // Most empty blocks are recognised (the conditions are the evaluator's strong suit), and most
+  // full ones among those with finite parameters (an infinite or NaN one makes the ranges
+  // unknown: never accepted, always safe).
   EXPECT_GT(rejected, empty / 2) << rejected << " of " << empty << " empty blocks rejected";
+  EXPECT_GT(accepted, full / 2) << accepted << " of " << full << " full blocks with finite parameters accepted";
+}
+
+// The covered program (compiler/covered_program.h) of the triangle: its coverage tests are gone
+// (no Retire before its depth test), nothing else is, and its jumps land inside it.
+TEST(BlockRejection, TheTrianglesCoveredProgramHasNoCoverageTests) {
+  const CompiledPrimitive& tri = builtin("triangles");
+  ASSERT_TRUE(tri.pixel.covered);
+  const PixelProgram& full = tri.pixel;
+  const PixelProgram& covered = *tri.pixel.covered;
+  EXPECT_LT(covered.code.size() + 30, full.code.size());
+  int retires_before_ztest = 0, ztests = 0, retires = 0;
+  for (const Instr& in : covered.code) {
+    if (in.op == Op::ZTest) ++ztests;
+    if (in.op == Op::Retire) (ztests == 0 ? retires_before_ztest : retires) += 1;
+    if (in.op == Op::Jmp || in.op == Op::JmpIfNot || in.op == Op::JmpIfNone || in.op == Op::LoopBack) {
+      EXPECT_LE(in.a, covered.code.size());
+    }
+  }
+  EXPECT_EQ(retires_before_ztest, 0);
+  EXPECT_EQ(ztests, 1);
+  EXPECT_EQ(retires, 1);  // the depth test's
+  size_t full_retires = 0;
+  for (const Instr& in : full.code) full_retires += in.op == Op::Retire;
+  EXPECT_GE(full_retires, 8u);  // three edges for each vertex order, the near/far clip, the depth test
 }
 
 // Single pixels on an edge through (or within rounding of) their centre: float rounding decides
