@@ -357,7 +357,8 @@ void Renderer::flush() {
     discardPending();
     throw;
   }
-  stats_.gbuffer_bytes = 0;
+  constexpr uint64_t kPlaneBytes = static_cast<uint64_t>(kTileSize) * kTileSize * 4;
+  stats_.tiles_skipped += static_cast<uint64_t>(tiles);  // less the tiles run, below
   for (auto& s : scratch_) {
     stats_.blocks_run += s->executor.counters.blocks_run;
     stats_.blocks_rejected += s->executor.counters.blocks_rejected;
@@ -375,7 +376,8 @@ void Renderer::flush() {
       cap_report_.pixels += s->executor.counters.iteration_cap_lanes;
       cap_report_.primitive = s->executor.counters.cap_primitive->name;
     }
-    stats_.gbuffer_bytes += (s->gbuffer.capacity() + s->shade_ids.capacity()) * 4;
+    stats_.gbuffer_bytes += s->tiles_run * (static_cast<uint64_t>(scene_.gbuffer_slots) + 1) * kPlaneBytes;
+    stats_.tiles_skipped -= s->tiles_run;
     s->executor.counters = BlockCounters{};
     s->pixels_shaded = 0;
     s->tiles_run = 0;

@@ -27,6 +27,7 @@ struct FrameStats {
   uint64_t instances_killed = 0;      // setup decided the instance draws nothing
   uint64_t bin_entries = 0;           // (instance, tile) pairs
   uint64_t tiles_run = 0;             // tiles with at least one instance
+  uint64_t tiles_skipped = 0;         // tiles no instance's bound touches (cleared, nothing run)
   uint64_t blocks_run = 0;
   uint64_t blocks_rejected = 0;       // skipped whole by interval tests (raster/block_rejection.h)
   uint64_t lanes_started = 0;
@@ -34,7 +35,8 @@ struct FrameStats {
   uint64_t blocks_covered = 0;        // blocks run whose every lane committed
   uint64_t blocks_accepted = 0;       // blocks run without coverage tests (PixelProgram::covered)
   uint64_t pixels_shaded = 0;
-  uint64_t gbuffer_bytes = 0;         // G-buffer planes allocated for the last frame
+  uint64_t gbuffer_bytes = 0;         // G-buffer the tiles run used: per tile, the frame's layout's
+                                      // slots and the shading-state ids, 64x64 x 4 bytes each
   uint64_t setup_instructions = 0;    // executed by setup programs
   uint64_t pixel_instructions = 0;    // executed by pixel programs, once per block
   uint64_t iteration_cap_pixels = 0;  // pixels stopped by the iteration cap

@@ -35,7 +35,8 @@ void printStats(PFcontext ctx, double ms) {
   std::printf("instances          %llu submitted, %llu killed in setup\n",
               static_cast<unsigned long long>(s.instances_submitted), static_cast<unsigned long long>(s.instances_killed));
   std::printf("bin entries        %llu\n", static_cast<unsigned long long>(s.bin_entries));
-  std::printf("tiles run          %llu\n", static_cast<unsigned long long>(s.tiles_run));
+  std::printf("tiles run          %llu, %llu skipped (no instance there)\n", static_cast<unsigned long long>(s.tiles_run),
+              static_cast<unsigned long long>(s.tiles_skipped));
   std::printf("blocks run         %llu, %llu rejected whole (%.1f%% of the blocks in bounds)\n",
               static_cast<unsigned long long>(s.blocks_run), static_cast<unsigned long long>(s.blocks_rejected),
               s.blocks_run + s.blocks_rejected ? 100.0 * s.blocks_rejected / double(s.blocks_run + s.blocks_rejected)
@@ -54,7 +55,8 @@ void printStats(PFcontext ctx, double ms) {
               static_cast<unsigned long long>(s.setup_instructions), static_cast<unsigned long long>(s.pixel_instructions),
               s.setup_instructions + s.pixel_instructions
                   ? 100.0 * s.setup_instructions / double(s.setup_instructions + s.pixel_instructions) : 0.0);
-  std::printf("g-buffer bytes     %llu\n", static_cast<unsigned long long>(s.gbuffer_bytes));
+  std::printf("g-buffer bytes     %llu (the layout's slots and shading ids of the tiles run)\n",
+              static_cast<unsigned long long>(s.gbuffer_bytes));
   if (s.field.rays) {
     const pf::field::FieldCounters& f = s.field;
     std::printf("field rays         %llu, %llu hit\n", static_cast<unsigned long long>(f.rays),

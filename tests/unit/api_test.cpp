@@ -4,6 +4,7 @@
 
 #include <primflow/gl.h>
 
+#include <utility>
 #include <vector>
 
 namespace {
@@ -51,6 +52,34 @@ TEST(Api, MakeCurrentValidatesArguments) {
   pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
   EXPECT_EQ(pfGetCurrentContext(), nullptr);
   pfDestroyContext(c);
+}
+
+// The largest framebuffers, 8192 on a side (the limit: 8193 is refused above): a triangle
+// across the whole of a 8192x16 and of a 16x8192 one reaches their last pixels, depth-tested.
+TEST(Api, FramebuffersOf8192OnASideDrawToTheirFarEnd) {
+  for (const auto& [w, h] : {std::pair{8192, 16}, std::pair{16, 8192}}) {
+    std::vector<unsigned char> px(static_cast<size_t>(w) * h * 4, 0);
+    PFcontext c = pfCreateContext(GL_RGBA, 24);
+    ASSERT_EQ(pfMakeCurrent(c, px.data(), GL_UNSIGNED_BYTE, w, h), GL_TRUE) << w << "x" << h;
+    pfglEnable(GL_DEPTH_TEST);
+    pfglMatrixMode(GL_PROJECTION);
+    pfglOrtho(0, w, 0, h, -1, 1);
+    pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    pfglBegin(GL_TRIANGLES);
+    pfglColor3f(0, 1, 0);
+    pfglVertex3f(-1, -1, 0);
+    pfglVertex3f(2.0f * w + 1, -1, 0);
+    pfglVertex3f(-1, 2.0f * h + 1, 0);
+    pfglEnd();
+    pfglFinish();
+    EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    for (const auto& [x, y] : {std::pair{0, 0}, std::pair{w - 1, 0}, std::pair{0, h - 1}, std::pair{w - 1, h - 1}}) {
+      const unsigned char* p = px.data() + (static_cast<size_t>(y) * w + x) * 4;
+      EXPECT_EQ(p[1], 255) << w << "x" << h << " at " << x << ", " << y;
+    }
+    pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
+    pfDestroyContext(c);
+  }
 }
 
 TEST(Api, NoContextIsANoOp) {

@@ -57,12 +57,19 @@ TEST(BlockCounters, CoveredBlocksAreThoseEveryLaneOfWhichIsDrawn) {
     EXPECT_EQ(w.blocks_covered, w.blocks_run) << threads;
     // Every 32x32 region is inside all three edges: every block runs the covered program.
     EXPECT_EQ(w.blocks_accepted, w.blocks_run) << threads;
+    // Every tile runs; each used the G-buffer of the layout's 4 colour channels plus the ids.
+    const uint64_t tiles = static_cast<uint64_t>((kSize + 63) / 64) * ((kSize + 63) / 64);
+    EXPECT_EQ(w.tiles_run, tiles) << threads;
+    EXPECT_EQ(w.tiles_skipped, 0u) << threads;
+    EXPECT_EQ(w.gbuffer_bytes, tiles * (4 + 1) * 64 * 64 * 4) << threads;
     EXPECT_EQ(w.lanes_committed, static_cast<uint64_t>(kSize) * kSize) << threads;
     // About two pixels (0.02 of the half-width of 64 pixels is 1.3 pixels on a side).
     const float tiny[6] = {0.1f, 0.1f, 0.12f, 0.1f, 0.1f, 0.12f};
     const FrameStats t = drawTriangle(tiny, threads);
     EXPECT_GE(t.blocks_run, 1u) << threads;
     EXPECT_EQ(t.blocks_covered, 0u) << threads;
+    EXPECT_EQ(t.tiles_run, 1u) << threads;
+    EXPECT_EQ(t.tiles_skipped, tiles - 1) << threads;
     EXPECT_GE(t.lanes_committed, 1u) << threads;
     EXPECT_LE(t.lanes_committed, 3u) << threads;
   }
