@@ -490,5 +490,5 @@ CodegenResult generateCode(const IrFunction& f) {
   return g.run();
 }
 
-}  // namespace pf#include "compiler/covered_program.h"
+}  // namespace pf
 

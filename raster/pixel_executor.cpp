@@ -42,13 +42,21 @@ RegionVerdict PixelExecutor::regionVerdict(const PixelProgram& program, const ui
   const size_t words = program.num_uniform_slots;
   if (v.program != &program || v.x != rx || v.y != ry || v.record.size() != words ||
       !std::equal(v.record.begin(), v.record.end(), record)) {
-    v.program = &program;
+    // The verdict before the key: if evaluating fails (std::bad_alloc), no key names a stale one.
+    v.program = nullptr;
+    const RegionVerdict verdict =
+        rejection_.verdict(program, record, state, rx, ry, rx + kRejectionRegion, ry + kRejectionRegion);
+    v.record.assign(record, record + words);
     v.x = rx;
     v.y = ry;
-    v.record.assign(record, record + words);
-    v.verdict = rejection_.verdict(program, record, state, rx, ry, rx + kRejectionRegion, ry + kRejectionRegion);
+    v.verdict = verdict;
+    v.program = &program;
   }
   return v.verdict;
+}
+
+void PixelExecutor::startFrame() {
+  for (RegionMemo& m : region_memos_) m.program = nullptr;  // a program may be freed, its address reused
 }
 
 bool PixelExecutor::blockRejectionWanted() { return std::getenv("PF_NO_BLOCK_REJECTION") == nullptr; }

@@ -62,6 +62,9 @@ class PixelExecutor {
                 const BlockTarget& target, const uint32_t* shared_records = nullptr);
 
   BlockCounters counters;
+  // Forgets the region verdicts remembered from earlier frames (keyed by program address: a
+  // program replaced since may have been freed and another made at its address).
+  void startFrame();
   // Skip blocks the program certainly retires whole (block_rejection.h); off only to measure
   // what it saves and to check that images do not change.
   // PF_NO_BLOCK_REJECTION in the environment turns it off for the executors made afterwards.

@@ -16,13 +16,16 @@ Renderer::Renderer(int threads) : pool_(threads) {
 
 void Renderer::setTarget(uint8_t* color, float* depth, int width, int height) {
   if (pending()) flush();
+  const int tiles_x = (width + kTileSize - 1) / kTileSize, tiles_y = (height + kTileSize - 1) / kTileSize;
+  // The new bins first: if they cannot be allocated (std::bad_alloc), the old target stands.
+  std::vector<TileBin> bins(static_cast<size_t>(tiles_x) * tiles_y);
+  scene_.bins.swap(bins);
+  scene_.tiles_x = tiles_x;
+  scene_.tiles_y = tiles_y;
   color_ = color;
   depth_ = depth;
   width_ = width;
   height_ = height;
-  scene_.tiles_x = (width + kTileSize - 1) / kTileSize;
-  scene_.tiles_y = (height + kTileSize - 1) / kTileSize;
-  scene_.bins.assign(static_cast<size_t>(scene_.tiles_x) * scene_.tiles_y, TileBin{});
 }
 
 void Renderer::clear(bool color, bool depth, const float rgba[4], float z, uint8_t color_mask) {
@@ -351,6 +354,7 @@ void Renderer::flush() {
     return;
   }
   const int tiles = scene_.tiles_x * scene_.tiles_y;
+  for (auto& s : scratch_) s->executor.startFrame();
   try {
     pool_.parallelFor(tiles, [this](int tile, int worker) { runTile(tile, *scratch_[worker]); });
   } catch (...) {  // a failed allocation in a tile: the frame is dropped, the renderer stays usable

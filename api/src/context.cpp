@@ -2,6 +2,7 @@
 // Built-in primitives are compiled here from their embedded source (primitives/*.pfl).
 #include <cstdio>
 #include <new>
+#include <vector>
 
 #include "api/src/context_state.h"
 #include "compiler/builtin_primitives.h"
@@ -135,18 +136,20 @@ GLboolean pfMakeCurrent(PFcontext ctx, void* buffer, GLenum type, GLsizei width,
       width > pf::kMaxFramebufferSize || height > pf::kMaxFramebufferSize)
     return GL_FALSE;
   ctx->flush();
-  if (ctx->depth_bits > 0) {
-    try {
-      ctx->depth.assign(static_cast<size_t>(width) * height, 1.0f);
-    } catch (const std::bad_alloc&) {
-      ctx->setError(GL_OUT_OF_MEMORY);  // the context keeps its previous drawable
-      return GL_FALSE;
-    }
+  // The new depth buffer and bins first: if they cannot be allocated, the context keeps its
+  // previous drawable, whole.
+  std::vector<float> depth;
+  try {
+    if (ctx->depth_bits > 0) depth.assign(static_cast<size_t>(width) * height, 1.0f);
+    ctx->renderer.setTarget(static_cast<uint8_t*>(buffer), ctx->depth_bits > 0 ? depth.data() : nullptr, width, height);
+  } catch (const std::bad_alloc&) {
+    ctx->setError(GL_OUT_OF_MEMORY);
+    return GL_FALSE;
   }
+  ctx->depth.swap(depth);  // the storage moves with the swap: the renderer's pointer stays valid
   ctx->color = static_cast<uint8_t*>(buffer);
   ctx->width = width;
   ctx->height = height;
-  ctx->renderer.setTarget(ctx->color, ctx->depth_bits > 0 ? ctx->depth.data() : nullptr, width, height);
   if (!ctx->ever_bound) {
     // As in GL, the viewport starts as the whole first drawable.
     ctx->viewport[0] = 0;

@@ -48,8 +48,18 @@ GLuint pfglCompileFieldParamsEXT(GLenum format, const GLchar* name, const GLchar
     ctx->field_failed_log = log.format();
     return 0;
   }
-  ctx->fields.push_back(std::make_unique<const pf::field::ImplicitField>(name, std::move(*tape), lipschitz));
-  ctx->field_logs.push_back(log.format());
+  try {
+    // Both lists grow together (an id names its field and its log) or neither does.
+    ctx->field_logs.reserve(ctx->field_logs.size() + 1);
+    ctx->fields.reserve(ctx->fields.size() + 1);
+    auto field = std::make_unique<const pf::field::ImplicitField>(name, std::move(*tape), lipschitz);
+    std::string field_log = log.format();
+    ctx->fields.push_back(std::move(field));
+    ctx->field_logs.push_back(std::move(field_log));
+  } catch (const std::bad_alloc&) {
+    ctx->setError(GL_OUT_OF_MEMORY);
+    return 0;
+  }
   return static_cast<GLuint>(ctx->fields.size());
 }
 

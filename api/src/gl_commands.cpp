@@ -159,8 +159,12 @@ void pfglClear(GLbitfield mask) {
     return;
   }
   bool depth = (mask & GL_DEPTH_BUFFER_BIT) && ctx->depth_bits > 0 && ctx->depth_write;
-  ctx->renderer.clear((mask & GL_COLOR_BUFFER_BIT) != 0 && ctx->color_mask != 0, depth, ctx->clear_color,
-                      ctx->clear_depth, ctx->color_mask);
+  try {  // a clear after drawing draws first
+    ctx->renderer.clear((mask & GL_COLOR_BUFFER_BIT) != 0 && ctx->color_mask != 0, depth, ctx->clear_color,
+                        ctx->clear_depth, ctx->color_mask);
+  } catch (const std::bad_alloc&) {
+    ctx->outOfMemory("glClear");
+  }
 }
 
 void pfglClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) {

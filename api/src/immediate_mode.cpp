@@ -376,24 +376,11 @@ GLuint PFcontextRec::paramId(const std::string& name) {
   return id;
 }
 
-extern "C" {
-
-void pfglBegin(GLenum mode) {
-  PFcontextRec* ctx = currentContext();
-  if (!ctx) return;
-  if (ctx->in_begin) {
-    ctx->setError(GL_INVALID_OPERATION);
-    return;
-  }
-  auto it = ctx->primitives.by_mode.find(mode);
-  if (it == ctx->primitives.by_mode.end()) {
-    ctx->setError(GL_INVALID_ENUM);
-    return;
-  }
-  ctx->in_begin = true;
-  ctx->begin_out_of_memory = false;
+// glBegin's planning, once the mode is known: transforms, lighting, the rows' layout.
+static void startBegin(PFcontextRec& context, GLenum mode, const pf::CompiledPrimitive* primitive) {
+  PFcontextRec* ctx = &context;
   ctx->begin_mode = mode;
-  ctx->begin_primitive = it->second.get();
+  ctx->begin_primitive = primitive;
   ctx->begin_mvp = ctx->projection.top * ctx->modelview.top;
   // GL lights vertices: a primitive with a `vertex` parameter is lit per sequence point -- or,
   // under GL_PER_PIXEL_LIGHTING_EXT, per pixel from its interpolated position and normal.
@@ -427,6 +414,29 @@ void pfglBegin(GLenum mode) {
     ctx->reject_reason = std::to_string(ctx->row_channels / 4) + " shading parameters bound to this mode need " +
                          std::to_string(ctx->row_channels) + " channels; at most " + std::to_string(pf::kMaxChannels) +
                          " fit";
+}
+
+extern "C" {
+
+void pfglBegin(GLenum mode) {
+  PFcontextRec* ctx = currentContext();
+  if (!ctx) return;
+  if (ctx->in_begin) {
+    ctx->setError(GL_INVALID_OPERATION);
+    return;
+  }
+  auto it = ctx->primitives.by_mode.find(mode);
+  if (it == ctx->primitives.by_mode.end()) {
+    ctx->setError(GL_INVALID_ENUM);
+    return;
+  }
+  ctx->in_begin = true;
+  ctx->begin_out_of_memory = false;
+  try {
+    startBegin(*ctx, mode, it->second.get());
+  } catch (const std::bad_alloc&) {  // planning the glBegin's rows: the glBegin is dropped
+    ctx->outOfMemory("glBegin");
+  }
 }
 
 void pfglEnd(void) {

@@ -61,9 +61,14 @@ GLuint pfglCompilePrimitivesEXT(const GLchar* source) {
   }
   // Instances already recorded keep the programs they were submitted with (the registry keeps
   // replaced programs alive), so replacing a primitive never changes pending drawing.
-  for (auto& p : module.primitives) ctx->primitives.add(p);
-  for (auto& p : module.interpolators) ctx->primitives.addInterpolator(p);
-  ctx->primitives.module_logs.push_back(log.format());
+  try {
+    for (auto& p : module.primitives) ctx->primitives.add(p);
+    for (auto& p : module.interpolators) ctx->primitives.addInterpolator(p);
+    ctx->primitives.module_logs.push_back(log.format());
+  } catch (const std::bad_alloc&) {  // (primitives registered before it stay usable)
+    ctx->setError(GL_OUT_OF_MEMORY);
+    return 0;
+  }
   return static_cast<GLuint>(ctx->primitives.module_logs.size());
 }
 

@@ -262,7 +262,9 @@ class TapeTranslator {
       result_ = builder_.select(cond, then_result, result_);
     }
     if (then_leaves && else_leaves && then_flow.flow == else_flow.flow && then_flow.levels == else_flow.levels) {
-      alive_ = saved_alive;  // every point here leaves the same way: the enclosing block sees it whole
+      // Every point still running here leaves the same way: the enclosing block sees it whole --
+      // less the points exits inside the branches took already.
+      alive_ = exits_recorded_ != exits_before ? either(then_alive, else_alive) : saved_alive;
       for (size_t v = 0; v < env_.size(); ++v) env_[v] = choose(v, cond, then_env[v], env_[v], loc);
       return then_flow;
     }
@@ -314,10 +316,14 @@ class TapeTranslator {
       if (c.flow != Flow::Normal) return c;
       if (n.cond >= 0 && !decide(n.cond, n.inst.loc, "this loop's condition")) return {};
       Outcome b = block(*n.body_block);
-      // A break of every point still running, after some continued: a partial break, the
-      // others go on.
-      if (b.flow == Flow::Break && !loops_.back().continues.empty()) {
+      // A break of every point still running, after some points continued or left this loop
+      // part-way: a partial break -- the continuing points go on, and those that left keep
+      // their exits (a break past this loop must not carry them along).
+      const LoopFrame& frame = loops_.back();
+      if (b.flow == Flow::Break && (!frame.continues.empty() || frame.alive != frame.alive_at_entry)) {
+        const bool others_go_on = !frame.continues.empty();
         recordExit(b, alive_, env_, n.inst.loc);
+        if (!others_go_on) return {};  // nobody is left in the loop: it ends here
         b = {};
       }
       // The points that continued part-way rejoin at the step, with their values.

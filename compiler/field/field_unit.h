@@ -11,11 +11,12 @@
 // A field's point-dependent part may use only what a tape can evaluate soundly: + - * /, min,
 // max, abs, sqrt, exp, log, sin, cos, atan, and what is built from them: tan (sin / cos), asin,
 // acos and atan2 (through atan), pow (constant integer exponents as products; otherwise
-// exp(y log x)). Comparisons and && || ! of point-dependent values are tape values (1 or 0);
+// exp(y log x)). Comparisons, && || !, sign and step of point-dependent values are tape values;
 // an `if` or ?: on one runs both branches and joins them with the tape's Select (a float or
-// bool chosen per point). A loop whose count depends on the point, a break/continue under such
-// an if, a point-dependent int, and floor/ceil/sign/mod/noise of a point-dependent value are
-// compile errors that name the line (an unsupported value is an error only where it is used).
+// bool chosen per point), and break/continue/return taken at some points only are masked as in
+// the pixel programs. A loop whose count depends on the point, a point-dependent int, and
+// floor/ceil/mod/noise of a point-dependent value are compile errors that name the line (an
+// unsupported value is an error only where it is used).
 #pragma once
 
 #include <optional>

@@ -242,6 +242,18 @@ TEST(FieldUnit, PointDependentBranchesBecomeSelects) {
                           "  for (int i = 0; i < 3; i += 1) {\n    s += 1.0;\n    if (p.x > 0.0) { continue; }\n"
                           "    break;\n  }\n  return s;\n}\n"),
                 [](double x, double, double) { return x > 0 ? 3.0 : 1.0; }, 0.0);
+  // A return from the loop (a break past it) after other points broke out of it part-way: those
+  // run the code after the loop. (Found in review: they lost it.)
+  expectMatches(compileOk("float g(point p) {\n  for (int i = 0; i < 4; i += 1) {\n"
+                          "    if (p.x < float(i)) break;\n    if (i == 3) return 1.0;\n  }\n  return -1.0;\n}\n"
+                          "field float f(point p) { return g(p); }\n"),
+                [](double x, double, double) { return x < 3 ? -1.0 : 1.0; }, 0.0);
+  // Both branches leave the same way after a continue inside one of them: the points that
+  // continued go on. (Found in review: the break took them along.)
+  expectMatches(compileOk("field float f(point p) {\n  float s = 0.0;\n  for (int i = 0; i < 3; i += 1) {\n"
+                          "    s += 1.0;\n    if (p.x > 0.0) {\n      if (p.y > 0.0) continue;\n      break;\n"
+                          "    } else {\n      break;\n    }\n  }\n  return s;\n}\n"),
+                [](double x, double y, double) { return x > 0 && y > 0 ? 3.0 : 1.0; }, 0.0);
   // The unchosen side's inf never reaches the value: a guarded division, at the guard itself.
   const FieldTape guarded = compileOk("field float f(point p) { return p.x != 0.0 ? 1.0 / p.x : 0.0; }");
   EXPECT_EQ(testing::evaluateDouble(guarded, 0.0, 0.0, 0.0), 0.0);

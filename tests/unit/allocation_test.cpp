@@ -278,6 +278,24 @@ TEST(OutOfMemory, FailedAllocationsAreGlOutOfMemoryAndTheContextGoesOn) {
   EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
   EXPECT_TRUE(redAt(px2, 100, 100));
 
+  // A glClear after drawing draws first: the same failure there.
+  std::vector<unsigned char> px3(256 * 256 * 4);
+  PFcontext third = pfCreateContextAttribs(attribs);
+  ASSERT_TRUE(pfMakeCurrent(third, px3.data(), GL_UNSIGNED_BYTE, 256, 256));
+  pfglMatrixMode(GL_PROJECTION);
+  pfglOrtho(0, 256, 0, 256, -1, 1);
+  drawRedTriangle();
+  g_fail_from_bytes = 16 * 1024;
+  pfglClear(GL_COLOR_BUFFER_BIT);
+  g_fail_from_bytes = 0;
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_OUT_OF_MEMORY));
+  drawRedTriangle();
+  pfglFinish();
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  EXPECT_TRUE(redAt(px3, 100, 100));
+  pfDestroyContext(third);
+  ASSERT_TRUE(pfMakeCurrent(fresh, px2.data(), GL_UNSIGNED_BYTE, 256, 256));
+
   // A framebuffer past memory: pfMakeCurrent fails, the context keeps its drawable.
   std::vector<unsigned char> big(16);
   g_fail_from_bytes = 64 * 1024;
