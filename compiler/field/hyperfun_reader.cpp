@@ -224,7 +224,7 @@ class Compiler {
         case Op::NotEqual: return {compare(FieldOp::LessEq, Real::known(kEps), m.abs(m.sub(a, b))), true};
         case Op::And: return {m.min(truthOf(ta), truthOf(tb)), true};
         case Op::Or: return {m.max(truthOf(ta), truthOf(tb)), true};
-        default: fail(e, "unexpected operator " + opSpelling(e.op));
+        default: failUnexpected(e, "unexpected operator in a condition");
       }
     }
     return {real(f, e), false};
@@ -289,52 +289,69 @@ class Compiler {
     return static_cast<size_t>(k) - 1;
   }
 
+  // An expression's value. real() recurses once per level of nesting (up to the parser's 4000),
+  // so its own frame holds nothing but the recursion: each case's work, and every message
+  // built for an error, is in a function of its own (never inlined into it) -- under
+  // AddressSanitizer a std::string temporary costs a padded stack slot per level.
   Real real(Frame& f, const Expr& e) {
-    TapeAlgebra& m = alg_;
     switch (e.kind) {
       case Expr::Kind::Number:
         return Real::known(e.number);
       case Expr::Kind::Name:
         return variable(f, e);
-      case Expr::Kind::Element: {
-        ArrayValue* arr = findArray(f, e.name);
-        if (!arr)
-          fail(e, quoted(e.name) + (f.variables.count(e.name) ? " is a variable, not an array" : " is not an array"));
-        const size_t k = index(f, e.args[0], e.name, *arr);
-        if (!arr->assigned[k])
-          fail(e, quoted(e.name + "[" + std::to_string(k + 1) + "]") + " is used before it is assigned");
-        return arr->items[k];
-      }
-      case Expr::Kind::Unary: {
-        const Real a = real(f, e.args[0]);
-        if (e.op == Op::Plus) return a;
-        if (e.op == Op::Negate || e.op == Op::Complement) return m.neg(a);
-        fail(e, opSpelling(e.op) + " is allowed only in the condition of 'if' or 'while'");
-      }
+      case Expr::Kind::Element:
+        return element(f, e);
+      case Expr::Kind::Unary:
+        return unaryOperator(e, real(f, e.args[0]));
       case Expr::Kind::Binary: {
-        if (e.op >= Op::Less) fail(e, opSpelling(e.op) + " is allowed only in the condition of 'if' or 'while'");
+        if (e.op >= Op::Less) failConditionOnly(e);
         const Real a = real(f, e.args[0]);
-        const Real b = real(f, e.args[1]);
-        switch (e.op) {
-          case Op::Add: return m.add(a, b);
-          case Op::Sub: return m.sub(a, b);
-          case Op::Mul: return m.mul(a, b);
-          case Op::Div: return m.div(a, b);
-          case Op::Pow: return m.pow(a, b);
-          case Op::Union: return m.unite(a, b);
-          case Op::Intersection: case Op::Product: return m.intersect(a, b);
-          case Op::Subtraction: return m.subtract(a, b);
-          default: break;
-        }
-        fail(e, "unexpected operator " + opSpelling(e.op));
+        return binaryOperator(e, a, real(f, e.args[1]));
       }
       case Expr::Kind::Call:
         return call(f, e);
     }
-    fail(e, "unexpected expression");
+    failUnexpected(e, "unexpected expression");
   }
 
-  Real variable(Frame& f, const Expr& e) {
+  [[gnu::noinline]] Real element(Frame& f, const Expr& e) {
+    ArrayValue* arr = findArray(f, e.name);
+    if (!arr)
+      fail(e, quoted(e.name) + (f.variables.count(e.name) ? " is a variable, not an array" : " is not an array"));
+    const size_t k = index(f, e.args[0], e.name, *arr);
+    if (!arr->assigned[k])
+      fail(e, quoted(e.name + "[" + std::to_string(k + 1) + "]") + " is used before it is assigned");
+    return arr->items[k];
+  }
+
+  [[gnu::noinline]] Real unaryOperator(const Expr& e, Real a) {
+    if (e.op == Op::Plus) return a;
+    if (e.op == Op::Negate || e.op == Op::Complement) return alg_.neg(a);
+    failConditionOnly(e);
+  }
+
+  [[gnu::noinline]] Real binaryOperator(const Expr& e, Real a, Real b) {
+    TapeAlgebra& m = alg_;
+    switch (e.op) {
+      case Op::Add: return m.add(a, b);
+      case Op::Sub: return m.sub(a, b);
+      case Op::Mul: return m.mul(a, b);
+      case Op::Div: return m.div(a, b);
+      case Op::Pow: return m.pow(a, b);
+      case Op::Union: return m.unite(a, b);
+      case Op::Intersection: case Op::Product: return m.intersect(a, b);
+      case Op::Subtraction: return m.subtract(a, b);
+      default: break;
+    }
+    fail(e, "unexpected operator " + opSpelling(e.op));
+  }
+
+  [[noreturn, gnu::noinline]] void failConditionOnly(const Expr& e) {
+    fail(e, opSpelling(e.op) + " is allowed only in the condition of 'if' or 'while'");
+  }
+  [[noreturn, gnu::noinline]] void failUnexpected(const Expr& e, const char* message) { fail(e, message); }
+
+  [[gnu::noinline]] Real variable(Frame& f, const Expr& e) {
     auto it = f.variables.find(e.name);
     if (it != f.variables.end()) return it->second;
     if (auto one = f.one_branch.find(e.name); one != f.one_branch.end())
