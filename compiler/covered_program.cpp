@@ -61,7 +61,7 @@ std::optional<PixelProgram> coveredVariant(const PixelProgram& program) {
     const Instr& in = code[pc];
     if (!keep[pc]) continue;
     if (isJump(in.op) && in.a <= pc) return std::nullopt;  // a loop: not a prefix after all
-    if (isPureValue(in) && !read[operandIndex(in.dst)]) {
+    if (isPureValue(in) && operandIndex(in.dst) < read.size() && !read[operandIndex(in.dst)]) {
       keep[pc] = 0;
       continue;
     }

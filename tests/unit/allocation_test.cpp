@@ -227,6 +227,24 @@ bool redAt(const std::vector<unsigned char>& px, int x, int y) {
   return p[0] == 255 && p[1] == 0 && p[2] == 0;
 }
 
+// A 256x256 context on 2 threads, made current on `px`, projecting window coordinates.
+PFcontext windowContext(std::vector<unsigned char>& px) {
+  const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_THREADS, 2, 0};
+  PFcontext ctx = pfCreateContextAttribs(attribs);
+  if (!ctx || !pfMakeCurrent(ctx, px.data(), GL_UNSIGNED_BYTE, 256, 256)) return nullptr;
+  pfglMatrixMode(GL_PROJECTION);
+  pfglOrtho(0, 256, 0, 256, -1, 1);
+  return ctx;
+}
+
+// After a failure: the current context draws the red triangle again, with no error.
+void expectDrawsAgain(const std::vector<unsigned char>& px) {
+  drawRedTriangle();
+  pfglFinish();
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  EXPECT_TRUE(redAt(px, 100, 100));
+}
+
 }  // namespace
 
 // A request past memory gives GL_OUT_OF_MEMORY, never a crash, and the context draws again
@@ -234,12 +252,8 @@ bool redAt(const std::vector<unsigned char>& px, int x, int y) {
 // while the rasterizer's threads draw a frame (their tile buffers), and for a framebuffer.
 TEST(OutOfMemory, FailedAllocationsAreGlOutOfMemoryAndTheContextGoesOn) {
   std::vector<unsigned char> px(256 * 256 * 4);
-  const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_THREADS, 2, 0};
-  PFcontext ctx = pfCreateContextAttribs(attribs);
+  PFcontext ctx = windowContext(px);
   ASSERT_NE(ctx, nullptr);
-  ASSERT_TRUE(pfMakeCurrent(ctx, px.data(), GL_UNSIGNED_BYTE, 256, 256));
-  pfglMatrixMode(GL_PROJECTION);
-  pfglOrtho(0, 256, 0, 256, -1, 1);
 
   // While a glBegin records: its vertex rows outgrow 64 KB.
   g_fail_from_bytes = 64 * 1024;
@@ -255,17 +269,12 @@ TEST(OutOfMemory, FailedAllocationsAreGlOutOfMemoryAndTheContextGoesOn) {
   EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_OUT_OF_MEMORY));
   EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
   pfglClear(GL_COLOR_BUFFER_BIT);
-  drawRedTriangle();
-  pfglFinish();
-  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
-  EXPECT_TRUE(redAt(px, 100, 100));
+  expectDrawsAgain(px);
 
   // While the frame is drawn: a fresh context's first frame sizes its tiles' buffers.
   std::vector<unsigned char> px2(256 * 256 * 4);
-  PFcontext fresh = pfCreateContextAttribs(attribs);
-  ASSERT_TRUE(pfMakeCurrent(fresh, px2.data(), GL_UNSIGNED_BYTE, 256, 256));
-  pfglMatrixMode(GL_PROJECTION);
-  pfglOrtho(0, 256, 0, 256, -1, 1);
+  PFcontext fresh = windowContext(px2);
+  ASSERT_NE(fresh, nullptr);
   pfglClear(GL_COLOR_BUFFER_BIT);
   drawRedTriangle();
   g_fail_from_bytes = 16 * 1024;
@@ -273,26 +282,18 @@ TEST(OutOfMemory, FailedAllocationsAreGlOutOfMemoryAndTheContextGoesOn) {
   g_fail_from_bytes = 0;
   EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_OUT_OF_MEMORY));
   pfglClear(GL_COLOR_BUFFER_BIT);
-  drawRedTriangle();
-  pfglFinish();
-  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
-  EXPECT_TRUE(redAt(px2, 100, 100));
+  expectDrawsAgain(px2);
 
   // A glClear after drawing draws first: the same failure there.
   std::vector<unsigned char> px3(256 * 256 * 4);
-  PFcontext third = pfCreateContextAttribs(attribs);
-  ASSERT_TRUE(pfMakeCurrent(third, px3.data(), GL_UNSIGNED_BYTE, 256, 256));
-  pfglMatrixMode(GL_PROJECTION);
-  pfglOrtho(0, 256, 0, 256, -1, 1);
+  PFcontext third = windowContext(px3);
+  ASSERT_NE(third, nullptr);
   drawRedTriangle();
   g_fail_from_bytes = 16 * 1024;
   pfglClear(GL_COLOR_BUFFER_BIT);
   g_fail_from_bytes = 0;
   EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_OUT_OF_MEMORY));
-  drawRedTriangle();
-  pfglFinish();
-  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
-  EXPECT_TRUE(redAt(px3, 100, 100));
+  expectDrawsAgain(px3);
   pfDestroyContext(third);
   ASSERT_TRUE(pfMakeCurrent(fresh, px2.data(), GL_UNSIGNED_BYTE, 256, 256));
 
