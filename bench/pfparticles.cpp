@@ -1,7 +1,7 @@
 // pfparticles: many small spheres in one glBegin -- particles, the atoms of a molecule -- drawn
 // by a sphere primitive through the API, timed (docs/performance.md, "100k spheres").
 //   pfparticles [--primitive sphere_impostors|sphere] [--count 100000] [--threads 1]
-//               [--frames 5] [--size 1024]
+//               [--frames 5] [--size 1024] [--stats]
 // Spheres of 5-20 pixels at random places in a frustum, lit, each its own colour. Each frame
 // times the API calls, glEnd (setup and binning) and glFinish (rasterization and shading);
 // prints the median and the fastest frame, and the median glEnd. PF_SETUP_BATCH=0 sets the
@@ -16,15 +16,20 @@
 #include <random>
 #include <vector>
 
+// The context internals, for --stats only.
+#include "api/src/context_state.h"
+
 int main(int argc, char** argv) {
   CLI::App app{"pfparticles: many small spheres through the API, timed"};
   std::string primitive = "sphere_impostors";
   int count = 100000, threads = 1, frames = 5, size = 1024;
+  bool stats = false;
   app.add_option("--primitive", primitive, "the sphere primitive");
   app.add_option("--count", count, "spheres")->check(CLI::Range(1, 10000000));
   app.add_option("--threads", threads, "rasterizer threads")->check(CLI::Range(0, 256));
   app.add_option("--frames", frames, "timed frames (after one warm-up)")->check(CLI::Range(1, 1000));
   app.add_option("--size", size, "image size (square)")->check(CLI::Range(16, 8192));
+  app.add_flag("--stats", stats, "print the last frame's work counters");
   CLI11_PARSE(app, argc, argv);
 
   std::vector<unsigned char> pixels(static_cast<size_t>(size) * size * 4);
@@ -86,6 +91,21 @@ int main(int argc, char** argv) {
               "binning) median %.1f ms\n",
               primitive.c_str(), count, size, size, pfGetThreadCount(ctx), ms[ms.size() / 2], ms.front(), frames,
               end_ms[end_ms.size() / 2]);
+  if (stats) {
+    // The counters add up since the context was made; every frame draws the same.
+    const pf::FrameStats& s = ctx->renderer.stats();
+    const double n = frames + 1.0;
+    std::printf("per frame: %.0f blocks run (%.0f packed, %.0f accepted, %.0f rejected), %.1f%% lanes active at "
+                "start, %.1f%% committed; %.0f pixel instructions (%.1f per block), %.0f setup instructions (%.0f "
+                "per sphere)\n",
+                double(s.blocks_run) / n, double(s.blocks_packed) / n, double(s.blocks_accepted) / n,
+                double(s.blocks_rejected) / n,
+                s.blocks_run ? 100.0 * double(s.lanes_started) / (64.0 * double(s.blocks_run)) : 0.0,
+                s.blocks_run ? 100.0 * double(s.lanes_committed) / (64.0 * double(s.blocks_run)) : 0.0,
+                double(s.pixel_instructions) / n,
+                s.blocks_run ? double(s.pixel_instructions) / double(s.blocks_run) : 0.0,
+                double(s.setup_instructions) / n, double(s.setup_instructions) / (n * count));
+  }
   pfDestroyContext(ctx);
   return 0;
 }

@@ -55,6 +55,8 @@ class Generator {
         break;
       if (op == Op::Retire) pixel_.last_coverage_retire = static_cast<int32_t>(pc);
     }
+    for (const Instr& ins : pixel_.code)
+      if (ins.op == Op::FieldHit) pixel_.casts_block_rays = true;
     if (std::optional<PixelProgram> covered = coveredVariant(pixel_))
       pixel_.covered = std::make_shared<const PixelProgram>(std::move(*covered));
     result_.pixel = std::move(pixel_);

@@ -159,6 +159,9 @@ struct PixelProgram : Bytecode {
   uint32_t num_uniform_slots = 0;
   uint32_t num_interp_uniform_slots = 0;
   bool reads_surface = false;  // reads the built-in P or N registers (else they are not set up)
+  // Has a FieldHit: its rays are those of an aligned block's pixels (raster/field/ray_caster.h),
+  // so it never runs on packed lanes (PixelExecutor::runPackedBlock).
+  bool casts_block_rays = false;
   // The last Retire before the first loop (-1: none): how far block rejection needs to look.
   int32_t last_early_retire = -1;
   // The last Retire before anything block rejection cannot follow (a depth test, a field

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdlib>
 #include <cstring>
+#include <stdexcept>
 #include <utility>
 
 #include "compiler/scalar_ops.h"
@@ -65,7 +66,6 @@ void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* reco
                              const ChannelLayout& layout, const RasterState& state,
                              uint32_t shade_id, int bx, int by, uint64_t mask,
                              const BlockTarget& target, const uint32_t* shared_records) {
-  const int nch = layout.count;
   // Only blocks that start full are tested: an instance whose bound cuts every block it touches
   // (a small triangle) would pay for the test and rarely gain (measured: docs/performance.md).
   // A region certainly retired is skipped; one where no coverage test can fail runs the program
@@ -82,9 +82,35 @@ void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* reco
       ++counters.blocks_accepted;
     }
   }
+  runAndCommit(prim, *program, record, layout, state, shade_id, bx, by, nullptr, mask, target, shared_records);
+}
+
+void PixelExecutor::runPackedBlock(const CompiledPrimitive& prim, const uint32_t* record,
+                                   const ChannelLayout& layout, const RasterState& state, uint32_t shade_id,
+                                   const PackedLanes& lanes, uint64_t mask, const BlockTarget& target,
+                                   const uint32_t* shared_records) {
+  // A program casting an aligned block's rays cannot run here (the renderer asks packs() first).
+  if (!packs(prim, layout)) throw std::logic_error("runPackedBlock: " + prim.name + " casts block rays");
+  ++counters.blocks_packed;
+  runAndCommit(prim, prim.pixel, record, layout, state, shade_id, 0, 0, &lanes, mask, target, shared_records);
+}
+
+bool PixelExecutor::packs(const CompiledPrimitive& prim, const ChannelLayout& layout) {
+  if (prim.pixel.casts_block_rays) return false;
+  for (const ChannelLayout::SharedInterpolator& s : layout.shared)
+    if (s.program->pixel.casts_block_rays) return false;
+  return true;
+}
+
+void PixelExecutor::runAndCommit(const CompiledPrimitive& prim, const PixelProgram& program, const uint32_t* record,
+                                 const ChannelLayout& layout, const RasterState& state, uint32_t shade_id, int bx,
+                                 int by, const PackedLanes* packed, uint64_t mask, const BlockTarget& target,
+                                 const uint32_t* shared_records) {
+  const int nch = layout.count;
   ++counters.blocks_run;
   counters.lanes_started += static_cast<uint64_t>(__builtin_popcountll(mask));
-  const uint64_t alive = execute(prim, *program, record, layout, state, bx, by, mask, target, shared_records, nullptr);
+  const uint64_t alive =
+      execute(prim, program, record, layout, state, bx, by, packed, mask, target, shared_records, nullptr);
 
   // Commit: the lanes still alive are this instance's pixels.
   counters.lanes_committed += static_cast<uint64_t>(__builtin_popcountll(alive));
@@ -100,6 +126,20 @@ void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* reco
       target.slots[layout.surface_slot + 3 + k][t] = has ? asF(surface_[static_cast<size_t>(4 + k) * kLanes + i]) : 0.0f;
     }
   };
+  // Lane i to the tile's G-buffer entry t.
+  auto commitLane = [&](int i, size_t t) {
+    target.shade_ids[t] = shade_id;
+    for (int ch = 0; ch < nch; ++ch) target.slots[layout.gbuffer_slot[ch]][t] = asF(staging_[static_cast<size_t>(ch) * kLanes + i]);
+    if (commit_surface) commitSurface(i, t);
+  };
+  if (packed) {
+    for (uint64_t m = alive; m; m &= m - 1) {
+      const int i = __builtin_ctzll(m);
+      commitLane(i, static_cast<size_t>(packed->y[i] - target.tile_y0) * kTileSize +
+                        static_cast<size_t>(packed->x[i] - target.tile_x0));
+    }
+    return;
+  }
   // Row by row: a whole row's channels are copied at once.
   for (int row = 0; row < kBlockSize; ++row) {
     const unsigned row_mask = static_cast<unsigned>(alive >> (row * kBlockSize)) & ((1u << kBlockSize) - 1u);
@@ -115,20 +155,14 @@ void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* reco
         for (int lx = 0; lx < kBlockSize; ++lx) commitSurface(i0 + lx, t0 + static_cast<size_t>(lx));
       continue;
     }
-    for (int lx = 0; lx < kBlockSize; ++lx) {
-      if (!((row_mask >> lx) & 1u)) continue;
-      const int i = i0 + lx;
-      const size_t t = t0 + static_cast<size_t>(lx);
-      target.shade_ids[t] = shade_id;
-      for (int ch = 0; ch < nch; ++ch) target.slots[layout.gbuffer_slot[ch]][t] = asF(staging_[static_cast<size_t>(ch) * kLanes + i]);
-      if (commit_surface) commitSurface(i, t);
-    }
+    for (int lx = 0; lx < kBlockSize; ++lx)
+      if ((row_mask >> lx) & 1u) commitLane(i0 + lx, t0 + static_cast<size_t>(lx));
   }
 }
 
 void PixelExecutor::runSharedInterpolators(const CompiledPrimitive& prim, const ChannelLayout& layout,
-                                           const RasterState& state, int bx, int by, uint64_t exec,
-                                           const uint32_t* const p[4], const bool p_wide[4],
+                                           const RasterState& state, int bx, int by, const PackedLanes* packed,
+                                           uint64_t exec, const uint32_t* const p[4], const bool p_wide[4],
                                            const uint32_t* shared_records) {
   if (layout.shared.empty() || exec == 0 || !shared_records) return;
   alignas(64) uint32_t p_lanes[4 * kLanes];
@@ -141,8 +175,8 @@ void PixelExecutor::runSharedInterpolators(const CompiledPrimitive& prim, const 
     if (prim.computesInterpolator(s.program->name)) continue;
     PixelExecutor& sub = *shared_;
     sub.shade_out_.assign(4 * kLanes, 0u);
-    sub.execute(*s.program, s.program->pixel, shared_records + s.record_offset, kNoChannels, state, bx, by, exec,
-                BlockTarget{}, nullptr, p_lanes);
+    sub.execute(*s.program, s.program->pixel, shared_records + s.record_offset, kNoChannels, state, bx, by, packed,
+                exec, BlockTarget{}, nullptr, p_lanes);
     for (int k = 0; k < 4; ++k) {
       uint32_t* d = staging_.data() + static_cast<size_t>(s.first + k) * kLanes;
       const uint32_t* v = sub.shade_out_.data() + static_cast<size_t>(k) * kLanes;
@@ -160,8 +194,9 @@ void PixelExecutor::runSharedInterpolators(const CompiledPrimitive& prim, const 
 }
 
 uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const PixelProgram& program, const uint32_t* record,
-                                const ChannelLayout& layout, const RasterState& state, int bx, int by, uint64_t mask,
-                                const BlockTarget& target, const uint32_t* shared_records, const uint32_t* p_in) {
+                                const ChannelLayout& layout, const RasterState& state, int bx, int by,
+                                const PackedLanes* packed, uint64_t mask, const BlockTarget& target,
+                                const uint32_t* shared_records, const uint32_t* p_in) {
   ++run_serial_;  // field_hit()'s tapes belong to this run only
   const PixelProgram& p = program;
   const int nch = layout.count;
@@ -182,25 +217,40 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const PixelProgra
         R[(kRegP + k) * kLanes + i] = p_in ? p_in[k * kLanes + i] : (k == 3 ? fromF(1.0f) : 0u);
     std::fill_n(R + static_cast<size_t>(kRegN) * kLanes, 3 * kLanes, 0u);
   }
-  for (int i = 0; i < kLanes; ++i) {
-    R[kRegX * kLanes + i] = fromF(static_cast<float>(bx + (i % kBlockSize)) + 0.5f);
-    R[kRegY * kLanes + i] = fromF(static_cast<float>(by + (i / kBlockSize)) + 0.5f);
-  }
-  // Z: the depth buffer under the lanes in the mask (a block may reach past the framebuffer's
-  // edge: lanes outside the mask read nothing), row by row; 0 elsewhere.
-  for (int row = 0; row < kBlockSize; ++row) {
-    uint32_t* z = R + static_cast<size_t>(kRegZ) * kLanes + row * kBlockSize;
-    const unsigned row_mask = static_cast<unsigned>(mask >> (row * kBlockSize)) & ((1u << kBlockSize) - 1u);
-    if (!target.depth || row_mask == 0) {
-      std::fill_n(z, kBlockSize, 0u);
-      continue;
+  if (packed) {
+    // Each lane its own pixel; Z read where the mask says (lanes past it name no pixel).
+    for (int i = 0; i < kLanes; ++i) {
+      R[kRegX * kLanes + i] = fromF(static_cast<float>(packed->x[i]) + 0.5f);
+      R[kRegY * kLanes + i] = fromF(static_cast<float>(packed->y[i]) + 0.5f);
     }
-    const float* depth = target.depth + static_cast<size_t>(by + row) * target.depth_stride + bx;
-    if (row_mask == (1u << kBlockSize) - 1u) {
-      std::memcpy(z, depth, sizeof(float) * kBlockSize);
-      continue;
+    uint32_t* z = R + static_cast<size_t>(kRegZ) * kLanes;
+    std::fill_n(z, kLanes, 0u);
+    if (target.depth)
+      for (uint64_t m = mask; m; m &= m - 1) {
+        const int i = __builtin_ctzll(m);
+        z[i] = fromF(target.depth[static_cast<size_t>(packed->y[i]) * target.depth_stride + packed->x[i]]);
+      }
+  } else {
+    for (int i = 0; i < kLanes; ++i) {
+      R[kRegX * kLanes + i] = fromF(static_cast<float>(bx + (i % kBlockSize)) + 0.5f);
+      R[kRegY * kLanes + i] = fromF(static_cast<float>(by + (i / kBlockSize)) + 0.5f);
     }
-    for (int lx = 0; lx < kBlockSize; ++lx) z[lx] = (row_mask >> lx) & 1u ? fromF(depth[lx]) : 0u;
+    // Z: the depth buffer under the lanes in the mask (a block may reach past the framebuffer's
+    // edge: lanes outside the mask read nothing), row by row; 0 elsewhere.
+    for (int row = 0; row < kBlockSize; ++row) {
+      uint32_t* z = R + static_cast<size_t>(kRegZ) * kLanes + row * kBlockSize;
+      const unsigned row_mask = static_cast<unsigned>(mask >> (row * kBlockSize)) & ((1u << kBlockSize) - 1u);
+      if (!target.depth || row_mask == 0) {
+        std::fill_n(z, kBlockSize, 0u);
+        continue;
+      }
+      const float* depth = target.depth + static_cast<size_t>(by + row) * target.depth_stride + bx;
+      if (row_mask == (1u << kBlockSize) - 1u) {
+        std::memcpy(z, depth, sizeof(float) * kBlockSize);
+        continue;
+      }
+      for (int lx = 0; lx < kBlockSize; ++lx) z[lx] = (row_mask >> lx) & 1u ? fromF(depth[lx]) : 0u;
+    }
   }
 
   const uint32_t* xrecord = record + p.num_uniform_slots;
@@ -406,6 +456,13 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const PixelProgra
         if (!target.depth || !state.depth_test || !state.depth_write) continue;
         bool w;
         const uint32_t* z = src(ins.a, w);
+        if (packed) {
+          for (uint64_t m = exec; m; m &= m - 1) {
+            const int i = __builtin_ctzll(m);
+            target.depth[static_cast<size_t>(packed->y[i]) * target.depth_stride + packed->x[i]] = asF(w ? z[i] : z[0]);
+          }
+          continue;
+        }
         // Row by row; whole rows of a wide Z by memcpy (the lanes outside exec may lie past the
         // framebuffer's edge: never touched).
         for (int row = 0; row < kBlockSize; ++row) {
@@ -436,7 +493,7 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const PixelProgra
         bool pw[4];
         const uint32_t ops[4] = {ins.a, ins.b, ins.c, ins.d};
         for (int k = 0; k < 4; ++k) pv[k] = src(ops[k], pw[k]);
-        runSharedInterpolators(prim, layout, state, bx, by, exec, pv, pw, shared_records);
+        runSharedInterpolators(prim, layout, state, bx, by, packed, exec, pv, pw, shared_records);
         continue;
       }
       case Op::SurfaceCommit: {  // P (imm 0) or N (imm 1) of the lanes alive at the end

@@ -28,10 +28,20 @@ struct BlockTarget {
   int tile_x0 = 0, tile_y0 = 0;   // window coordinates of the tile's first pixel
 };
 
+// The pixels of a packed block: lane i is pixel (x[i], y[i]) -- any pixels of one tile, each
+// at most once. A small instance's bound cuts the aligned blocks it touches (a sphere 10 pixels
+// across touches 4-9 of them, most lanes outside it); packed, its pixels fill whole blocks
+// (Renderer::runTile decides). Every lane computes the same bits wherever it sits.
+struct PackedLanes {
+  int32_t x[kLanes];
+  int32_t y[kLanes];
+};
+
 struct BlockCounters {
   uint64_t blocks_run = 0;
   uint64_t blocks_rejected = 0;  // skipped whole by block_rejection.h (not in blocks_run)
   uint64_t blocks_accepted = 0;  // run by the covered program, without coverage tests (in blocks_run)
+  uint64_t blocks_packed = 0;    // run on packed lanes (in blocks_run)
   uint64_t lanes_started = 0;
   uint64_t lanes_committed = 0;
   uint64_t blocks_covered = 0;  // blocks whose every lane committed (the instance covers them whole)
@@ -60,6 +70,15 @@ class PixelExecutor {
   void runBlock(const CompiledPrimitive& prim, const uint32_t* record, const ChannelLayout& layout,
                 const RasterState& state, uint32_t shade_id, int bx, int by, uint64_t mask,
                 const BlockTarget& target, const uint32_t* shared_records = nullptr);
+  // Runs the pixels `lanes` names, for the lanes set in `mask`, as runBlock runs an aligned
+  // block (without block rejection, which answers for aligned regions). Only for a primitive,
+  // and shared interpolators, that packs (packs()).
+  void runPackedBlock(const CompiledPrimitive& prim, const uint32_t* record, const ChannelLayout& layout,
+                      const RasterState& state, uint32_t shade_id, const PackedLanes& lanes, uint64_t mask,
+                      const BlockTarget& target, const uint32_t* shared_records = nullptr);
+  // Whether `prim` drawn with `layout` may run on packed lanes: none of its programs casts the
+  // rays of an aligned block (FieldHit).
+  static bool packs(const CompiledPrimitive& prim, const ChannelLayout& layout);
 
   BlockCounters counters;
   // Forgets the region verdicts remembered from earlier frames (keyed by program address: a
@@ -74,14 +93,20 @@ class PixelExecutor {
  private:
   // Runs a program over the block; returns the lanes alive at its end. `p_in`: P's 4 components
   // (kLanes each) for a shared interpolator, null for a primitive (P starts at (0, 0, 0, 1)).
-  // `program` is prim.pixel, or its covered variant (block_rejection.h).
+  // `program` is prim.pixel, or its covered variant (block_rejection.h). `packed`: the lanes'
+  // pixels, or null for the aligned block at (bx, by).
   uint64_t execute(const CompiledPrimitive& prim, const PixelProgram& program, const uint32_t* record,
-                   const ChannelLayout& layout, const RasterState& state, int bx, int by, uint64_t mask,
-                   const BlockTarget& target, const uint32_t* shared_records, const uint32_t* p_in);
+                   const ChannelLayout& layout, const RasterState& state, int bx, int by, const PackedLanes* packed,
+                   uint64_t mask, const BlockTarget& target, const uint32_t* shared_records, const uint32_t* p_in);
+  // Runs `program` over the lanes and commits the lanes still alive to the target.
+  void runAndCommit(const CompiledPrimitive& prim, const PixelProgram& program, const uint32_t* record,
+                    const ChannelLayout& layout, const RasterState& state, uint32_t shade_id, int bx, int by,
+                    const PackedLanes* packed, uint64_t mask, const BlockTarget& target,
+                    const uint32_t* shared_records);
   // Runs the layout's shared interpolators for the `exec` lanes at surface point P (4 operands)
   // into their staging channels -- all but those `prim` computes itself (its `name:` labels).
   void runSharedInterpolators(const CompiledPrimitive& prim, const ChannelLayout& layout, const RasterState& state,
-                              int bx, int by, uint64_t exec, const uint32_t* const p[4], const bool p_wide[4],
+                              int bx, int by, const PackedLanes* packed, uint64_t exec, const uint32_t* const p[4], const bool p_wide[4],
                               const uint32_t* shared_records);
 
   // field_hit(): the box FieldBox staged, then the search over the block's `exec` lanes into t

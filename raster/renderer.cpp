@@ -7,10 +7,32 @@
 #include <cstring>
 
 namespace pf {
+namespace {
+
+// Whether the pixels [ix0, ix1) x [iy0, iy1) of the tile at (x0, y0) run in fewer blocks packed
+// (PixelExecutor::runPackedBlock) than on the aligned blocks they touch -- and none of those
+// blocks lies wholly inside them, where block rejection might skip it or run it without
+// coverage tests (a larger bound keeps the aligned blocks).
+bool packsBetter(int ix0, int ix1, int iy0, int iy1, int x0, int y0) {
+  auto blocksTouched = [](int a0, int a1, int origin) {
+    return (a1 - 1 - origin) / kBlockSize - (a0 - origin) / kBlockSize + 1;
+  };
+  auto blocksInside = [](int a0, int a1, int origin) {
+    return std::max(0, (a1 - origin) / kBlockSize - (a0 - origin + kBlockSize - 1) / kBlockSize);
+  };
+  if (ix1 <= ix0 || iy1 <= iy0) return false;
+  if (blocksInside(ix0, ix1, x0) > 0 && blocksInside(iy0, iy1, y0) > 0) return false;
+  const int packed = ((ix1 - ix0) * (iy1 - iy0) + kLanes - 1) / kLanes;
+  return packed < blocksTouched(ix0, ix1, x0) * blocksTouched(iy0, iy1, y0);
+}
+
+}  // namespace
 
 Renderer::Renderer(int threads) : pool_(threads) {
   // PF_SETUP_BATCH=0: every instance's setup scalar (for comparisons; images are identical).
   if (const char* e = std::getenv("PF_SETUP_BATCH")) setup_batching_ = std::strcmp(e, "0") != 0;
+  // PF_PACKED_LANES=0: small bounds on aligned blocks too (for comparisons; images are identical).
+  if (const char* e = std::getenv("PF_PACKED_LANES")) pack_small_bounds_ = std::strcmp(e, "0") != 0;
   for (int i = 0; i < pool_.threadCount(); ++i) scratch_.push_back(std::make_unique<WorkerScratch>());
 }
 
@@ -331,6 +353,24 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
     const ChannelLayout& layout = scene_.layouts[inst.layout];
     const RasterState& state = scene_.states[inst.state];
     const uint32_t* shared = inst.shared_offset == kNoShared ? nullptr : scene_.records.data() + inst.shared_offset;
+    if (pack_small_bounds_ && packsBetter(ix0, ix1, iy0, iy1, x0, y0) && PixelExecutor::packs(*inst.prim, layout)) {
+      // A small bound: its pixels, row by row, fill whole blocks of packed lanes.
+      PackedLanes& lanes = s.packed_lanes;
+      int n = 0;
+      for (int y = iy0; y < iy1; ++y)
+        for (int x = ix0; x < ix1; ++x) {
+          lanes.x[n] = x;
+          lanes.y[n] = y;
+          if (++n == kLanes) {
+            s.executor.runPackedBlock(*inst.prim, record, layout, state, inst.shade_id, lanes, ~0ull, target, shared);
+            n = 0;
+          }
+        }
+      if (n > 0)
+        s.executor.runPackedBlock(*inst.prim, record, layout, state, inst.shade_id, lanes, (1ull << n) - 1, target,
+                                  shared);
+      continue;
+    }
     // Blocks are aligned to the tile; lanes outside the instance's pixels start retired.
     for (int by = y0 + (iy0 - y0) / kBlockSize * kBlockSize; by < iy1; by += kBlockSize) {
       for (int bx = x0 + (ix0 - x0) / kBlockSize * kBlockSize; bx < ix1; bx += kBlockSize) {
@@ -370,6 +410,7 @@ void Renderer::flush() {
     stats_.lanes_committed += s->executor.counters.lanes_committed;
     stats_.blocks_covered += s->executor.counters.blocks_covered;
     stats_.blocks_accepted += s->executor.counters.blocks_accepted;
+    stats_.blocks_packed += s->executor.counters.blocks_packed;
     stats_.pixel_instructions += s->executor.counters.instructions;
     stats_.pixels_shaded += s->pixels_shaded;
     stats_.tiles_run += s->tiles_run;

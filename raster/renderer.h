@@ -34,6 +34,7 @@ struct FrameStats {
   uint64_t lanes_committed = 0;
   uint64_t blocks_covered = 0;        // blocks run whose every lane committed
   uint64_t blocks_accepted = 0;       // blocks run without coverage tests (PixelProgram::covered)
+  uint64_t blocks_packed = 0;         // blocks run on packed lanes (a small bound's pixels)
   uint64_t pixels_shaded = 0;
   uint64_t gbuffer_bytes = 0;         // G-buffer the tiles run used: per tile, the frame's layout's
                                       // slots and the shading-state ids, 64x64 x 4 bytes each
@@ -111,6 +112,7 @@ class Renderer : private SubInstanceSink {
  private:
   struct WorkerScratch {
     PixelExecutor executor;
+    PackedLanes packed_lanes;
     std::vector<uint32_t> shade_ids;
     std::vector<float> gbuffer;
     std::vector<float*> slot_planes;
@@ -138,6 +140,7 @@ class Renderer : private SubInstanceSink {
   BatchSetupExecutor batch_setup_;
   std::vector<uint32_t> batch_records_;
   bool setup_batching_ = true;
+  bool pack_small_bounds_ = true;  // PF_PACKED_LANES=0: every instance on aligned blocks
   uint64_t flushes_ = 0;
   uint32_t shared_offset_ = kNoShared;  // the shared records of the submission in progress
   uint64_t calls_this_submission_ = 0;  // instances its primitive calls made (submitCall)
