@@ -56,17 +56,13 @@ std::pair<double, int> castRay(const std::vector<Ball>& balls, double x, double 
   return {c.z / c.w * 0.5 + 0.5, which};
 }
 
-}  // namespace
-
-TEST(SphereImpostors, NearestSphereCoverageAndDepthMatchRayCastsInDouble) {
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> u(-1, 1);
-  std::vector<Ball> balls;
-  for (int i = 0; i < 60; ++i) balls.push_back({glm::dvec3(u(rng) * 1.4, u(rng) * 1.4, u(rng)), 0.12 + 0.1 * (u(rng) + 1), i});
-
+// Draws `balls` (object coordinates) in one glBegin under the test's matrices and judges every
+// pixel against castRay: the nearest sphere's colour and its window depth. Returns the pixels
+// judged and covered. `tolerance`: window depth.
+std::pair<int, int> drawAndJudge(const std::vector<Ball>& balls, double tolerance) {
   pf::test::GlContext c(kN, kN);
   const GLenum mode = pfglGetPrimitiveEXT("sphere_impostors");
-  ASSERT_NE(mode, 0u);
+  EXPECT_NE(mode, 0u);
   pfglMatrixMode(GL_PROJECTION);
   pfglFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 20.0);
   pfglMatrixMode(GL_MODELVIEW);
@@ -87,9 +83,10 @@ TEST(SphereImpostors, NearestSphereCoverageAndDepthMatchRayCastsInDouble) {
   }
   pfglEnd();
   pfglFinish();
-  ASSERT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
   const float* depth = c.depth();
-  ASSERT_NE(depth, nullptr);
+  EXPECT_NE(depth, nullptr);
+  if (!depth) return {0, 0};
 
   int judged = 0, undecided = 0, covered = 0;
   double max_error = 0;
@@ -103,15 +100,45 @@ TEST(SphereImpostors, NearestSphereCoverageAndDepthMatchRayCastsInDouble) {
       }
       ++judged;
       const unsigned char* p = c.at(x, y);
-      EXPECT_EQ(p[0], which < 0 ? 0 : 40 + 3 * which) << "(" << x << ", " << y << ")";
+      EXPECT_EQ(p[0], which < 0 ? 0 : 40 + 3 * balls[static_cast<size_t>(which)].id) << "(" << x << ", " << y << ")";
       if (which < 0) continue;
       ++covered;
       const double err = std::abs(depth[size_t(y) * kN + x] - z);
       max_error = std::max(max_error, err);
-      EXPECT_LT(err, 1e-6) << "(" << x << ", " << y << ")";
+      EXPECT_LT(err, tolerance) << "(" << x << ", " << y << ") sphere " << which;
     }
   std::printf("  %d pixels judged (%d covered), %d undecided; max depth error %.2g\n", judged, covered, undecided,
               max_error);
-  EXPECT_GT(covered, 3000);
   EXPECT_LT(undecided, judged / 20);
+  return {judged, covered};
+}
+
+}  // namespace
+
+TEST(SphereImpostors, NearestSphereCoverageAndDepthMatchRayCastsInDouble) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<Ball> balls;
+  for (int i = 0; i < 60; ++i) balls.push_back({glm::dvec3(u(rng) * 1.4, u(rng) * 1.4, u(rng)), 0.12 + 0.1 * (u(rng) + 1), i});
+  EXPECT_GT(drawAndJudge(balls, 1e-6).second, 3000);
+}
+
+// Spheres the near plane cuts (the inside of their far half shows), and spheres around the eye
+// -- one centred on it, whose centre has no window image, and one whose centre is behind it --
+// against the same double-precision ray casts. Window depth at the near plane (eye z = -1)
+// changes 36 times faster per eye-space unit than at the first test's spheres (z = -6): its
+// tolerance there, 4e-6, is 9 times tighter in eye space.
+TEST(SphereImpostors, NearPlaneCutsAndSpheresAroundTheEye) {
+  const glm::dmat4 to_object = glm::inverse(modelview());
+  auto ball = [&](glm::dvec3 eye_centre, double eye_radius, int id) {
+    return Ball{glm::dvec3(to_object * glm::dvec4(eye_centre, 1.0)), eye_radius / 1.3, id};
+  };
+  // Cut by the near plane (z = -1), in front of the spheres around the eye.
+  EXPECT_GT(drawAndJudge({ball({0.1, 0.0, -1.1}, 0.3, 0), ball({-0.3, 0.2, -0.95}, 0.25, 1),
+                          ball({0.0, 0.0, 0.0}, 8.0, 2)},
+                         4e-6)
+                .second,
+            kN * kN / 2);
+  EXPECT_GT(drawAndJudge({ball({0.2, -0.2, -1.05}, 0.2, 3), ball({0.2, 0.1, 0.5}, 1.8, 4)}, 4e-6).second,
+            kN * kN / 2);
 }
