@@ -2,7 +2,9 @@
 // instruction sets (see lane_kernels.h).
 #include "raster/lane_kernels.h"
 
+#include <algorithm>
 #include <array>
+#include <cstddef>
 #include <cstdlib>
 #include <cstring>
 #include <utility>
@@ -50,10 +52,36 @@ static_assert(kLanes % 16 == 0 && kLanes <= 64, "lane masks are 64-bit, handled 
   for (int i = 0; i < kLanes; ++i)
     if ((mask >> i) & 1u) d[i] = s[i];
 }
+// The depth loads' portable forms (the baseline set's too: SSE2 has no masked loads).
+void loadBlockPortable(uint32_t* __restrict d, const float* base, int stride, uint64_t mask) {
+  for (int row = 0; row < kBlockSize; ++row) {
+    uint32_t* z = d + row * kBlockSize;
+    const unsigned row_mask = static_cast<unsigned>(mask >> (row * kBlockSize)) & ((1u << kBlockSize) - 1u);
+    if (row_mask == 0) {
+      std::fill_n(z, kBlockSize, 0u);
+      continue;
+    }
+    const float* depth = base + static_cast<ptrdiff_t>(row) * stride;
+    if (row_mask == (1u << kBlockSize) - 1u) {
+      std::memcpy(z, depth, sizeof(float) * kBlockSize);
+      continue;
+    }
+    for (int lx = 0; lx < kBlockSize; ++lx) z[lx] = (row_mask >> lx) & 1u ? fromF(depth[lx]) : 0u;
+  }
+}
+void gatherPortable(uint32_t* __restrict d, const float* base, const int32_t* offset, uint64_t mask) {
+  for (int i = 0; i < kLanes; ++i) d[i] = (mask >> i) & 1u ? fromF(base[offset[i]]) : 0u;
+}
 
 struct Baseline {
   template <Op OP, unsigned WIDE>
   static void run(PF_LANE_PARAMS) { PF_LANE_LOOP; }
+  static void load_block(uint32_t* __restrict d, const float* base, int stride, uint64_t mask) {
+    loadBlockPortable(d, base, stride, mask);
+  }
+  static void gather(uint32_t* __restrict d, const float* base, const int32_t* offset, uint64_t mask) {
+    gatherPortable(d, base, offset, mask);
+  }
   template <Op OP>
   static void batch(PF_BATCH_PARAMS) { PF_BATCH_LOOP; }
 #if defined(__x86_64__)
@@ -101,6 +129,32 @@ struct Avx2 {
     }
     return m;
   }
+  // A row (8 lanes) per masked load; masked-off lanes are not read.
+  [[gnu::target("avx2")]] static __m256i rowMask(unsigned bits) {
+    const __m256i bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
+    return _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(static_cast<int>(bits)), bit), bit);
+  }
+  [[gnu::target("avx2")]] static void load_block(uint32_t* __restrict d, const float* base, int stride,
+                                                 uint64_t mask) {
+    static_assert(kBlockSize == 8, "a row of a block is one 256-bit vector");
+    for (int row = 0; row < kBlockSize; ++row) {
+      const unsigned bits = static_cast<unsigned>(mask >> (row * kBlockSize)) & 0xffu;
+      const __m256 v = bits ? _mm256_maskload_ps(base + static_cast<ptrdiff_t>(row) * stride, rowMask(bits))
+                            : _mm256_setzero_ps();
+      _mm256_storeu_ps(reinterpret_cast<float*>(d + row * kBlockSize), v);
+    }
+  }
+  [[gnu::target("avx2")]] static void gather(uint32_t* __restrict d, const float* base, const int32_t* offset,
+                                             uint64_t mask) {
+    for (int g = 0; g < kLanes / 8; ++g) {
+      const unsigned bits = static_cast<unsigned>(mask >> (8 * g)) & 0xffu;
+      const __m256i idx = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(offset + 8 * g));
+      const __m256 v = bits ? _mm256_mask_i32gather_ps(_mm256_setzero_ps(), base, idx,
+                                                       _mm256_castsi256_ps(rowMask(bits)), 4)
+                            : _mm256_setzero_ps();
+      _mm256_storeu_ps(reinterpret_cast<float*>(d + 8 * g), v);
+    }
+  }
   [[gnu::target("avx2")]] static void blend(uint32_t* __restrict d, const uint32_t* __restrict s, uint64_t mask) {
     const __m256i bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
     for (int g = 0; g < kLanes / 8; ++g) {
@@ -126,6 +180,30 @@ struct Avx512 {
       m |= static_cast<uint64_t>(_mm512_test_epi32_mask(x, x)) << (16 * g);
     }
     return m;
+  }
+  // Two rows per 512-bit store, each by a masked load (masked-off lanes are not read).
+  [[gnu::target("arch=x86-64-v4,prefer-vector-width=512")]] static void load_block(uint32_t* __restrict d,
+                                                                                  const float* base, int stride,
+                                                                                  uint64_t mask) {
+    static_assert(kBlockSize == 8, "two rows of a block are one 512-bit vector");
+    for (int g = 0; g < kLanes / 16; ++g) {
+      const __mmask8 lo_bits = static_cast<__mmask8>(mask >> (16 * g)), hi_bits = static_cast<__mmask8>(mask >> (16 * g + 8));
+      const __m256 lo = lo_bits ? _mm256_maskz_loadu_ps(lo_bits, base + static_cast<ptrdiff_t>(2 * g) * stride)
+                                : _mm256_setzero_ps();
+      const __m256 hi = hi_bits ? _mm256_maskz_loadu_ps(hi_bits, base + static_cast<ptrdiff_t>(2 * g + 1) * stride)
+                                : _mm256_setzero_ps();
+      _mm512_storeu_ps(d + 16 * g, _mm512_insertf32x8(_mm512_castps256_ps512(lo), hi, 1));
+    }
+  }
+  [[gnu::target("arch=x86-64-v4,prefer-vector-width=512")]] static void gather(uint32_t* __restrict d,
+                                                                              const float* base,
+                                                                              const int32_t* offset, uint64_t mask) {
+    for (int g = 0; g < kLanes / 16; ++g) {
+      const __mmask16 bits = static_cast<__mmask16>(mask >> (16 * g));
+      const __m512i idx = _mm512_loadu_si512(offset + 16 * g);
+      _mm512_storeu_ps(d + 16 * g, bits ? _mm512_mask_i32gather_ps(_mm512_setzero_ps(), bits, idx, base, 4)
+                                        : _mm512_setzero_ps());
+    }
   }
   [[gnu::target("arch=x86-64-v4,prefer-vector-width=512")]] static void blend(uint32_t* __restrict d,
                                                                              const uint32_t* __restrict s,
@@ -157,14 +235,14 @@ constexpr BatchKernelTable batchTableOf() { return batchTableOf<Isa>(std::make_i
 
 constexpr LaneKernelTable kBaselineKernels = tableOf<Baseline>();
 constexpr BatchKernelTable kBaselineBatch = batchTableOf<Baseline>();
-constexpr LaneIsaTables kBaseline{&kBaselineKernels, {&Baseline::nonzero, &Baseline::blend}, &kBaselineBatch};
+constexpr LaneIsaTables kBaseline{&kBaselineKernels, {&Baseline::nonzero, &Baseline::blend, &Baseline::load_block, &Baseline::gather}, &kBaselineBatch};
 #ifdef PF_LANE_ISAS
 constexpr LaneKernelTable kAvx2Kernels = tableOf<Avx2>();
 constexpr LaneKernelTable kAvx512Kernels = tableOf<Avx512>();
 constexpr BatchKernelTable kAvx2Batch = batchTableOf<Avx2>();
 constexpr BatchKernelTable kAvx512Batch = batchTableOf<Avx512>();
-constexpr LaneIsaTables kAvx2{&kAvx2Kernels, {&Avx2::nonzero, &Avx2::blend}, &kAvx2Batch};
-constexpr LaneIsaTables kAvx512{&kAvx512Kernels, {&Avx512::nonzero, &Avx512::blend}, &kAvx512Batch};
+constexpr LaneIsaTables kAvx2{&kAvx2Kernels, {&Avx2::nonzero, &Avx2::blend, &Avx2::load_block, &Avx2::gather}, &kAvx2Batch};
+constexpr LaneIsaTables kAvx512{&kAvx512Kernels, {&Avx512::nonzero, &Avx512::blend, &Avx512::load_block, &Avx512::gather}, &kAvx512Batch};
 #endif
 
 bool machineRuns(LaneIsa isa) {

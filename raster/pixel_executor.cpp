@@ -3,8 +3,9 @@
 // Each value-producing instruction runs one kernel (raster/lane_kernels.h): a loop over the
 // kLanes lanes of evalScalar instantiated for the instruction and for which operands are wide
 // (one value per lane) or scalar (uniform / constant), vectorized for the machine's instruction
-// set. A merge value written under a partial mask goes through a blend; every other value
-// writes all lanes (Instr::masked_write).
+// set, picked once per program and frame (raster/decoded_program.h). A merge value written
+// under a partial mask goes through a blend; every other value writes all lanes
+// (Instr::masked_write). Control, effects and the per-channel interpolator ops run in a switch.
 #include "raster/pixel_executor.h"
 
 #include <array>
@@ -58,6 +59,21 @@ RegionVerdict PixelExecutor::regionVerdict(const PixelProgram& program, const ui
 
 void PixelExecutor::startFrame() {
   for (RegionMemo& m : region_memos_) m.program = nullptr;  // a program may be freed, its address reused
+  decoded_live_ = 0;
+  decoded_last_ = 0;
+}
+
+const DecodedProgram& PixelExecutor::decoded(const PixelProgram& program, const LaneIsaTables& isa) {
+  if (decoded_last_ < decoded_live_ && decoded_[decoded_last_].decodes(program, isa)) return decoded_[decoded_last_];
+  for (size_t i = 0; i < decoded_live_; ++i)
+    if (decoded_[i].decodes(program, isa)) {
+      decoded_last_ = i;
+      return decoded_[i];
+    }
+  if (decoded_live_ == decoded_.size()) decoded_.emplace_back();
+  decodeProgram(program, isa, decoded_[decoded_live_]);
+  decoded_last_ = decoded_live_++;
+  return decoded_[decoded_last_];
 }
 
 bool PixelExecutor::blockRejectionWanted() { return std::getenv("PF_NO_BLOCK_REJECTION") == nullptr; }
@@ -217,40 +233,54 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const PixelProgra
         R[(kRegP + k) * kLanes + i] = p_in ? p_in[k * kLanes + i] : (k == 3 ? fromF(1.0f) : 0u);
     std::fill_n(R + static_cast<size_t>(kRegN) * kLanes, 3 * kLanes, 0u);
   }
+  // X, Y and Z through the lane kernels and the depth loads of lane_kernels.h: whole-vector
+  // stores, from which the program's first vector loads of them forward (after 64 scalar
+  // stores such a load waits for them to drain: measured, 8% of a frame of small spheres).
+  const LaneIsaTables& isa = laneIsaTables();
+  auto kernel = [&](Op op, unsigned wide) { return (*isa.kernels)[static_cast<size_t>(op)][wide]; };
+  uint32_t* const RX = R + static_cast<size_t>(kRegX) * kLanes;
+  uint32_t* const RY = R + static_cast<size_t>(kRegY) * kLanes;
+  uint32_t* const RZ = R + static_cast<size_t>(kRegZ) * kLanes;
+  static const uint32_t kHalf = fromF(0.5f);
+  alignas(64) uint32_t scratch[kLanes];
   if (packed) {
-    // Each lane its own pixel; Z read where the mask says (lanes past it name no pixel).
-    for (int i = 0; i < kLanes; ++i) {
-      R[kRegX * kLanes + i] = fromF(static_cast<float>(packed->x[i]) + 0.5f);
-      R[kRegY * kLanes + i] = fromF(static_cast<float>(packed->y[i]) + 0.5f);
+    // Each lane its own pixel: float(x) + 0.5, as the aligned block's float(bx + column) + 0.5.
+    const uint32_t* px = reinterpret_cast<const uint32_t*>(packed->x);
+    const uint32_t* py = reinterpret_cast<const uint32_t*>(packed->y);
+    kernel(Op::I2F, 1)(scratch, px, kZeroLanes, kZeroLanes, kZeroLanes, 0);
+    kernel(Op::FAdd, 1)(RX, scratch, &kHalf, kZeroLanes, kZeroLanes, 0);
+    kernel(Op::I2F, 1)(scratch, py, kZeroLanes, kZeroLanes, kZeroLanes, 0);
+    kernel(Op::FAdd, 1)(RY, scratch, &kHalf, kZeroLanes, kZeroLanes, 0);
+    if (target.depth) {
+      alignas(64) int32_t offset[kLanes];  // y * stride + x
+      const uint32_t stride = static_cast<uint32_t>(target.depth_stride);
+      kernel(Op::IMul, 1)(scratch, py, &stride, kZeroLanes, kZeroLanes, 0);
+      kernel(Op::IAdd, 3)(reinterpret_cast<uint32_t*>(offset), scratch, px, kZeroLanes, kZeroLanes, 0);
+      isa.masks.gather(RZ, target.depth, offset, mask);
+    } else {
+      std::fill_n(RZ, kLanes, 0u);
     }
-    uint32_t* z = R + static_cast<size_t>(kRegZ) * kLanes;
-    std::fill_n(z, kLanes, 0u);
-    if (target.depth)
-      for (uint64_t m = mask; m; m &= m - 1) {
-        const int i = __builtin_ctzll(m);
-        z[i] = fromF(target.depth[static_cast<size_t>(packed->y[i]) * target.depth_stride + packed->x[i]]);
-      }
   } else {
-    for (int i = 0; i < kLanes; ++i) {
-      R[kRegX * kLanes + i] = fromF(static_cast<float>(bx + (i % kBlockSize)) + 0.5f);
-      R[kRegY * kLanes + i] = fromF(static_cast<float>(by + (i / kBlockSize)) + 0.5f);
-    }
-    // Z: the depth buffer under the lanes in the mask (a block may reach past the framebuffer's
-    // edge: lanes outside the mask read nothing), row by row; 0 elsewhere.
-    for (int row = 0; row < kBlockSize; ++row) {
-      uint32_t* z = R + static_cast<size_t>(kRegZ) * kLanes + row * kBlockSize;
-      const unsigned row_mask = static_cast<unsigned>(mask >> (row * kBlockSize)) & ((1u << kBlockSize) - 1u);
-      if (!target.depth || row_mask == 0) {
-        std::fill_n(z, kBlockSize, 0u);
-        continue;
-      }
-      const float* depth = target.depth + static_cast<size_t>(by + row) * target.depth_stride + bx;
-      if (row_mask == (1u << kBlockSize) - 1u) {
-        std::memcpy(z, depth, sizeof(float) * kBlockSize);
-        continue;
-      }
-      for (int lx = 0; lx < kBlockSize; ++lx) z[lx] = (row_mask >> lx) & 1u ? fromF(depth[lx]) : 0u;
-    }
+    // Column and row offsets of the lanes' pixel centres (exact: float(bx) + (c + 0.5) is
+    // float(bx + c) + 0.5 for every pixel coordinate a framebuffer has).
+    alignas(64) static const std::array<uint32_t, kLanes> kColumn = [] {
+      std::array<uint32_t, kLanes> t{};
+      for (int i = 0; i < kLanes; ++i) t[static_cast<size_t>(i)] = fromF(static_cast<float>(i % kBlockSize) + 0.5f);
+      return t;
+    }();
+    alignas(64) static const std::array<uint32_t, kLanes> kRow = [] {
+      std::array<uint32_t, kLanes> t{};
+      for (int i = 0; i < kLanes; ++i) t[static_cast<size_t>(i)] = fromF(static_cast<float>(i / kBlockSize) + 0.5f);
+      return t;
+    }();
+    const uint32_t fx = fromF(static_cast<float>(bx)), fy = fromF(static_cast<float>(by));
+    kernel(Op::FAdd, 1)(RX, kColumn.data(), &fx, kZeroLanes, kZeroLanes, 0);
+    kernel(Op::FAdd, 1)(RY, kRow.data(), &fy, kZeroLanes, kZeroLanes, 0);
+    if (target.depth)
+      isa.masks.load_block(RZ, target.depth + static_cast<size_t>(by) * target.depth_stride + bx, target.depth_stride,
+                           mask);
+    else
+      std::fill_n(RZ, kLanes, 0u);
   }
 
   const uint32_t* xrecord = record + p.num_uniform_slots;
@@ -303,7 +333,6 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const PixelProgra
     cur &= ~lanes;
   };
   alignas(64) uint32_t tmp[kLanes];
-  const LaneIsaTables& isa = laneIsaTables();
 
   auto run = [&](Op op, uint32_t* dst, const uint32_t* a, bool wa, const uint32_t* b, bool wb,
                  const uint32_t* c, bool wc, uint64_t exec, const uint32_t* d = kZeroLanes, bool wd = false,
@@ -323,6 +352,9 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const PixelProgra
   };
 
   const size_t n = p.code.size();
+  const DecodedInstr* const dec = decoded(p, isa).code.data();
+  // The decoded operands' bases (OperandBase order).
+  const uint32_t* const bases[4] = {R, record, p.constants.data(), kZeroLanes};
   uint64_t executed = 0;
   struct CountOnExit {  // counted however the block ends
     uint64_t& total;
@@ -330,9 +362,25 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const PixelProgra
     ~CountOnExit() { total += n; }
   } count_on_exit{counters.instructions, executed};
   for (size_t pc = 0; pc < n;) {
+    const DecodedInstr& d = dec[pc];
     const Instr& ins = p.code[pc++];
     ++executed;
     const uint64_t exec = alive & cur;
+    if (d.kernel) {
+      // A value instruction, decoded: a value written once writes every lane (see
+      // Instr::masked_write); a merge value under a partial mask goes through a blend.
+      const uint32_t* a = bases[static_cast<int>(d.base[0])] + d.offset[0];
+      const uint32_t* b = bases[static_cast<int>(d.base[1])] + d.offset[1];
+      const uint32_t* c = bases[static_cast<int>(d.base[2])] + d.offset[2];
+      const uint32_t* e = bases[static_cast<int>(d.base[3])] + d.offset[3];
+      if (!d.masked_write || exec == ~0ull) {
+        d.kernel(R + d.dst, a, b, c, e, d.imm);
+      } else {
+        d.kernel(tmp, a, b, c, e, d.imm);
+        isa.masks.blend(R + d.dst, tmp, exec);
+      }
+      continue;
+    }
     switch (ins.op) {
       case Op::Jmp: pc = ins.a; continue;
       case Op::JmpIfNot: {
@@ -575,16 +623,8 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const PixelProgra
         });
         continue;
       }
-      default: {
-        bool wa = false, wb = false, wc = false, wd = false;
-        const uint32_t* a = ins.a == kNoOperand ? kZeroLanes : src(ins.a, wa);
-        const uint32_t* b = ins.b == kNoOperand ? kZeroLanes : src(ins.b, wb);
-        const uint32_t* c = ins.c == kNoOperand ? kZeroLanes : src(ins.c, wc);
-        const uint32_t* d = ins.d == kNoOperand ? kZeroLanes : src(ins.d, wd);
-        uint32_t* r = R + static_cast<size_t>(operandIndex(ins.dst)) * kLanes;
-        // A value written once writes every lane (see Instr::masked_write): no blend.
-        run(ins.op, r, a, wa, b, wb, c, wc, ins.masked_write ? exec : ~0ull, d, wd, ins.imm);
-      }
+      default:
+        continue;  // the value ops: decoded, run above
     }
   }
 

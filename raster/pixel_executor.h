@@ -12,6 +12,7 @@
 
 #include "compiler/compiler.h"
 #include "raster/block_rejection.h"
+#include "raster/decoded_program.h"
 #include "raster/field/gradient_evaluator.h"
 #include "raster/field/ray_caster.h"
 #include "raster/limits.h"
@@ -116,6 +117,13 @@ class PixelExecutor {
   void fieldGradient(const RasterState& state, uint64_t exec, float field, int axis, bool by_differences,
                      const float* const p[3], const bool p_wide[3], float* out);
   const field::ImplicitField* lookUpField(const RasterState& state, float id, uint64_t exec);
+
+  // The programs this frame ran, decoded (decoded_program.h); startFrame() forgets them but
+  // keeps their storage. Few per frame: found by a linear search from the last one used.
+  const DecodedProgram& decoded(const PixelProgram& program, const LaneIsaTables& isa);
+  std::vector<DecodedProgram> decoded_;
+  size_t decoded_live_ = 0;
+  size_t decoded_last_ = 0;
 
   field::FieldRayCaster caster_;
   BlockRejection rejection_;

@@ -1,7 +1,8 @@
 // The lane kernels compiled for each instruction set (raster/lane_kernels.h) compute the same
 // bits as the baseline ones: every value-producing op, every operand shape, on random and
 // special inputs (NaN, infinities, signed zeros, subnormals, extreme ints), on every
-// instruction set this machine runs; and the mask loops (lanes set, blend) do what they say. (The reference interpreter checks the chosen set against
+// instruction set this machine runs; and the mask loops (lanes set, blend) and the depth loads
+// do what they say. (The reference interpreter checks the chosen set against
 // scalar code in every language test; this checks the sets against each other everywhere.)
 #include <gtest/gtest.h>
 
@@ -153,6 +154,46 @@ TEST(LaneKernels, MaskLoopsAgreeWithTheirDefinition) {
       EXPECT_EQ(want_nonzero, mask) << laneIsaName(isa);
       laneMaskOps().blend(d.data(), s.data(), mask);
       EXPECT_EQ(d, want) << laneIsaName(isa);
+    }
+  }
+}
+
+// The depth loads (load_block: an aligned block's rows; gather: packed lanes' pixels) give the
+// value under every lane in the mask and 0 elsewhere, and read nothing outside the mask: the
+// block hangs past the end of an exactly sized buffer, and the lanes outside the mask of the
+// gather carry offsets far outside it.
+TEST(LaneKernels, DepthLoadsReadTheMaskedLanesOnly) {
+  IsaGuard guard;
+  std::mt19937_64 rng(7);
+  constexpr int kW = 13, kH = 11;
+  std::vector<float> depth(static_cast<size_t>(kW) * kH);
+  for (float& z : depth) z = std::uniform_real_distribution<float>(0.0f, 1.0f)(rng);
+  for (LaneIsa isa : availableLaneIsas()) {
+    ASSERT_TRUE(setLaneIsa(isa));
+    for (int trial = 0; trial < 100; ++trial) {
+      // The block at (8, 8): 5 columns and 3 rows inside the buffer.
+      uint64_t inside = 0;
+      for (int i = 0; i < kLanes; ++i)
+        if (8 + i % kBlockSize < kW && 8 + i / kBlockSize < kH) inside |= 1ull << i;
+      const uint64_t mask = inside & (trial % 3 == 0 ? ~0ull : rng());
+      std::vector<uint32_t> got(kLanes, 0xdeadbeefu);
+      laneMaskOps().load_block(got.data(), depth.data() + 8 * kW + 8, kW, mask);
+      for (int i = 0; i < kLanes; ++i) {
+        const uint32_t want =
+            (mask >> i) & 1u ? std::bit_cast<uint32_t>(depth[static_cast<size_t>(8 + i / kBlockSize) * kW + 8 + i % kBlockSize]) : 0u;
+        EXPECT_EQ(got[i], want) << laneIsaName(isa) << " lane " << i;
+      }
+      // Packed lanes: any pixels; outside the mask, offsets no read may follow.
+      const uint64_t gather_mask = trial % 4 == 0 ? ~0ull : rng();
+      std::vector<int32_t> offset(kLanes);
+      for (int i = 0; i < kLanes; ++i)
+        offset[i] = (gather_mask >> i) & 1u ? static_cast<int32_t>(rng() % depth.size()) : 0x7fff0000 - i;
+      std::fill(got.begin(), got.end(), 0xdeadbeefu);
+      laneMaskOps().gather(got.data(), depth.data(), offset.data(), gather_mask);
+      for (int i = 0; i < kLanes; ++i) {
+        const uint32_t want = (gather_mask >> i) & 1u ? std::bit_cast<uint32_t>(depth[static_cast<size_t>(offset[i])]) : 0u;
+        EXPECT_EQ(got[i], want) << laneIsaName(isa) << " lane " << i;
+      }
     }
   }
 }

@@ -1,0 +1,49 @@
+// A pixel program with the dispatch of its value instructions resolved ahead of the blocks it
+// runs on. Whether an operand is wide (a register: one value per lane) or scalar (a uniform of
+// the instance's record, a constant, nothing) is known from the operand alone, so each value
+// instruction's lane kernel (raster/lane_kernels.h) can be picked once, and each operand becomes
+// a base (registers, record, constants, zeros) and an offset. The executor then runs a value
+// instruction without decoding it: per block, that decoding was about a fifth of a frame of
+// small spheres (docs/performance.md).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "compiler/isa.h"
+#include "raster/lane_kernels.h"
+
+namespace pf {
+
+// Where a decoded operand's words are.
+enum class OperandBase : uint8_t { Regs, Record, Constants, Zero };
+
+struct DecodedInstr {
+  LaneKernel kernel = nullptr;  // null: not a value instruction; the executor's switch runs it
+  bool masked_write = false;    // Instr::masked_write: outside the active lanes the value stays
+  uint16_t imm = 0;
+  uint32_t dst = 0;  // the destination register's first word (registers base)
+  OperandBase base[4] = {OperandBase::Zero, OperandBase::Zero, OperandBase::Zero, OperandBase::Zero};
+  uint32_t offset[4] = {0, 0, 0, 0};  // the operand's first word from its base
+};
+
+struct DecodedProgram {
+  // What it was decoded from, and for which kernels (PixelExecutor's memo compares them).
+  const PixelProgram* program = nullptr;
+  const Instr* code_data = nullptr;
+  const uint32_t* constants_data = nullptr;
+  size_t code_size = 0;
+  const LaneIsaTables* isa = nullptr;
+  std::vector<DecodedInstr> code;  // one per instruction of program->code
+
+  bool decodes(const PixelProgram& p, const LaneIsaTables& tables) const {
+    return program == &p && code_data == p.code.data() && code_size == p.code.size() &&
+           constants_data == p.constants.data() && isa == &tables;
+  }
+};
+
+// Decodes `program` into `out` (its storage reused: a frame's decoding allocates nothing once
+// the buffers have grown).
+void decodeProgram(const PixelProgram& program, const LaneIsaTables& isa, DecodedProgram& out);
+
+}  // namespace pf
