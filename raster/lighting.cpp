@@ -31,40 +31,81 @@ Material trackedMaterial(const LightingState& s, int face, const glm::vec4& colo
   return m;
 }
 
-glm::vec4 litColor(const LightingState& s, const Material& m, const glm::vec3& eye, const glm::vec3& n) {
-  glm::vec3 c = glm::vec3(m.emission) + glm::vec3(m.ambient) * glm::vec3(s.model_ambient);
+namespace {
+
+float spotFactor(const glm::vec3& vp, const glm::vec3& sd, float cos_cutoff, float exponent) {
+  const float cos_angle = std::max(glm::dot(-vp, sd), 0.0f);
+  return cos_angle >= cos_cutoff ? std::pow(cos_angle, exponent) : 0.0f;
+}
+
+}  // namespace
+
+LightingEquation::LightingEquation(const LightingState& s)
+    : model_ambient_(s.model_ambient), local_viewer_(s.local_viewer) {
   for (const Light& l : s.lights) {
     if (!l.enabled) continue;
-    // VP: from the vertex to the light (a direction for a light at infinity), and attenuation.
-    glm::vec3 vp;
+    Prepared& p = lights_[count_++];
+    p.ambient = glm::vec3(l.ambient);
+    p.diffuse = glm::vec3(l.diffuse);
+    p.specular = glm::vec3(l.specular);
+    p.positional = l.position.w != 0.0f;
+    p.position = p.positional ? glm::vec3(l.position) / l.position.w : glm::vec3(0);
+    p.constant = l.constant_attenuation;
+    p.linear = l.linear_attenuation;
+    p.quadratic = l.quadratic_attenuation;
+    p.direction = !p.positional && glm::length(glm::vec3(l.position)) > 0 ? glm::normalize(glm::vec3(l.position))
+                                                                           : glm::vec3(0);
+    p.spot = l.spot_cutoff != 180.0f;
+    p.spot_direction = glm::length(l.spot_direction) > 0 ? glm::normalize(l.spot_direction) : glm::vec3(0);
+    p.spot_cos_cutoff = std::cos(glm::radians(l.spot_cutoff));
+    p.spot_exponent = l.spot_exponent;
+    p.directional_spot = p.spot ? spotFactor(p.direction, p.spot_direction, p.spot_cos_cutoff, p.spot_exponent) : 1.0f;
+    p.has_half = !p.positional && !s.local_viewer;
+    const glm::vec3 h = p.direction + glm::vec3(0, 0, 1);
+    const float hl = glm::length(h);
+    p.half_zero = !(hl > 0);
+    p.half = hl > 0 ? h / hl : glm::vec3(0);
+  }
+}
+
+glm::vec4 LightingEquation::shade(const Material& m, const glm::vec3& eye, const glm::vec3& n) const {
+  glm::vec3 c = glm::vec3(m.emission) + glm::vec3(m.ambient) * model_ambient_;
+  for (int i = 0; i < count_; ++i) {
+    const Prepared& l = lights_[i];
+    // VP: from the point to the light (a direction for a light at infinity), and attenuation.
+    glm::vec3 vp = l.direction;
     float attenuation = 1.0f;
-    if (l.position.w != 0.0f) {
-      glm::vec3 d = glm::vec3(l.position) / l.position.w - eye;
-      float dist = glm::length(d);
+    float spot = l.directional_spot;
+    if (l.positional) {
+      const glm::vec3 d = l.position - eye;
+      const float dist = glm::length(d);
       vp = dist > 0 ? d / dist : glm::vec3(0);
-      float k = l.constant_attenuation + l.linear_attenuation * dist + l.quadratic_attenuation * dist * dist;
+      const float k = l.constant + l.linear * dist + l.quadratic * dist * dist;
       attenuation = k > 0 ? 1.0f / k : 0.0f;
-    } else {
-      vp = glm::length(glm::vec3(l.position)) > 0 ? glm::normalize(glm::vec3(l.position)) : glm::vec3(0);
-    }
-    float spot = 1.0f;
-    if (l.spot_cutoff != 180.0f) {
-      glm::vec3 sd = glm::length(l.spot_direction) > 0 ? glm::normalize(l.spot_direction) : glm::vec3(0);
-      float cos_angle = std::max(glm::dot(-vp, sd), 0.0f);
-      spot = cos_angle >= std::cos(glm::radians(l.spot_cutoff)) ? std::pow(cos_angle, l.spot_exponent) : 0.0f;
+      spot = l.spot ? spotFactor(vp, l.spot_direction, l.spot_cos_cutoff, l.spot_exponent) : 1.0f;
     }
     const float n_dot_vp = std::max(glm::dot(n, vp), 0.0f);
-    glm::vec3 term = glm::vec3(m.ambient) * glm::vec3(l.ambient) + n_dot_vp * glm::vec3(m.diffuse) * glm::vec3(l.diffuse);
+    glm::vec3 term = glm::vec3(m.ambient) * l.ambient + n_dot_vp * glm::vec3(m.diffuse) * l.diffuse;
     if (n_dot_vp > 0.0f) {
-      glm::vec3 h = vp + (s.local_viewer ? (glm::length(eye) > 0 ? -glm::normalize(eye) : glm::vec3(0)) : glm::vec3(0, 0, 1));
-      float hl = glm::length(h);
-      float n_dot_h = hl > 0 ? std::max(glm::dot(n, h / hl), 0.0f) : 0.0f;
-      float spec = m.shininess == 0.0f ? 1.0f : std::pow(n_dot_h, m.shininess);
-      term += spec * glm::vec3(m.specular) * glm::vec3(l.specular);
+      float n_dot_h;
+      if (l.has_half) {
+        n_dot_h = l.half_zero ? 0.0f : std::max(glm::dot(n, l.half), 0.0f);
+      } else {
+        const glm::vec3 h = vp + (local_viewer_ ? (glm::length(eye) > 0 ? -glm::normalize(eye) : glm::vec3(0))
+                                                : glm::vec3(0, 0, 1));
+        const float hl = glm::length(h);
+        n_dot_h = hl > 0 ? std::max(glm::dot(n, h / hl), 0.0f) : 0.0f;
+      }
+      const float spec = m.shininess == 0.0f ? 1.0f : std::pow(n_dot_h, m.shininess);
+      term += spec * glm::vec3(m.specular) * l.specular;
     }
     c += attenuation * spot * term;
   }
   return glm::clamp(glm::vec4(c, m.diffuse.a), 0.0f, 1.0f);
+}
+
+glm::vec4 litColor(const LightingState& s, const Material& m, const glm::vec3& eye, const glm::vec3& n) {
+  return LightingEquation(s).shade(m, eye, n);
 }
 
 }  // namespace pf

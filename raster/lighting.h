@@ -54,6 +54,38 @@ struct LightingState {
   bool operator==(const LightingState&) const = default;
 };
 
+// GL's lighting equation for one state, with what does not depend on the point lit worked out
+// once: the enabled lights, a positional light's position, a directional light's direction,
+// spot factor and (for a viewer at infinity) half vector. The shading pass evaluates it per
+// pixel; litColor() below is the same object used once, so the two agree to the bit.
+class LightingEquation {
+ public:
+  explicit LightingEquation(const LightingState& s);
+  // The colour at eye-space point `eye` with material `m` and normal `n` (already reversed for
+  // a back face), clamped to [0, 1].
+  glm::vec4 shade(const Material& m, const glm::vec3& eye, const glm::vec3& n) const;
+
+ private:
+  struct Prepared {
+    glm::vec3 ambient, diffuse, specular;
+    bool positional;
+    glm::vec3 position;     // positional: the light's position (divided by w)
+    float constant, linear, quadratic;  // positional: attenuation
+    glm::vec3 direction;    // directional: the unit vector to the light (VP)
+    bool spot;              // a spot light (cutoff not 180)
+    glm::vec3 spot_direction;  // unit
+    float spot_cos_cutoff, spot_exponent;
+    float directional_spot;    // directional: the spot factor (VP is fixed)
+    bool has_half;             // directional, viewer at infinity: the half vector is fixed
+    glm::vec3 half;            // its unit vector
+    bool half_zero;            // ... which is zero (VP = -z)
+  };
+  Prepared lights_[kMaxLights];
+  int count_ = 0;
+  glm::vec3 model_ambient_;
+  bool local_viewer_;
+};
+
 // The colour of a vertex at eye-space position `eye` with eye-space normal `normal` (already
 // normalised or rescaled as the state asks), lit with material `face` (0 front, 1 back; the
 // back face is lit with the normal reversed), clamped to [0, 1].

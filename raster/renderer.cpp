@@ -33,7 +33,10 @@ Renderer::Renderer(int threads) : pool_(threads) {
   if (const char* e = std::getenv("PF_SETUP_BATCH")) setup_batching_ = std::strcmp(e, "0") != 0;
   // PF_PACKED_LANES=0: small bounds on aligned blocks too (for comparisons; images are identical).
   if (const char* e = std::getenv("PF_PACKED_LANES")) pack_small_bounds_ = std::strcmp(e, "0") != 0;
-  for (int i = 0; i < pool_.threadCount(); ++i) scratch_.push_back(std::make_unique<WorkerScratch>());
+  for (int i = 0; i < pool_.threadCount(); ++i) {
+    scratch_.push_back(std::make_unique<WorkerScratch>());
+    batch_setups_.push_back(std::make_unique<BatchSetupExecutor>());
+  }
 }
 
 void Renderer::setTarget(uint8_t* color, float* depth, int width, int height) {
@@ -91,8 +94,10 @@ bool Renderer::beginSubmission(const ChannelLayout& layout, const RasterState& s
   if (scene_.layouts.empty() || !(scene_.layouts.back() == layout)) scene_.layouts.push_back(layout);
   ShadeState lit_shade;
   if (per_pixel_lighting && layout.surface_slot >= 0) {
-    if (scene_.lightings.empty() || !(scene_.lightings.back() == *per_pixel_lighting))
+    if (scene_.lightings.empty() || !(scene_.lightings.back() == *per_pixel_lighting)) {
+      scene_.lighting_equations.emplace_back(*per_pixel_lighting);
       scene_.lightings.push_back(*per_pixel_lighting);
+    }
     lit_shade = shade;
     lit_shade.surface_slot = layout.surface_slot;
     lit_shade.lighting = static_cast<int>(scene_.lightings.size()) - 1;
@@ -158,49 +163,71 @@ void Renderer::submitInstances(const CompiledPrimitive& prim, int instances, con
              sequence_points, sharedOf(i), per_pixel_lighting);
     return;
   }
-  // Setup of a batch first (it reads only the instances, the state and the layout), into
-  // scratch records; then each instance in order exactly as submit() would: the submission's
-  // bookkeeping, its shared interpolators, then its record and bins.
+  // Setup first, every batch of kSetupBatchLanes instances a job for the pool (it reads only
+  // the instances, the state and the layout, and writes its own scratch records and outputs:
+  // which thread ran it changes nothing); then each instance in order exactly as submit()
+  // would: the submission's bookkeeping, its shared interpolators, then its record and bins.
   const size_t words = SetupExecutor::recordWords(prim, layout.count);
-  bool steady = false;
-  for (int first = 0; first < instances; first += kSetupBatchLanes) {
-    const int lanes = std::min(kSetupBatchLanes, instances - first);
-    batch_records_.resize(words * static_cast<size_t>(lanes) + 1);
+  batch_records_.resize(words * static_cast<size_t>(instances) + 1);
+  batch_outputs_.resize(static_cast<size_t>(instances));
+  const int batches = (instances + kSetupBatchLanes - 1) / kSetupBatchLanes;
+  auto setupBatch = [&](int b, int worker) {
+    const int first = b * kSetupBatchLanes, lanes = std::min(kSetupBatchLanes, instances - first);
     SetupInput in[kSetupBatchLanes];
     uint32_t* records[kSetupBatchLanes];
-    SetupOutput out[kSetupBatchLanes];
     for (int l = 0; l < lanes; ++l) {
       const int i = first + l;
       in[l] = SetupInput{params + i * param_stride, vertex_channels + i * vertex_stride, &layout, &state,
                          sequence_points, nullptr, 0};
-      records[l] = batch_records_.data() + words * static_cast<size_t>(l);
+      records[l] = batch_records_.data() + words * static_cast<size_t>(i);
     }
-    batch_setup_.run(prim, in, lanes, records, out);
-    for (int l = 0; l < lanes; ++l) {
-      // An instance whose bookkeeping appended nothing and flushed nothing leaves the scene as
-      // the next one's would find it: that one's would do nothing either (the comparisons are
-      // of the same values), unless the records outgrow their bound.
-      if (steady && scene_.records.size() <= kMaxRecordWords) {
-        calls_this_submission_ = 0;
-      } else {
-        const size_t appended = scene_.states.size() + scene_.layouts.size() + scene_.shades.size() +
-                                scene_.lightings.size();
-        const uint64_t flushes = flushes_;
-        const uint32_t current_shade = scene_.current_shade;
-        if (!beginSubmission(layout, state, shade, per_pixel_lighting)) return;
-        steady = flushes == flushes_ && current_shade == scene_.current_shade &&
-                 appended == scene_.states.size() + scene_.layouts.size() + scene_.shades.size() +
-                                 scene_.lightings.size();
-      }
-      runShared(layout, sharedOf(first + l));
-      ++stats_.instances_submitted;
-      stats_.setup_instructions += out[l].instructions;
-      if (!out[l].killed && prim.pixel.code.empty()) continue;
-      const size_t offset = scene_.records.size();
-      if (!out[l].killed) scene_.records.insert(scene_.records.end(), records[l], records[l] + words);
-      binInstance(prim, out[l], offset);
+    batch_setups_[static_cast<size_t>(worker)]->run(prim, in, lanes, records, batch_outputs_.data() + first);
+  };
+  if (batches > 1 && pool_.threadCount() > 1) {
+    // (A closure of one pointer: std::function keeps it without allocating.)
+    auto* run = &setupBatch;
+    pool_.parallelFor(batches, [run](int b, int worker) { (*run)(b, worker); });
+  } else
+    for (int b = 0; b < batches; ++b) setupBatch(b, 0);
+
+  bool steady = false;
+  for (int i = 0; i < instances; ++i) {
+    const SetupOutput& out = batch_outputs_[static_cast<size_t>(i)];
+    const uint32_t* record = batch_records_.data() + words * static_cast<size_t>(i);
+    // An instance whose bookkeeping appended nothing and flushed nothing leaves the scene as
+    // the next one's would find it: that one's would do nothing either (the comparisons are
+    // of the same values), unless the records outgrow their bound.
+    if (steady && scene_.records.size() <= kMaxRecordWords) {
+      calls_this_submission_ = 0;
+    } else {
+      const size_t appended = scene_.states.size() + scene_.layouts.size() + scene_.shades.size() +
+                              scene_.lightings.size();
+      const uint64_t flushes = flushes_;
+      const uint32_t current_shade = scene_.current_shade;
+      if (!beginSubmission(layout, state, shade, per_pixel_lighting)) return;
+      steady = flushes == flushes_ && current_shade == scene_.current_shade &&
+               appended == scene_.states.size() + scene_.layouts.size() + scene_.shades.size() +
+                               scene_.lightings.size();
     }
+    runShared(layout, sharedOf(i));
+    ++stats_.instances_submitted;
+    stats_.setup_instructions += out.instructions;
+    if (!out.killed && prim.pixel.code.empty()) continue;
+    const size_t offset = scene_.records.size();
+    if (!out.killed) scene_.records.insert(scene_.records.end(), record, record + words);
+    binInstance(prim, out, offset);
   }
+}
+
+SetupBatchCounters Renderer::setupBatchCounters() const {
+  SetupBatchCounters sum;
+  for (const auto& b : batch_setups_) {
+    sum.batches += b->counters.batches;
+    sum.lanes_batched += b->counters.lanes_batched;
+    sum.lanes_resumed += b->counters.lanes_resumed;
+    sum.lanes_scalar += b->counters.lanes_scalar;
+  }
+  return sum;
 }
 
 void Renderer::submitCall(const CompiledPrimitive& callee, const uint32_t* params, const float* vertex_channels,
@@ -398,7 +425,8 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
     }
   }
   ShadeTarget st{color_, width_, x0, y0, w, h, scene_.color_mask};
-  s.pixels_shaded += shadeTile(s.shade_ids.data(), s.slot_planes.data(), scene_.shades.data(), scene_.lightings.data(), st);
+  s.pixels_shaded += shadeTile(s.shade_ids.data(), s.slot_planes.data(), scene_.shades.data(), scene_.lightings.data(),
+                              scene_.lighting_equations.data(), st);
 }
 
 void Renderer::flush() {

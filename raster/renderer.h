@@ -90,7 +90,8 @@ class Renderer : private SubInstanceSink {
   // Batched setup on or off (on unless the environment says PF_SETUP_BATCH=0).
   void setSetupBatching(bool on) { setup_batching_ = on; }
   bool setupBatching() const { return setup_batching_; }
-  const SetupBatchCounters& setupBatchCounters() const { return batch_setup_.counters; }
+  // The batched setup's counters, summed over the threads that ran batches.
+  SetupBatchCounters setupBatchCounters() const;
 
   // Executes everything recorded: afterwards the colour and depth buffers hold the image.
   void flush();
@@ -137,8 +138,10 @@ class Renderer : private SubInstanceSink {
   // One executor per depth of primitive calls: a caller's registers stay put while its callee runs.
   SetupExecutor setups_[kMaxPrimitiveCallDepth + 1];
   std::vector<uint32_t> record_scratch_[kMaxPrimitiveCallDepth + 1];
-  BatchSetupExecutor batch_setup_;
+  // One per thread: the batches of a submission are set up across the pool.
+  std::vector<std::unique_ptr<BatchSetupExecutor>> batch_setups_;
   std::vector<uint32_t> batch_records_;
+  std::vector<SetupOutput> batch_outputs_;
   bool setup_batching_ = true;
   bool pack_small_bounds_ = true;  // PF_PACKED_LANES=0: every instance on aligned blocks
   uint64_t flushes_ = 0;

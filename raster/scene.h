@@ -44,6 +44,7 @@ struct Scene {
   std::vector<ShadeState> shades;
   uint32_t current_shade = 0;  // of the instances being submitted (a back variant may follow it)
   std::vector<LightingState> lightings;  // per-pixel lighting states (ShadeState::lighting)
+  std::vector<LightingEquation> lighting_equations;  // each one's equation, for the shading pass
   std::vector<TileBin> bins;
   int tiles_x = 0, tiles_y = 0;
   int gbuffer_slots = 0;
@@ -58,6 +59,7 @@ struct Scene {
     layouts.clear();
     shades.clear();
     lightings.clear();
+    lighting_equations.clear();
     for (TileBin& b : bins) b.instances.clear();
     gbuffer_slots = 0;
     clear = PendingClear{};

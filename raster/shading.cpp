@@ -8,7 +8,7 @@
 namespace pf {
 
 uint64_t shadeTile(const uint32_t* shade_ids, const float* const* slots, const ShadeState* shades,
-                   const LightingState* lightings, const ShadeTarget& t) {
+                   const LightingState* lightings, const LightingEquation* equations, const ShadeTarget& t) {
   uint64_t shaded = 0;
   for (int y = 0; y < t.h; ++y) {
     for (int x = 0; x < t.w; ++x) {
@@ -25,7 +25,8 @@ uint64_t shadeTile(const uint32_t* shade_ids, const float* const* slots, const S
         if (glm::length(n) > 0.0f) n = glm::normalize(n);
         // Two-sided lighting: a normal facing away from the eye shows the back face.
         const int face = l.two_side && glm::dot(n, -p) < 0.0f ? 1 : 0;
-        const glm::vec4 lit = litColor(l, trackedMaterial(l, face, glm::vec4(c[0], c[1], c[2], c[3])), p, face ? -n : n);
+        const glm::vec4 lit =
+            equations[s.lighting].shade(trackedMaterial(l, face, glm::vec4(c[0], c[1], c[2], c[3])), p, face ? -n : n);
         for (int k = 0; k < 4; ++k) c[k] = lit[k];
       }
       uint8_t* px = t.color + (static_cast<size_t>(t.y0 + y) * t.stride + t.x0 + x) * 4;

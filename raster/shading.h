@@ -35,9 +35,9 @@ struct ShadeTarget {
 
 // Shades the tile: for every pixel with a non-zero shade id (1 + index into `shades`).
 // Returns the number of pixels shaded.
+// `equations[i]` is `lightings[i]`'s equation.
 uint64_t shadeTile(const uint32_t* shade_ids, const float* const* slots, const ShadeState* shades,
-                   const LightingState* lightings,
-                   const ShadeTarget& target);
+                   const LightingState* lightings, const LightingEquation* equations, const ShadeTarget& target);
 
 // Float colour component -> 8 bits: clamp to [0, 1], scale, round to nearest (as GL does).
 inline uint8_t toUnorm8(float c) {

@@ -117,8 +117,9 @@ void recordSequencePoint(PFcontextRec& ctx) {
   rowChannels(ctx);
 }
 
-// Instances handed to the renderer together (a multiple of its setup batch).
-constexpr size_t kInstancesPerChunk = 4 * pf::kSetupBatchLanes;
+// Instances handed to the renderer together (a multiple of its setup batch): enough batches
+// for the renderer to set them up across its threads.
+constexpr size_t kInstancesPerChunk = 64 * pf::kSetupBatchLanes;
 
 // Hands the rows to the renderer: for a primitive with a fixed count, one instance per
 // `sequence_points` rows; for one with parameter-sized arrays, one instance holding them all.

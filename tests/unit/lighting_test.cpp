@@ -1,11 +1,15 @@
 // The lighting commands' state and errors (GL 1.5 section 2.14 and its error rules), and the
-// lighting equation against values computed here in double precision. (The images are compared
-// with OSMesa in the differential tests.)
+// lighting equation against values computed here in double precision, and the shading pass's
+// prepared form of it against the equation written out. (The images are compared with OSMesa in
+// the differential tests.)
 #include <gtest/gtest.h>
 
 #include <primflow/gl.h>
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "raster/lighting.h"
@@ -125,4 +129,100 @@ TEST(Lighting, EquationMatchesTheSpecification) {
   // The back face: the normal reversed, facing away from the light: ambient only.
   glm::vec4 back = pf::litColor(s, eye, n, 1);
   EXPECT_NEAR(back.r, 0.2 * 0.2, 1e-6);
+}
+
+namespace {
+
+// GL 1.5's equation (section 2.14.1) written out directly, term by term, in float: what the
+// shading pass's LightingEquation must reproduce to the bit while working out per state what
+// does not depend on the point.
+glm::vec4 directEquation(const pf::LightingState& s, const pf::Material& m, const glm::vec3& eye, const glm::vec3& n) {
+  glm::vec3 c = glm::vec3(m.emission) + glm::vec3(m.ambient) * glm::vec3(s.model_ambient);
+  for (const pf::Light& l : s.lights) {
+    if (!l.enabled) continue;
+    glm::vec3 vp;
+    float attenuation = 1.0f;
+    if (l.position.w != 0.0f) {
+      glm::vec3 d = glm::vec3(l.position) / l.position.w - eye;
+      float dist = glm::length(d);
+      vp = dist > 0 ? d / dist : glm::vec3(0);
+      float k = l.constant_attenuation + l.linear_attenuation * dist + l.quadratic_attenuation * dist * dist;
+      attenuation = k > 0 ? 1.0f / k : 0.0f;
+    } else {
+      vp = glm::length(glm::vec3(l.position)) > 0 ? glm::normalize(glm::vec3(l.position)) : glm::vec3(0);
+    }
+    float spot = 1.0f;
+    if (l.spot_cutoff != 180.0f) {
+      glm::vec3 sd = glm::length(l.spot_direction) > 0 ? glm::normalize(l.spot_direction) : glm::vec3(0);
+      float cos_angle = std::max(glm::dot(-vp, sd), 0.0f);
+      spot = cos_angle >= std::cos(glm::radians(l.spot_cutoff)) ? std::pow(cos_angle, l.spot_exponent) : 0.0f;
+    }
+    const float n_dot_vp = std::max(glm::dot(n, vp), 0.0f);
+    glm::vec3 term = glm::vec3(m.ambient) * glm::vec3(l.ambient) + n_dot_vp * glm::vec3(m.diffuse) * glm::vec3(l.diffuse);
+    if (n_dot_vp > 0.0f) {
+      glm::vec3 h = vp + (s.local_viewer ? (glm::length(eye) > 0 ? -glm::normalize(eye) : glm::vec3(0)) : glm::vec3(0, 0, 1));
+      float hl = glm::length(h);
+      float n_dot_h = hl > 0 ? std::max(glm::dot(n, h / hl), 0.0f) : 0.0f;
+      float spec = m.shininess == 0.0f ? 1.0f : std::pow(n_dot_h, m.shininess);
+      term += spec * glm::vec3(m.specular) * glm::vec3(l.specular);
+    }
+    c += attenuation * spot * term;
+  }
+  return glm::clamp(glm::vec4(c, m.diffuse.a), 0.0f, 1.0f);
+}
+
+}  // namespace
+
+// Random states -- positional and directional lights, spots, attenuation, a local viewer,
+// disabled lights, a light straight behind the viewer (a zero half vector) -- random materials,
+// points and normals: the prepared equation gives the direct equation's bits.
+TEST(Lighting, PreparedEquationGivesTheDirectEquationsBits) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f), pos(0.0f, 1.0f);
+  auto v3 = [&] { return glm::vec3(u(rng), u(rng), u(rng)); };
+  auto colour = [&] { return glm::vec4(pos(rng), pos(rng), pos(rng), pos(rng)); };
+  int compared = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    pf::LightingState s;
+    s.local_viewer = trial % 3 == 0;
+    s.model_ambient = colour();
+    for (int i = 0; i < pf::kMaxLights; ++i) {
+      pf::Light& l = s.lights[i];
+      l.enabled = rng() % 3 != 0;
+      l.ambient = colour();
+      l.diffuse = colour();
+      l.specular = colour();
+      const int kind = static_cast<int>(rng() % 4);
+      l.position = kind == 0 ? glm::vec4(v3() * 4.0f, 1.0f)
+                   : kind == 1 ? glm::vec4(v3(), 0.0f)
+                   : kind == 2 ? glm::vec4(0, 0, -1, 0)  // behind the viewer: VP + z is zero
+                               : glm::vec4(v3() * 2.0f, 0.5f);
+      if (rng() % 2) {
+        l.spot_direction = v3();
+        l.spot_cutoff = 10.0f + 80.0f * pos(rng);
+        l.spot_exponent = 8.0f * pos(rng);
+      }
+      if (rng() % 2) {
+        l.constant_attenuation = pos(rng);
+        l.linear_attenuation = pos(rng);
+        l.quadratic_attenuation = pos(rng);
+      }
+    }
+    const pf::LightingEquation equation(s);
+    for (int k = 0; k < 20; ++k) {
+      pf::Material m;
+      m.ambient = colour();
+      m.diffuse = colour();
+      m.specular = colour();
+      m.emission = colour() * 0.2f;
+      m.shininess = k % 4 == 0 ? 0.0f : 100.0f * pos(rng);
+      const glm::vec3 eye = v3() * 3.0f;
+      const glm::vec3 n = k % 5 == 0 ? glm::vec3(0) : glm::normalize(v3() + glm::vec3(0, 0, 0.01f));
+      const glm::vec4 want = directEquation(s, m, eye, n), got = equation.shade(m, eye, n);
+      for (int c = 0; c < 4; ++c)
+        EXPECT_EQ(std::bit_cast<uint32_t>(got[c]), std::bit_cast<uint32_t>(want[c])) << "trial " << trial << " k " << k;
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 6000);
 }
