@@ -4,7 +4,8 @@
 // instruction's lane kernel (raster/lane_kernels.h) can be picked once, and each operand becomes
 // a base (registers, record, constants, zeros) and an offset. The executor then runs a value
 // instruction without decoding it: per block, that decoding was about a fifth of a frame of
-// small spheres (docs/performance.md).
+// small spheres (docs/performance.md). A product read only by one add or subtract is fused into
+// it (FusedForm): one kernel, the same two roundings.
 #pragma once
 
 #include <cstdint>
@@ -35,6 +36,13 @@ struct DecodedProgram {
   size_t code_size = 0;
   const LaneIsaTables* isa = nullptr;
   std::vector<DecodedInstr> code;  // one per instruction of program->code
+  int fused = 0;                   // products fused into their add (lane_kernels.h, FusedForm)
+  // The fusion's per-register counts (kept with the object: decoding again reuses them).
+  struct Scratch {
+    std::vector<uint32_t> uses, defs;
+    std::vector<int32_t> def_pc;
+    std::vector<uint8_t> masked, consumed;
+  } scratch;
 
   bool decodes(const PixelProgram& p, const LaneIsaTables& tables) const {
     return program == &p && code_data == p.code.data() && code_size == p.code.size() &&

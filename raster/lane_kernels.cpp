@@ -29,6 +29,18 @@ static_assert(kLanes % 16 == 0 && kLanes <= 64, "lane masks are 64-bit, handled 
     r[i] = evalScalar(OP, (WIDE & 1) ? a[i] : a[0], (WIDE & 2) ? b[i] : b[0], (WIDE & 4) ? c[i] : c[0], \
                       (WIDE & 8) ? d[i] : d[0], imm)
 
+// The fused multiply-then-add kernels' loop: the product rounded, then the sum (the two
+// instructions' evalScalar, nothing contracted).
+#define PF_FUSED_LOOP                                                                              \
+  for (int i = 0; i < kLanes; ++i) {                                                              \
+    const uint32_t m = evalScalar(Op::FMul, (WIDE & 1) ? a[i] : a[0], (WIDE & 2) ? b[i] : b[0], 0u); \
+    const uint32_t t = (WIDE & 4) ? c[i] : c[0];                                                  \
+    r[i] = FORM == FusedForm::ProductPlus    ? evalScalar(Op::FAdd, m, t, 0u)                     \
+           : FORM == FusedForm::PlusProduct  ? evalScalar(Op::FAdd, t, m, 0u)                     \
+           : FORM == FusedForm::ProductMinus ? evalScalar(Op::FSub, m, t, 0u)                     \
+                                             : evalScalar(Op::FSub, t, m, 0u);                    \
+  }
+
 // The batched setup's loop: into a temporary first, dst may be one of the operands.
 #define PF_BATCH_LOOP                                                                          \
   alignas(64) uint32_t r[kSetupBatchLanes];                                                   \
@@ -76,6 +88,8 @@ void gatherPortable(uint32_t* __restrict d, const float* base, const int32_t* of
 struct Baseline {
   template <Op OP, unsigned WIDE>
   static void run(PF_LANE_PARAMS) { PF_LANE_LOOP; }
+  template <FusedForm FORM, unsigned WIDE>
+  static void fused(PF_LANE_PARAMS) { (void)d; (void)imm; PF_FUSED_LOOP }
   static void load_block(uint32_t* __restrict d, const float* base, int stride, uint64_t mask) {
     loadBlockPortable(d, base, stride, mask);
   }
@@ -117,6 +131,8 @@ struct Baseline {
 struct Avx2 {
   template <Op OP, unsigned WIDE>
   [[gnu::target("avx2")]] static void run(PF_LANE_PARAMS) { PF_LANE_LOOP; }
+  template <FusedForm FORM, unsigned WIDE>
+  [[gnu::target("avx2")]] static void fused(PF_LANE_PARAMS) { (void)d; (void)imm; PF_FUSED_LOOP }
   template <Op OP>
   [[gnu::target("avx2")]] static void batch(PF_BATCH_PARAMS) { PF_BATCH_LOOP; }
   // 8 lanes per compare; blendv takes each lane's top bit.
@@ -170,6 +186,12 @@ struct Avx2 {
 struct Avx512 {
   template <Op OP, unsigned WIDE>
   [[gnu::target("arch=x86-64-v4,prefer-vector-width=512")]] static void run(PF_LANE_PARAMS) { PF_LANE_LOOP; }
+  template <FusedForm FORM, unsigned WIDE>
+  [[gnu::target("arch=x86-64-v4,prefer-vector-width=512")]] static void fused(PF_LANE_PARAMS) {
+    (void)d;
+    (void)imm;
+    PF_FUSED_LOOP
+  }
   template <Op OP>
   [[gnu::target("arch=x86-64-v4,prefer-vector-width=512")]] static void batch(PF_BATCH_PARAMS) { PF_BATCH_LOOP; }
   // AVX-512 has mask registers for exactly these: a test per 16 lanes, a masked move.
@@ -226,6 +248,18 @@ constexpr LaneKernelTable tableOf(std::index_sequence<I...>) {
 template <class Isa>
 constexpr LaneKernelTable tableOf() { return tableOf<Isa>(std::make_index_sequence<kLaneKernelOps>{}); }
 
+template <class Isa, FusedForm FORM, size_t... W>
+constexpr std::array<LaneKernel, 8> fusedFor(std::index_sequence<W...>) {
+  return {&Isa::template fused<FORM, static_cast<unsigned>(W)>...};
+}
+template <class Isa>
+constexpr FusedKernelTable fusedTableOf() {
+  return {fusedFor<Isa, FusedForm::ProductPlus>(std::make_index_sequence<8>{}),
+          fusedFor<Isa, FusedForm::PlusProduct>(std::make_index_sequence<8>{}),
+          fusedFor<Isa, FusedForm::ProductMinus>(std::make_index_sequence<8>{}),
+          fusedFor<Isa, FusedForm::MinusProduct>(std::make_index_sequence<8>{})};
+}
+
 template <class Isa, size_t... I>
 constexpr BatchKernelTable batchTableOf(std::index_sequence<I...>) {
   return {&Isa::template batch<static_cast<Op>(I)>...};
@@ -235,14 +269,22 @@ constexpr BatchKernelTable batchTableOf() { return batchTableOf<Isa>(std::make_i
 
 constexpr LaneKernelTable kBaselineKernels = tableOf<Baseline>();
 constexpr BatchKernelTable kBaselineBatch = batchTableOf<Baseline>();
-constexpr LaneIsaTables kBaseline{&kBaselineKernels, {&Baseline::nonzero, &Baseline::blend, &Baseline::load_block, &Baseline::gather}, &kBaselineBatch};
+constexpr FusedKernelTable kBaselineFused = fusedTableOf<Baseline>();
+constexpr LaneIsaTables kBaseline{&kBaselineKernels,
+                                  {&Baseline::nonzero, &Baseline::blend, &Baseline::load_block, &Baseline::gather},
+                                  &kBaselineBatch, &kBaselineFused};
 #ifdef PF_LANE_ISAS
 constexpr LaneKernelTable kAvx2Kernels = tableOf<Avx2>();
 constexpr LaneKernelTable kAvx512Kernels = tableOf<Avx512>();
 constexpr BatchKernelTable kAvx2Batch = batchTableOf<Avx2>();
 constexpr BatchKernelTable kAvx512Batch = batchTableOf<Avx512>();
-constexpr LaneIsaTables kAvx2{&kAvx2Kernels, {&Avx2::nonzero, &Avx2::blend, &Avx2::load_block, &Avx2::gather}, &kAvx2Batch};
-constexpr LaneIsaTables kAvx512{&kAvx512Kernels, {&Avx512::nonzero, &Avx512::blend, &Avx512::load_block, &Avx512::gather}, &kAvx512Batch};
+constexpr FusedKernelTable kAvx2Fused = fusedTableOf<Avx2>();
+constexpr FusedKernelTable kAvx512Fused = fusedTableOf<Avx512>();
+constexpr LaneIsaTables kAvx2{&kAvx2Kernels, {&Avx2::nonzero, &Avx2::blend, &Avx2::load_block, &Avx2::gather},
+                              &kAvx2Batch, &kAvx2Fused};
+constexpr LaneIsaTables kAvx512{&kAvx512Kernels,
+                                {&Avx512::nonzero, &Avx512::blend, &Avx512::load_block, &Avx512::gather},
+                                &kAvx512Batch, &kAvx512Fused};
 #endif
 
 bool machineRuns(LaneIsa isa) {

@@ -46,10 +46,23 @@ using BatchKernel = void (*)(uint32_t* dst, const uint32_t* a, const uint32_t* b
                              const uint32_t* d, uint32_t imm);
 using BatchKernelTable = std::array<BatchKernel, kLaneKernelOps>;
 
+// A multiply and the add or subtract that is its only use, as one kernel (the pixel program's
+// decoder fuses them: raster/decoded_program.h): two roundings, exactly the two instructions'
+// bits, one pass over the lanes. Operands (a, b) are the product's, c the other term.
+enum class FusedForm : uint8_t {
+  ProductPlus,   // a * b + c
+  PlusProduct,   // c + a * b
+  ProductMinus,  // a * b - c
+  MinusProduct,  // c - a * b
+};
+constexpr size_t kFusedForms = 4;
+using FusedKernelTable = std::array<std::array<LaneKernel, 8>, kFusedForms>;  // [form][a, b, c wide]
+
 struct LaneIsaTables {
   const LaneKernelTable* kernels;
   LaneMaskOps masks;
   const BatchKernelTable* batch;
+  const FusedKernelTable* fused;
 };
 
 namespace detail {

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "compiler/fixed_point.h"
+#include "compiler/scalar_ops.h"
 #include "raster/lane_kernels.h"
 #include "raster/limits.h"
 #include "raster/setup_batch.h"
@@ -155,6 +156,35 @@ TEST(LaneKernels, MaskLoopsAgreeWithTheirDefinition) {
       laneMaskOps().blend(d.data(), s.data(), mask);
       EXPECT_EQ(d, want) << laneIsaName(isa);
     }
+  }
+}
+
+// The fused multiply-and-add kernels (the decoder's FusedForm) compute, on every set and for
+// every operand shape, the bits of the FMul and then the FAdd / FSub they stand for.
+TEST(LaneKernels, FusedProductsAreTheTwoInstructionsBits) {
+  IsaGuard guard;
+  std::mt19937 rng(5);
+  for (LaneIsa isa : availableLaneIsas()) {
+    ASSERT_TRUE(setLaneIsa(isa));
+    for (size_t form = 0; form < kFusedForms; ++form)
+      for (unsigned wide = 0; wide < 8; ++wide)
+        for (int trial = 0; trial < 4; ++trial) {
+          const std::vector<uint32_t> a = operandLanes(rng, trial), b = operandLanes(rng, trial + 1),
+                                      c = operandLanes(rng, trial + 2), zero(kLanes, 0u);
+          std::vector<uint32_t> got(kLanes);
+          (*laneIsaTables().fused)[form][wide](got.data(), a.data(), b.data(), c.data(), zero.data(), 0);
+          for (int i = 0; i < kLanes; ++i) {
+            const uint32_t m = evalScalar(Op::FMul, (wide & 1) ? a[i] : a[0], (wide & 2) ? b[i] : b[0], 0u);
+            const uint32_t t = (wide & 4) ? c[i] : c[0];
+            const FusedForm f = static_cast<FusedForm>(form);
+            const uint32_t want = f == FusedForm::ProductPlus    ? evalScalar(Op::FAdd, m, t, 0u)
+                                  : f == FusedForm::PlusProduct  ? evalScalar(Op::FAdd, t, m, 0u)
+                                  : f == FusedForm::ProductMinus ? evalScalar(Op::FSub, m, t, 0u)
+                                                                 : evalScalar(Op::FSub, t, m, 0u);
+            EXPECT_TRUE(sameValue(got[i], want))
+                << laneIsaName(isa) << " form " << form << " shape " << wide << " lane " << i;
+          }
+        }
   }
 }
 
