@@ -14,7 +14,8 @@ namespace {
 // written once and never under a mask (so unchanged since), and nothing else reads the FMul's
 // register. Counted conservatively: every register operand of any instruction is a use and
 // every register destination a definition (the interpolator-data ops' registers are another
-// file, counted anyway).
+// file, counted anyway where their numbers are a pixel register's; a register number past the
+// program's registers is never treated as unchanging).
 void fuseProducts(const PixelProgram& program, const LaneIsaTables& isa, DecodedProgram& out) {
   const size_t n = program.code.size();
   DecodedProgram::Scratch& s = out.scratch;
@@ -33,11 +34,9 @@ void fuseProducts(const PixelProgram& program, const LaneIsaTables& isa, Decoded
     const uint32_t i = operandIndex(o);
     return i < program.num_regs ? static_cast<int64_t>(i) : -1;
   };
-  bool in_range = true;
   for (size_t pc = 0; pc < n; ++pc) {
     const Instr& ins = program.code[pc];
     for (uint32_t o : {ins.a, ins.b, ins.c, ins.d}) {
-      if (o != kNoOperand && operandKind(o) == OperandKind::Reg && operandIndex(o) >= program.num_regs) in_range = false;
       if (const int64_t r = reg(o); r >= 0) ++uses[static_cast<size_t>(r)];
     }
     if (const int64_t r = reg(ins.dst); r >= 0) {
@@ -46,7 +45,6 @@ void fuseProducts(const PixelProgram& program, const LaneIsaTables& isa, Decoded
       if (ins.masked_write) masked[static_cast<size_t>(r)] = 1;
     }
   }
-  if (!in_range) return;  // a register past num_regs: not a program codegen made; fuse nothing
   // A value that cannot change between the product and the add.
   auto stable = [&](uint32_t o) {
     const int64_t r = reg(o);
