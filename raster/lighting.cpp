@@ -104,6 +104,99 @@ glm::vec4 LightingEquation::shade(const Material& m, const glm::vec3& eye, const
   return glm::clamp(glm::vec4(c, m.diffuse.a), 0.0f, 1.0f);
 }
 
+// Written as shade() is, operation for operation (glm's vec3 dot is (x x' + y y') + z z', its
+// length sqrt(dot), its max (x < y) ? y : x, its min (y < x) ? y : x), over arrays.
+void LightingEquation::shadeRun(const LitPoints& in, float* const out[4]) const {
+  const int n = in.n;
+  alignas(64) float c[3][LitPoints::kMax], term[3][LitPoints::kMax], vp[3][LitPoints::kMax], scale[LitPoints::kMax],
+      n_dot_vp[LitPoints::kMax];
+  for (int k = 0; k < 3; ++k)
+    for (int i = 0; i < n; ++i) c[k][i] = in.emission[k][i] + in.ambient[k][i] * model_ambient_[k];
+  const float* const ex = in.eye[0];
+  const float* const ey = in.eye[1];
+  const float* const ez = in.eye[2];
+  const float* const nx = in.normal[0];
+  const float* const ny = in.normal[1];
+  const float* const nz = in.normal[2];
+  for (int li = 0; li < count_; ++li) {
+    const Prepared& l = lights_[li];
+    if (l.positional) {
+      for (int i = 0; i < n; ++i) {
+        const float dx = l.position.x - ex[i], dy = l.position.y - ey[i], dz = l.position.z - ez[i];
+        const float dist = std::sqrt(dx * dx + dy * dy + dz * dz);
+        const bool far = dist > 0;
+        vp[0][i] = far ? dx / dist : 0.0f;
+        vp[1][i] = far ? dy / dist : 0.0f;
+        vp[2][i] = far ? dz / dist : 0.0f;
+        const float k = l.constant + l.linear * dist + l.quadratic * dist * dist;
+        scale[i] = k > 0 ? 1.0f / k : 0.0f;  // attenuation; the spot factor below
+      }
+      for (int i = 0; i < n; ++i) {
+        float spot = 1.0f;
+        if (l.spot) {
+          const glm::vec3 v(vp[0][i], vp[1][i], vp[2][i]);
+          spot = spotFactor(v, l.spot_direction, l.spot_cos_cutoff, l.spot_exponent);
+        }
+        scale[i] = scale[i] * spot;
+      }
+    } else {
+      const float s = 1.0f * l.directional_spot;
+      for (int i = 0; i < n; ++i) {
+        vp[0][i] = l.direction.x;
+        vp[1][i] = l.direction.y;
+        vp[2][i] = l.direction.z;
+        scale[i] = s;
+      }
+    }
+    for (int i = 0; i < n; ++i) {
+      const float d = nx[i] * vp[0][i] + ny[i] * vp[1][i] + nz[i] * vp[2][i];
+      n_dot_vp[i] = d < 0.0f ? 0.0f : d;  // std::max(d, 0): (d < 0) ? 0 : d
+    }
+    for (int k = 0; k < 3; ++k) {
+      const float la = l.ambient[k], ld = l.diffuse[k];
+      for (int i = 0; i < n; ++i) term[k][i] = in.ambient[k][i] * la + n_dot_vp[i] * in.diffuse[k][i] * ld;
+    }
+    // The specular term, where the light reaches the front of the surface (n_dot_vp > 0).
+    alignas(64) float spec[LitPoints::kMax];
+    if (l.has_half) {  // a directional light, the viewer at infinity: one half vector
+      for (int i = 0; i < n; ++i) {
+        const float d = nx[i] * l.half.x + ny[i] * l.half.y + nz[i] * l.half.z;
+        spec[i] = l.half_zero ? 0.0f : (d < 0.0f ? 0.0f : d);  // n_dot_h
+      }
+    } else {
+      for (int i = 0; i < n; ++i) {
+        const glm::vec3 e(ex[i], ey[i], ez[i]), v(vp[0][i], vp[1][i], vp[2][i]);
+        const glm::vec3 h = v + (local_viewer_ ? (glm::length(e) > 0 ? -glm::normalize(e) : glm::vec3(0))
+                                               : glm::vec3(0, 0, 1));
+        const float hl = glm::length(h);
+        spec[i] = hl > 0 ? std::max(glm::dot(glm::vec3(nx[i], ny[i], nz[i]), h / hl), 0.0f) : 0.0f;
+      }
+    }
+    bool shiny = false;
+    for (int i = 0; i < n; ++i) shiny |= in.shininess[i] != 0.0f;
+    if (shiny)  // pow, lane by lane (only where it counts)
+      for (int i = 0; i < n; ++i)
+        spec[i] = in.shininess[i] == 0.0f ? 1.0f : n_dot_vp[i] > 0.0f ? std::pow(spec[i], in.shininess[i]) : 0.0f;
+    else
+      for (int i = 0; i < n; ++i) spec[i] = 1.0f;
+    for (int k = 0; k < 3; ++k) {
+      const float ls = l.specular[k];
+      for (int i = 0; i < n; ++i)
+        term[k][i] = n_dot_vp[i] > 0.0f ? term[k][i] + spec[i] * in.specular[k][i] * ls : term[k][i];
+    }
+    for (int k = 0; k < 3; ++k)
+      for (int i = 0; i < n; ++i) c[k][i] = c[k][i] + scale[i] * term[k][i];
+  }
+  // glm::clamp(x, 0, 1): min(max(x, 0), 1).
+  auto clamp01 = [](float x) {
+    const float lo = x < 0.0f ? 0.0f : x;
+    return 1.0f < lo ? 1.0f : lo;
+  };
+  for (int k = 0; k < 3; ++k)
+    for (int i = 0; i < n; ++i) out[k][i] = clamp01(c[k][i]);
+  for (int i = 0; i < n; ++i) out[3][i] = clamp01(in.diffuse[3][i]);
+}
+
 glm::vec4 litColor(const LightingState& s, const Material& m, const glm::vec3& eye, const glm::vec3& n) {
   return LightingEquation(s).shade(m, eye, n);
 }

@@ -58,12 +58,29 @@ struct LightingState {
 // once: the enabled lights, a positional light's position, a directional light's direction,
 // spot factor and (for a viewer at infinity) half vector. The shading pass evaluates it per
 // pixel; litColor() below is the same object used once, so the two agree to the bit.
+// n points lit at once (LightingEquation::shadeRun), each quantity one array per component.
+struct LitPoints {
+  static constexpr int kMax = 64;  // points per run (a tile's row)
+  int n = 0;
+  const float* eye[3];     // eye-space points
+  const float* normal[3];  // as shade() takes them: unit or zero, reversed for a back face
+  const float* ambient[4];
+  const float* diffuse[4];
+  const float* specular[4];
+  const float* emission[4];
+  const float* shininess;
+};
+
 class LightingEquation {
  public:
   explicit LightingEquation(const LightingState& s);
   // The colour at eye-space point `eye` with material `m` and normal `n` (already reversed for
   // a back face), clamped to [0, 1].
   glm::vec4 shade(const Material& m, const glm::vec3& eye, const glm::vec3& n) const;
+  // shade() at every point of `in`, into out[component][point]: the same operations in the same
+  // order, point by point -- the same bits -- in loops over the points that the compiler
+  // vectorizes (the shading pass lights a row of a tile at a time).
+  void shadeRun(const LitPoints& in, float* const out[4]) const;
 
  private:
   struct Prepared {

@@ -142,20 +142,26 @@ void PixelExecutor::runAndCommit(const CompiledPrimitive& prim, const PixelProgr
       target.slots[layout.surface_slot + 3 + k][t] = has ? asF(surface_[static_cast<size_t>(4 + k) * kLanes + i]) : 0.0f;
     }
   };
+  if (packed) {
+    // Lane by lane, each to its own pixel; the planes looked up once.
+    float* planes[kMaxChannels];
+    for (int ch = 0; ch < nch; ++ch) planes[ch] = target.slots[layout.gbuffer_slot[ch]];
+    for (uint64_t m = alive; m; m &= m - 1) {
+      const int i = __builtin_ctzll(m);
+      const size_t t = static_cast<size_t>(packed->y[i] - target.tile_y0) * kTileSize +
+                       static_cast<size_t>(packed->x[i] - target.tile_x0);
+      target.shade_ids[t] = shade_id;
+      for (int ch = 0; ch < nch; ++ch) planes[ch][t] = asF(staging_[static_cast<size_t>(ch) * kLanes + static_cast<size_t>(i)]);
+      if (commit_surface) commitSurface(i, t);
+    }
+    return;
+  }
   // Lane i to the tile's G-buffer entry t.
   auto commitLane = [&](int i, size_t t) {
     target.shade_ids[t] = shade_id;
     for (int ch = 0; ch < nch; ++ch) target.slots[layout.gbuffer_slot[ch]][t] = asF(staging_[static_cast<size_t>(ch) * kLanes + i]);
     if (commit_surface) commitSurface(i, t);
   };
-  if (packed) {
-    for (uint64_t m = alive; m; m &= m - 1) {
-      const int i = __builtin_ctzll(m);
-      commitLane(i, static_cast<size_t>(packed->y[i] - target.tile_y0) * kTileSize +
-                        static_cast<size_t>(packed->x[i] - target.tile_x0));
-    }
-    return;
-  }
   // Row by row: a whole row's channels are copied at once.
   for (int row = 0; row < kBlockSize; ++row) {
     const unsigned row_mask = static_cast<unsigned>(alive >> (row * kBlockSize)) & ((1u << kBlockSize) - 1u);

@@ -1,38 +1,135 @@
 // The shading pass (see shading.h).
+//
+// A tile is shaded row by row, in runs of pixels with the same shading state. A lit run goes
+// through LightingEquation::shadeRun with each quantity one array per component -- the
+// G-buffer's planes are already laid out that way -- so that the equation's loops vectorize.
 #include "raster/shading.h"
 
+#include <cmath>
 #include <cstddef>
 
 #include "raster/limits.h"
 
 namespace pf {
+namespace {
+
+static_assert(LitPoints::kMax >= kTileSize, "a run is at most a tile's row");
+
+// The colour of `n` pixels from plane index i0 of the G-buffer under shading state `s`
+// (the colour parameter, or the state's constant colour), into c[component][pixel].
+void runColour(const ShadeState& s, const float* const* slots, size_t i0, int n, float c[4][kTileSize]) {
+  for (int k = 0; k < 4; ++k) {
+    if (s.color_slot >= 0) {
+      const float* plane = slots[s.color_slot + k] + i0;
+      for (int i = 0; i < n; ++i) c[k][i] = plane[i];
+    } else {
+      for (int i = 0; i < n; ++i) c[k][i] = s.constant_color[k];
+    }
+  }
+}
+
+// GL's lighting at the run's pixels from the G-buffer's P and N: the normal normalised (as
+// glm::normalize: n * (1 / sqrt(dot(n, n))), where its length is not zero), the back face's
+// material and reversed normal where two-sided lighting shows the back, the tracked material
+// properties taking the pixel's colour. `c` is the colour on entry, the lit colour on return.
+void lightRun(const ShadeState& s, const LightingState& l, const LightingEquation& eq, const float* const* slots,
+              size_t i0, int n, float c[4][kTileSize]) {
+  alignas(64) float normal[3][kTileSize], material[4][4][kTileSize], shininess[kTileSize];
+  alignas(64) uint8_t face[kTileSize];
+  const float* p[3];
+  for (int k = 0; k < 3; ++k) p[k] = slots[s.surface_slot + k] + i0;
+  const float* const nx = slots[s.surface_slot + 3] + i0;
+  const float* const ny = slots[s.surface_slot + 4] + i0;
+  const float* const nz = slots[s.surface_slot + 5] + i0;
+  for (int i = 0; i < n; ++i) {
+    const float d = nx[i] * nx[i] + ny[i] * ny[i] + nz[i] * nz[i];
+    const bool unit = std::sqrt(d) > 0.0f;
+    const float inv = 1.0f / std::sqrt(d);
+    normal[0][i] = unit ? nx[i] * inv : nx[i];
+    normal[1][i] = unit ? ny[i] * inv : ny[i];
+    normal[2][i] = unit ? nz[i] * inv : nz[i];
+  }
+  // Two-sided lighting: a normal facing away from the eye (dot(n, -p) < 0) shows the back face.
+  for (int i = 0; i < n; ++i) {
+    const float d = normal[0][i] * -p[0][i] + normal[1][i] * -p[1][i] + normal[2][i] * -p[2][i];
+    face[i] = l.two_side && d < 0.0f ? 1 : 0;
+  }
+  for (int k = 0; k < 3; ++k)
+    for (int i = 0; i < n; ++i) normal[k][i] = face[i] ? -normal[k][i] : normal[k][i];
+  // The material of each pixel's face (trackedMaterial, property by property).
+  enum { kAmbient, kDiffuse, kSpecular, kEmission };
+  for (int q = 0; q < 4; ++q) {
+    const glm::vec4* front[4] = {&l.material[0].ambient, &l.material[0].diffuse, &l.material[0].specular,
+                                 &l.material[0].emission};
+    const glm::vec4* back[4] = {&l.material[1].ambient, &l.material[1].diffuse, &l.material[1].specular,
+                                &l.material[1].emission};
+    for (int k = 0; k < 4; ++k) {
+      const float f = (*front[q])[k], b = (*back[q])[k];
+      for (int i = 0; i < n; ++i) material[q][k][i] = face[i] ? b : f;
+    }
+  }
+  for (int i = 0; i < n; ++i) shininess[i] = face[i] ? l.material[1].shininess : l.material[0].shininess;
+  if (l.color_material) {
+    int tracked[2] = {kAmbient, kDiffuse};  // GL_AMBIENT_AND_DIFFUSE (and trackedMaterial's default)
+    switch (l.color_material_mode) {
+      case GL_AMBIENT: tracked[1] = -1; break;
+      case GL_DIFFUSE: tracked[0] = -1; break;
+      case GL_SPECULAR: tracked[0] = kSpecular, tracked[1] = -1; break;
+      case GL_EMISSION: tracked[0] = kEmission, tracked[1] = -1; break;
+      default: break;
+    }
+    const bool front_tracks = l.color_material_face != GL_BACK, back_tracks = l.color_material_face != GL_FRONT;
+    for (int t : tracked) {
+      if (t < 0) continue;
+      for (int k = 0; k < 4; ++k)
+        for (int i = 0; i < n; ++i)
+          material[t][k][i] = (face[i] ? back_tracks : front_tracks) ? c[k][i] : material[t][k][i];
+    }
+  }
+  LitPoints in;
+  in.n = n;
+  for (int k = 0; k < 3; ++k) {
+    in.eye[k] = p[k];
+    in.normal[k] = normal[k];
+  }
+  for (int k = 0; k < 4; ++k) {
+    in.ambient[k] = material[kAmbient][k];
+    in.diffuse[k] = material[kDiffuse][k];
+    in.specular[k] = material[kSpecular][k];
+    in.emission[k] = material[kEmission][k];
+  }
+  in.shininess = shininess;
+  float* const out[4] = {c[0], c[1], c[2], c[3]};
+  eq.shadeRun(in, out);
+}
+
+}  // namespace
 
 uint64_t shadeTile(const uint32_t* shade_ids, const float* const* slots, const ShadeState* shades,
                    const LightingState* lightings, const LightingEquation* equations, const ShadeTarget& t) {
   uint64_t shaded = 0;
+  alignas(64) float c[4][kTileSize];
   for (int y = 0; y < t.h; ++y) {
-    for (int x = 0; x < t.w; ++x) {
-      size_t i = static_cast<size_t>(y) * kTileSize + x;
-      uint32_t id = shade_ids[i];
-      if (id == 0) continue;
-      const ShadeState& s = shades[id - 1];
-      float c[4];
-      for (int k = 0; k < 4; ++k) c[k] = s.color_slot >= 0 ? slots[s.color_slot + k][i] : s.constant_color[k];
-      if (s.lighting >= 0) {  // GL's lighting at this pixel; the colour is the material's where tracked
-        const LightingState& l = lightings[s.lighting];
-        const glm::vec3 p(slots[s.surface_slot][i], slots[s.surface_slot + 1][i], slots[s.surface_slot + 2][i]);
-        glm::vec3 n(slots[s.surface_slot + 3][i], slots[s.surface_slot + 4][i], slots[s.surface_slot + 5][i]);
-        if (glm::length(n) > 0.0f) n = glm::normalize(n);
-        // Two-sided lighting: a normal facing away from the eye shows the back face.
-        const int face = l.two_side && glm::dot(n, -p) < 0.0f ? 1 : 0;
-        const glm::vec4 lit =
-            equations[s.lighting].shade(trackedMaterial(l, face, glm::vec4(c[0], c[1], c[2], c[3])), p, face ? -n : n);
-        for (int k = 0; k < 4; ++k) c[k] = lit[k];
+    const size_t row = static_cast<size_t>(y) * kTileSize;
+    for (int x = 0; x < t.w;) {
+      const uint32_t id = shade_ids[row + static_cast<size_t>(x)];
+      if (id == 0) {
+        ++x;
+        continue;
       }
+      int end = x + 1;
+      while (end < t.w && shade_ids[row + static_cast<size_t>(end)] == id) ++end;
+      const int n = end - x;
+      const size_t i0 = row + static_cast<size_t>(x);
+      const ShadeState& s = shades[id - 1];
+      runColour(s, slots, i0, n, c);
+      if (s.lighting >= 0) lightRun(s, lightings[s.lighting], equations[s.lighting], slots, i0, n, c);
       uint8_t* px = t.color + (static_cast<size_t>(t.y0 + y) * t.stride + t.x0 + x) * 4;
-      for (int k = 0; k < 4; ++k)
-        if (t.color_mask & (1u << k)) px[k] = toUnorm8(c[k]);
-      ++shaded;
+      for (int i = 0; i < n; ++i)
+        for (int k = 0; k < 4; ++k)
+          if (t.color_mask & (1u << k)) px[4 * i + k] = toUnorm8(c[k][i]);
+      shaded += static_cast<uint64_t>(n);
+      x = end;
     }
   }
   return shaded;

@@ -226,3 +226,61 @@ TEST(Lighting, PreparedEquationGivesTheDirectEquationsBits) {
   }
   EXPECT_EQ(compared, 6000);
 }
+
+// shadeRun (the shading pass's: a row of points at once) gives shade()'s bits at every point.
+TEST(Lighting, RunGivesTheBitsOfEachPoint) {
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f), pos(0.0f, 1.0f);
+  for (int trial = 0; trial < 100; ++trial) {
+    pf::LightingState s;
+    s.local_viewer = trial % 2 == 0;
+    for (int i = 0; i < 4; ++i) {
+      pf::Light& l = s.lights[i];
+      l.enabled = i < 3 || trial % 3 == 0;
+      l.ambient = glm::vec4(pos(rng), pos(rng), pos(rng), 1);
+      l.diffuse = glm::vec4(pos(rng), pos(rng), pos(rng), 1);
+      l.specular = glm::vec4(pos(rng), pos(rng), pos(rng), 1);
+      l.position = i % 2 ? glm::vec4(u(rng) * 3, u(rng) * 3, u(rng) * 3, 1) : glm::vec4(u(rng), u(rng), u(rng), 0);
+      if (i >= 2) {
+        l.spot_direction = glm::vec3(u(rng), u(rng), u(rng));
+        l.spot_cutoff = 20.0f + 60.0f * pos(rng);
+        l.spot_exponent = 3.0f * pos(rng);
+        l.quadratic_attenuation = pos(rng);
+      }
+    }
+    const pf::LightingEquation eq(s);
+    constexpr int n = pf::LitPoints::kMax;
+    std::vector<float> q(static_cast<size_t>(n) * 23);
+    for (float& v : q) v = u(rng);
+    auto plane = [&](int k) { return q.data() + static_cast<size_t>(k) * n; };
+    for (int i = 0; i < n; ++i) {  // unit normals, some zero; positive shininess, some zero
+      glm::vec3 nn(plane(3)[i], plane(4)[i], plane(5)[i]);
+      nn = i % 9 == 0 ? glm::vec3(0) : glm::normalize(nn);
+      plane(3)[i] = nn.x, plane(4)[i] = nn.y, plane(5)[i] = nn.z;
+      plane(22)[i] = i % 4 == 0 ? 0.0f : 50.0f * std::abs(plane(22)[i]);
+    }
+    pf::LitPoints in;
+    in.n = n - trial % 5;
+    for (int k = 0; k < 3; ++k) in.eye[k] = plane(k), in.normal[k] = plane(3 + k);
+    for (int k = 0; k < 4; ++k)
+      in.ambient[k] = plane(6 + k), in.diffuse[k] = plane(10 + k), in.specular[k] = plane(14 + k),
+      in.emission[k] = plane(18 + k);
+    in.shininess = plane(22);
+    std::vector<float> out(4 * n);
+    float* const outs[4] = {out.data(), out.data() + n, out.data() + 2 * n, out.data() + 3 * n};
+    eq.shadeRun(in, outs);
+    for (int i = 0; i < in.n; ++i) {
+      pf::Material m;
+      m.ambient = glm::vec4(in.ambient[0][i], in.ambient[1][i], in.ambient[2][i], in.ambient[3][i]);
+      m.diffuse = glm::vec4(in.diffuse[0][i], in.diffuse[1][i], in.diffuse[2][i], in.diffuse[3][i]);
+      m.specular = glm::vec4(in.specular[0][i], in.specular[1][i], in.specular[2][i], in.specular[3][i]);
+      m.emission = glm::vec4(in.emission[0][i], in.emission[1][i], in.emission[2][i], in.emission[3][i]);
+      m.shininess = in.shininess[i];
+      const glm::vec4 want = eq.shade(m, glm::vec3(in.eye[0][i], in.eye[1][i], in.eye[2][i]),
+                                      glm::vec3(in.normal[0][i], in.normal[1][i], in.normal[2][i]));
+      for (int k = 0; k < 4; ++k)
+        EXPECT_EQ(std::bit_cast<uint32_t>(outs[k][i]), std::bit_cast<uint32_t>(want[k]))
+            << "trial " << trial << " point " << i << " component " << k;
+    }
+  }
+}

@@ -1,0 +1,124 @@
+// The shading pass (raster/shading.h) lights runs of pixels at once (LightingEquation::shadeRun
+// over the G-buffer's planes). Against the pixel-at-a-time algorithm written out here -- the
+// normal normalised, the face chosen for two-sided lighting, trackedMaterial(), then
+// LightingEquation::shade() -- on random G-buffers: the same bytes, for every colour-material
+// mode and face, positional, directional and spot lights, zero and unnormalised normals, unlit
+// states with a colour parameter or a constant colour, and a colour mask.
+#include <gtest/gtest.h>
+
+#include <glm/glm.hpp>
+
+#include <random>
+#include <vector>
+
+#include "raster/limits.h"
+#include "raster/shading.h"
+
+using namespace pf;
+
+namespace {
+
+LightingState randomLighting(std::mt19937& rng) {
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f), pos(0.0f, 1.0f);
+  auto colour = [&] { return glm::vec4(pos(rng), pos(rng), pos(rng), pos(rng)); };
+  LightingState s;
+  s.enabled = true;
+  s.two_side = rng() % 2 == 0;
+  s.local_viewer = rng() % 3 == 0;
+  s.model_ambient = colour();
+  s.color_material = rng() % 4 != 0;
+  const GLenum faces[] = {GL_FRONT, GL_BACK, GL_FRONT_AND_BACK};
+  const GLenum modes[] = {GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_EMISSION, GL_AMBIENT_AND_DIFFUSE};
+  s.color_material_face = faces[rng() % 3];
+  s.color_material_mode = modes[rng() % 5];
+  for (Material& m : s.material) {
+    m.ambient = colour();
+    m.diffuse = colour();
+    m.specular = colour();
+    m.emission = colour() * 0.3f;
+    m.shininess = rng() % 3 == 0 ? 0.0f : 60.0f * pos(rng);
+  }
+  for (int i = 0; i < 3; ++i) {
+    Light& l = s.lights[i];
+    l.enabled = true;
+    l.ambient = colour();
+    l.diffuse = colour();
+    l.specular = colour();
+    l.position = i == 0 ? glm::vec4(u(rng), u(rng), 1.0f, 0.0f) : glm::vec4(u(rng) * 3, u(rng) * 3, u(rng) * 3, 1.0f);
+    if (i == 2) {
+      l.spot_direction = glm::vec3(u(rng), u(rng), -1.0f);
+      l.spot_cutoff = 30.0f + 40.0f * pos(rng);
+      l.spot_exponent = 4.0f * pos(rng);
+      l.linear_attenuation = 0.3f * pos(rng);
+    }
+  }
+  return s;
+}
+
+}  // namespace
+
+TEST(ShadingPass, RunsGiveThePixelAtATimeBytes) {
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f), pos(0.0f, 1.0f);
+  constexpr size_t kPlane = static_cast<size_t>(kTileSize) * kTileSize;
+  for (int trial = 0; trial < 20; ++trial) {
+    // Two lighting states, three lit shading states and two unlit ones.
+    std::vector<LightingState> lightings = {randomLighting(rng), randomLighting(rng)};
+    std::vector<LightingEquation> equations(lightings.begin(), lightings.end());
+    std::vector<ShadeState> shades(5);
+    for (int k = 0; k < 5; ++k) {
+      ShadeState& s = shades[static_cast<size_t>(k)];
+      s.color_slot = k == 4 ? -1 : 0;
+      for (float& c : s.constant_color) c = pos(rng);
+      if (k < 3) {
+        s.surface_slot = 4;
+        s.lighting = k % 2;
+      }
+    }
+    // The G-buffer: colour (4 slots), P and N (6): runs of random length and state, some empty.
+    std::vector<float> planes(10 * kPlane);
+    std::vector<float*> slots(10);
+    for (int k = 0; k < 10; ++k) slots[static_cast<size_t>(k)] = planes.data() + static_cast<size_t>(k) * kPlane;
+    std::vector<uint32_t> ids(kPlane);
+    for (size_t i = 0; i < kPlane;) {
+      const uint32_t id = rng() % 7 == 0 ? 0u : 1u + rng() % 5;
+      for (size_t end = std::min(kPlane, i + 1 + rng() % 20); i < end; ++i) ids[i] = id;
+    }
+    for (size_t i = 0; i < kPlane; ++i) {
+      for (int k = 0; k < 4; ++k) slots[static_cast<size_t>(k)][i] = pos(rng) * 1.2f - 0.1f;
+      slots[4][i] = u(rng) * 2;
+      slots[5][i] = u(rng) * 2;
+      slots[6][i] = -2.0f - 3.0f * pos(rng);
+      const int kind = static_cast<int>(rng() % 8);
+      for (int k = 7; k < 10; ++k) slots[static_cast<size_t>(k)][i] = kind == 0 ? 0.0f : u(rng) * (kind == 1 ? 5.0f : 1.0f);
+    }
+    const uint8_t mask = trial % 3 == 0 ? 0x5 : 0xf;
+    std::vector<uint8_t> got(kPlane * 4, 7), want(kPlane * 4, 7);
+    const ShadeTarget target{got.data(), kTileSize, 0, 0, kTileSize, kTileSize, mask};
+    EXPECT_EQ(shadeTile(ids.data(), slots.data(), shades.data(), lightings.data(), equations.data(), target),
+              static_cast<uint64_t>(std::count_if(ids.begin(), ids.end(), [](uint32_t id) { return id != 0; })));
+
+    // Pixel at a time.
+    for (size_t i = 0; i < kPlane; ++i) {
+      if (ids[i] == 0) continue;
+      const ShadeState& s = shades[ids[i] - 1];
+      float c[4];
+      for (int k = 0; k < 4; ++k) c[k] = s.color_slot >= 0 ? slots[static_cast<size_t>(s.color_slot + k)][i] : s.constant_color[k];
+      if (s.lighting >= 0) {
+        const LightingState& l = lightings[static_cast<size_t>(s.lighting)];
+        const glm::vec3 p(slots[4][i], slots[5][i], slots[6][i]);
+        glm::vec3 n(slots[7][i], slots[8][i], slots[9][i]);
+        if (glm::length(n) > 0.0f) n = glm::normalize(n);
+        const int face = l.two_side && glm::dot(n, -p) < 0.0f ? 1 : 0;
+        const glm::vec4 lit = equations[static_cast<size_t>(s.lighting)].shade(
+            trackedMaterial(l, face, glm::vec4(c[0], c[1], c[2], c[3])), p, face ? -n : n);
+        for (int k = 0; k < 4; ++k) c[k] = lit[k];
+      }
+      for (int k = 0; k < 4; ++k)
+        if (mask & (1u << k)) want[i * 4 + static_cast<size_t>(k)] = toUnorm8(c[k]);
+    }
+    size_t differ = 0;
+    for (size_t i = 0; i < got.size(); ++i) differ += got[i] != want[i];
+    EXPECT_EQ(differ, 0u) << "trial " << trial;
+  }
+}
