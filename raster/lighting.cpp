@@ -31,6 +31,13 @@ Material trackedMaterial(const LightingState& s, int face, const glm::vec4& colo
   return m;
 }
 
+bool lightReadsEye(const LightingState& s) {
+  if (s.local_viewer || s.two_side) return true;
+  for (const Light& l : s.lights)
+    if (l.enabled && l.position.w != 0.0f) return true;
+  return false;
+}
+
 namespace {
 
 float spotFactor(const glm::vec3& vp, const glm::vec3& sd, float cos_cutoff, float exponent) {

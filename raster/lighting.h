@@ -54,6 +54,10 @@ struct LightingState {
   bool operator==(const LightingState&) const = default;
 };
 
+// Whether lighting with `s` depends on the eye-space point lit, not only on its normal: a
+// positional light, a local viewer, or two-sided lighting (which faces the normal to the eye).
+bool lightReadsEye(const LightingState& s);
+
 // GL's lighting equation for one state, with what does not depend on the point lit worked out
 // once: the enabled lights, a positional light's position, a directional light's direction,
 // spot factor and (for a viewer at infinity) half vector. The shading pass evaluates it per

@@ -133,14 +133,17 @@ void PixelExecutor::runAndCommit(const CompiledPrimitive& prim, const PixelProgr
   if (alive == ~0ull) ++counters.blocks_covered;
   // Per-pixel lighting's surface: P (divided by w) and N. (An instance that does not set N --
   // a callee of one that does -- has no surface: 0.)
+  // (P only where the lighting reads it: ChannelLayout::surface_eye.)
   const bool commit_surface = layout.surface_slot >= 0 && !layout.surface_interpolated;
   auto commitSurface = [&](int i, size_t t) {
     const bool has = prim.writes_normal;
-    const float w = has ? asF(surface_[3 * kLanes + i]) : 1.0f;
-    for (int k = 0; k < 3; ++k) {
-      target.slots[layout.surface_slot + k][t] = has ? asF(surface_[static_cast<size_t>(k) * kLanes + i]) / w : 0.0f;
-      target.slots[layout.surface_slot + 3 + k][t] = has ? asF(surface_[static_cast<size_t>(4 + k) * kLanes + i]) : 0.0f;
+    if (layout.surface_eye) {
+      const float w = has ? asF(surface_[3 * kLanes + i]) : 1.0f;
+      for (int k = 0; k < 3; ++k)
+        target.slots[layout.surface_slot + k][t] = has ? asF(surface_[static_cast<size_t>(k) * kLanes + i]) / w : 0.0f;
     }
+    for (int k = 0; k < 3; ++k)
+      target.slots[layout.surface_slot + 3 + k][t] = has ? asF(surface_[static_cast<size_t>(4 + k) * kLanes + i]) : 0.0f;
   };
   if (packed) {
     // Lane by lane, each to its own pixel; the planes looked up once.

@@ -70,6 +70,9 @@ struct ChannelLayout {
   // Those slots are filled by interpolated channels (vertex primitives lit per pixel), not by
   // the primitive's P and N.
   bool surface_interpolated = false;
+  // The lighting reads P (a positional light, a local viewer, two-sided lighting: lightReadsEye):
+  // else only N's slots are written, and the shading pass does not read P's.
+  bool surface_eye = true;
 
   // Whether some channels are bound to a shared interpolator called `name`.
   bool bindsInterpolator(const std::string& name) const;

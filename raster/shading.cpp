@@ -50,9 +50,15 @@ void lightRun(const ShadeState& s, const LightingState& l, const LightingEquatio
     normal[2][i] = unit ? nz[i] * inv : nz[i];
   }
   // Two-sided lighting: a normal facing away from the eye (dot(n, -p) < 0) shows the back face.
-  for (int i = 0; i < n; ++i) {
-    const float d = normal[0][i] * -p[0][i] + normal[1][i] * -p[1][i] + normal[2][i] * -p[2][i];
-    face[i] = l.two_side && d < 0.0f ? 1 : 0;
+  // (Without it P is not read: the lighting may not need it, and then it was not written --
+  // ChannelLayout::surface_eye.)
+  if (l.two_side) {
+    for (int i = 0; i < n; ++i) {
+      const float d = normal[0][i] * -p[0][i] + normal[1][i] * -p[1][i] + normal[2][i] * -p[2][i];
+      face[i] = d < 0.0f ? 1 : 0;
+    }
+  } else {
+    for (int i = 0; i < n; ++i) face[i] = 0;
   }
   for (int k = 0; k < 3; ++k)
     for (int i = 0; i < n; ++i) normal[k][i] = face[i] ? -normal[k][i] : normal[k][i];

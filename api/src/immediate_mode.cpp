@@ -403,7 +403,10 @@ static void startBegin(PFcontextRec& context, GLenum mode, const pf::CompiledPri
   // A primitive that sets its normal and has no vertices to light is lit per pixel: its P and N
   // follow its channels in the G-buffer.
   ctx->begin_lit_per_pixel = ctx->lighting.enabled && !ctx->begin_lit && ctx->begin_primitive->writes_normal;
-  if (ctx->begin_lit_per_pixel) ctx->begin_layout.surface_slot = ctx->row_channels;
+  if (ctx->begin_lit_per_pixel) {
+    ctx->begin_layout.surface_slot = ctx->row_channels;
+    ctx->begin_layout.surface_eye = pf::lightReadsEye(ctx->lighting);
+  }
   // (Vertices lit per pixel have their surface slots already, among their channels.)
   if (ctx->begin_vertices_per_pixel && ctx->begin_layout.surface_interpolated) ctx->begin_lit_per_pixel = true;
   planFeed(*ctx, *ctx->begin_primitive);
