@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "compiler/compiler.h"
+#include "raster/huge_page_allocator.h"
 #include "raster/raster_state.h"
 #include "raster/shading.h"
 
@@ -37,8 +38,8 @@ struct PendingClear {
 };
 
 struct Scene {
-  std::vector<Instance> instances;
-  std::vector<uint32_t> records;
+  std::vector<Instance, HugePageAllocator<Instance>> instances;
+  std::vector<uint32_t, HugePageAllocator<uint32_t>> records;
   std::vector<RasterState> states;
   std::vector<ChannelLayout> layouts;
   std::vector<ShadeState> shades;
