@@ -1,7 +1,7 @@
 // pfparticles: many small spheres in one glBegin -- particles, the atoms of a molecule -- drawn
 // by a sphere primitive through the API, timed (docs/performance.md, "100k spheres").
 //   pfparticles [--primitive sphere_impostors|sphere] [--count 100000] [--threads 1]
-//               [--frames 5] [--size 1024] [--stats]
+//               [--frames 5] [--size 1024] [--stats] [--csv FILE]
 // Spheres of 5-20 pixels at random places in a frustum, lit, each its own colour. Each frame
 // times the API calls, glEnd (setup and binning) and glFinish (rasterization and shading);
 // prints the median and the fastest frame, and the median glEnd. PF_SETUP_BATCH=0 sets the
@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cstdio>
 #include <random>
+#include <string>
 #include <vector>
 
 // The context internals, for --stats only.
@@ -24,12 +25,14 @@ int main(int argc, char** argv) {
   std::string primitive = "sphere_impostors";
   int count = 100000, threads = 1, frames = 5, size = 1024;
   bool stats = false;
+  std::string csv;
   app.add_option("--primitive", primitive, "the sphere primitive");
   app.add_option("--count", count, "spheres")->check(CLI::Range(1, 10000000));
   app.add_option("--threads", threads, "rasterizer threads")->check(CLI::Range(0, 256));
   app.add_option("--frames", frames, "timed frames (after one warm-up)")->check(CLI::Range(1, 1000));
   app.add_option("--size", size, "image size (square)")->check(CLI::Range(16, 8192));
-  app.add_flag("--stats", stats, "print the last frame's work counters");
+  app.add_flag("--stats", stats, "print the work counters per frame");
+  app.add_option("--csv", csv, "append primitive,count,size,threads,median_ms,fastest_ms,glend_ms to FILE");
   CLI11_PARSE(app, argc, argv);
 
   std::vector<unsigned char> pixels(static_cast<size_t>(size) * size * 4);
@@ -93,6 +96,16 @@ int main(int argc, char** argv) {
               "binning) median %.1f ms; clear and calls before it median %.1f ms\n",
               primitive.c_str(), count, size, size, pfGetThreadCount(ctx), ms[ms.size() / 2], ms.front(), frames,
               end_ms[end_ms.size() / 2], call_ms[call_ms.size() / 2]);
+  if (!csv.empty()) {
+    std::FILE* f = std::fopen(csv.c_str(), "a");
+    if (!f) {
+      std::fprintf(stderr, "pfparticles: cannot write %s\n", csv.c_str());
+      return 1;
+    }
+    std::fprintf(f, "%s,%d,%d,%d,%.1f,%.1f,%.1f\n", primitive.c_str(), count, size, pfGetThreadCount(ctx),
+                 ms[ms.size() / 2], ms.front(), end_ms[end_ms.size() / 2]);
+    std::fclose(f);
+  }
   if (stats) {
     // The counters add up since the context was made; every frame draws the same.
     const pf::FrameStats& s = ctx->renderer.stats();
