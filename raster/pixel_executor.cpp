@@ -8,6 +8,7 @@
 // (Instr::masked_write). Control, effects and the per-channel interpolator ops run in a switch.
 #include "raster/pixel_executor.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdlib>
 #include <cstring>
@@ -61,6 +62,7 @@ void PixelExecutor::startFrame() {
   for (RegionMemo& m : region_memos_) m.program = nullptr;  // a program may be freed, its address reused
   decoded_live_ = 0;
   decoded_last_ = 0;
+  if (shared_) shared_->startFrame();  // the shared interpolators' programs, decoded by it
 }
 
 const DecodedProgram& PixelExecutor::decoded(const PixelProgram& program, const LaneIsaTables& isa) {
@@ -146,15 +148,18 @@ void PixelExecutor::runAndCommit(const CompiledPrimitive& prim, const PixelProgr
       target.slots[layout.surface_slot + 3 + k][t] = has ? asF(surface_[static_cast<size_t>(4 + k) * kLanes + i]) : 0.0f;
   };
   if (packed) {
-    // Lane by lane, each to its own pixel; the planes looked up once.
+    // Lane by lane, each to its own pixel; the planes looked up once (a layout has at most
+    // kMaxChannels channels: the API refuses more, and so does beginSubmission).
     float* planes[kMaxChannels];
-    for (int ch = 0; ch < nch; ++ch) planes[ch] = target.slots[layout.gbuffer_slot[ch]];
+    const int hoisted = std::min(nch, kMaxChannels);
+    for (int ch = 0; ch < hoisted; ++ch) planes[ch] = target.slots[layout.gbuffer_slot[ch]];
     for (uint64_t m = alive; m; m &= m - 1) {
       const int i = __builtin_ctzll(m);
       const size_t t = static_cast<size_t>(packed->y[i] - target.tile_y0) * kTileSize +
                        static_cast<size_t>(packed->x[i] - target.tile_x0);
       target.shade_ids[t] = shade_id;
-      for (int ch = 0; ch < nch; ++ch) planes[ch][t] = asF(staging_[static_cast<size_t>(ch) * kLanes + static_cast<size_t>(i)]);
+      for (int ch = 0; ch < hoisted; ++ch)
+        planes[ch][t] = asF(staging_[static_cast<size_t>(ch) * kLanes + static_cast<size_t>(i)]);
       if (commit_surface) commitSurface(i, t);
     }
     return;

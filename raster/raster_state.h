@@ -71,7 +71,9 @@ struct ChannelLayout {
   // the primitive's P and N.
   bool surface_interpolated = false;
   // The lighting reads P (a positional light, a local viewer, two-sided lighting: lightReadsEye):
-  // else only N's slots are written, and the shading pass does not read P's.
+  // else only N's slots are written, and the shading pass does not read P's. Whoever plans the
+  // layout sets it from the lighting the instances are submitted with (the API, at glBegin);
+  // false with a lighting that reads P would shade from stale P values.
   bool surface_eye = true;
 
   // Whether some channels are bound to a shared interpolator called `name`.

@@ -85,6 +85,9 @@ void pixelRange(float lo, float hi, int clip_lo, int clip_hi, int& out_lo, int& 
 bool Renderer::beginSubmission(const ChannelLayout& layout, const RasterState& state, const ShadeState& shade,
                                const LightingState* per_pixel_lighting) {
   if (!color_) return false;
+  // The API refuses more channels than this (its reject reason names them); a caller of the
+  // renderer itself gets nothing drawn rather than a commit past the executor's tables.
+  if (layout.count > kMaxChannels) return false;
   // The shading pass writes with one colour mask: instances with another wait for a flush.
   if (!scene_.instances.empty() && scene_.color_mask != state.color_mask) flush();
   if (scene_.records.size() > kMaxRecordWords) flush();  // offsets into the records are 32-bit
@@ -96,7 +99,12 @@ bool Renderer::beginSubmission(const ChannelLayout& layout, const RasterState& s
   if (per_pixel_lighting && layout.surface_slot >= 0) {
     if (scene_.lightings.empty() || !(scene_.lightings.back() == *per_pixel_lighting)) {
       scene_.lighting_equations.emplace_back(*per_pixel_lighting);
-      scene_.lightings.push_back(*per_pixel_lighting);
+      try {
+        scene_.lightings.push_back(*per_pixel_lighting);
+      } catch (...) {  // the two stay in step (std::bad_alloc)
+        scene_.lighting_equations.pop_back();
+        throw;
+      }
     }
     lit_shade = shade;
     lit_shade.surface_slot = layout.surface_slot;

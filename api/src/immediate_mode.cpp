@@ -144,7 +144,10 @@ void submitInstances(PFcontextRec& ctx) {
   const pf::RasterState state = ctx.rasterState();
   // Instances go to the renderer a chunk at a time (sized primitives: the one instance), so
   // that it can run their setup across instances; it keeps their order.
-  const size_t chunk = sized ? 1 : kInstancesPerChunk;
+  const size_t instances = total / per;
+  // (Buffers for the instances there are, up to a chunk: a glBegin of one triangle does not
+  // clear a thousand instances' worth.)
+  const size_t chunk = sized ? 1 : std::min(kInstancesPerChunk, std::max<size_t>(instances, 1));
   const size_t pwords = static_cast<size_t>(prim.paramFloats(count));
   const size_t vfloats = per * static_cast<size_t>(layout.count);
   ctx.param_block.assign(chunk * pwords, 0u);
@@ -158,7 +161,6 @@ void submitInstances(PFcontextRec& ctx) {
     ctx.shared_blocks[k].assign(static_cast<size_t>(layout.shared[k % nshared].program->param_floats), 0u);
     ctx.shared_block_ptrs[k] = ctx.shared_blocks[k].data();
   }
-  const size_t instances = total / per;
   for (size_t chunk_first = 0; chunk_first < instances; chunk_first += chunk) {
     const size_t in_chunk = std::min(chunk, instances - chunk_first);
     for (size_t j = 0; j < in_chunk; ++j) {
@@ -296,6 +298,7 @@ void planShading(PFcontextRec& ctx, GLenum mode, const pf::CompiledPrimitive& pr
   layout.shared.clear();
   layout.surface_slot = -1;
   layout.surface_interpolated = false;
+  layout.surface_eye = true;
   ctx.row_channels = 0;
   if (!prim.has_interp_data) return;
   std::vector<std::pair<GLuint, GLenum>>& bound = ctx.planned_bindings;

@@ -142,3 +142,41 @@ TEST(SphereImpostors, NearPlaneCutsAndSpheresAroundTheEye) {
   EXPECT_GT(drawAndJudge({ball({0.2, -0.2, -1.05}, 0.2, 3), ball({0.2, 0.1, 0.5}, 1.8, 4)}, 4e-6).second,
             kN * kN / 2);
 }
+
+// Spheres behind the eye, one whose front point is the eye itself: nothing of them is in front,
+// and such a front point has no image to recentre at -- they draw nothing, even with the depth
+// test off (where a NaN depth would pass). Under the test's matrices and under the identity.
+TEST(SphereImpostors, SpheresBehindTheEyeDrawNothing) {
+  const glm::dmat4 to_object = glm::inverse(modelview());
+  for (int identity = 0; identity < 2; ++identity)
+    for (const glm::dvec3 eye_centre : {glm::dvec3(0.0, 0.0, 0.5), glm::dvec3(0.1, -0.2, 2.0)}) {
+      pf::test::GlContext c(kN, kN);
+      pfglMatrixMode(GL_PROJECTION);
+      pfglFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 20.0);
+      pfglMatrixMode(GL_MODELVIEW);
+      double scale = 1.0;
+      glm::dvec3 o = eye_centre;
+      if (!identity) {
+        pfglTranslated(0.1, -0.2, -6);
+        pfglRotated(40.0, 0.3, 1, 0.2);
+        pfglScaled(1.3, 1.3, 1.3);
+        scale = 1.3;
+        o = glm::dvec3(to_object * glm::dvec4(eye_centre, 1.0));
+      }
+      pfglClearColor(0, 0, 0, 0);
+      pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+      pfglColor4ub(200, 100, 50, 255);
+      pfglBegin(pfglGetPrimitiveEXT("sphere_impostors"));
+      pfglRastParamfEXT(pfglGetParamNameEXT("radius"), static_cast<float>(0.5 / scale));
+      pfglRastParam3fEXT(pfglGetParamNameEXT("center"), static_cast<float>(o.x), static_cast<float>(o.y),
+                         static_cast<float>(o.z));
+      pfglSequencePointEXT();
+      pfglEnd();
+      pfglFinish();
+      ASSERT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+      int drawn = 0;
+      for (int y = 0; y < kN; ++y)
+        for (int x = 0; x < kN; ++x) drawn += c.at(x, y)[0] != 0;
+      EXPECT_EQ(drawn, 0) << "identity " << identity << ", eye z " << eye_centre.z;
+    }
+}
