@@ -31,8 +31,8 @@ struct LaneMaskOps {
   uint64_t (*nonzero)(const uint32_t* v);
   // d = s in the lanes set in mask, d unchanged elsewhere (a merge value's write).
   void (*blend)(uint32_t* __restrict d, const uint32_t* __restrict s, uint64_t mask);
-  // The depth buffer under a block, into a register with whole-vector stores (the program's
-  // vector loads of it then forward from them rather than wait for narrower stores to drain).
+  // The depth buffer under a block, into a register with whole-vector stores (which the
+  // program's vector loads of it can forward from).
   // Lanes outside the mask read nothing (they may lie past the framebuffer) and get 0.
   // An aligned block: lane i at base[(i / kBlockSize) * stride + i % kBlockSize].
   void (*load_block)(uint32_t* __restrict d, const float* base, int stride, uint64_t mask);

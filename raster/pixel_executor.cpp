@@ -147,29 +147,25 @@ void PixelExecutor::runAndCommit(const CompiledPrimitive& prim, const PixelProgr
     for (int k = 0; k < 3; ++k)
       target.slots[layout.surface_slot + 3 + k][t] = has ? asF(surface_[static_cast<size_t>(4 + k) * kLanes + i]) : 0.0f;
   };
-  if (packed) {
-    // Lane by lane, each to its own pixel; the planes looked up once (a layout has at most
-    // kMaxChannels channels: the API refuses more, and so does beginSubmission).
-    float* planes[kMaxChannels];
-    const int hoisted = std::min(nch, kMaxChannels);
-    for (int ch = 0; ch < hoisted; ++ch) planes[ch] = target.slots[layout.gbuffer_slot[ch]];
-    for (uint64_t m = alive; m; m &= m - 1) {
-      const int i = __builtin_ctzll(m);
-      const size_t t = static_cast<size_t>(packed->y[i] - target.tile_y0) * kTileSize +
-                       static_cast<size_t>(packed->x[i] - target.tile_x0);
-      target.shade_ids[t] = shade_id;
-      for (int ch = 0; ch < hoisted; ++ch)
-        planes[ch][t] = asF(staging_[static_cast<size_t>(ch) * kLanes + static_cast<size_t>(i)]);
-      if (commit_surface) commitSurface(i, t);
-    }
-    return;
-  }
+  // The channels' G-buffer planes, looked up once (a layout has at most kMaxChannels channels:
+  // the API refuses more, and so does Renderer::beginSubmission).
+  float* planes[kMaxChannels];
+  const int hoisted = std::min(nch, kMaxChannels);
+  for (int ch = 0; ch < hoisted; ++ch) planes[ch] = target.slots[layout.gbuffer_slot[ch]];
   // Lane i to the tile's G-buffer entry t.
   auto commitLane = [&](int i, size_t t) {
     target.shade_ids[t] = shade_id;
-    for (int ch = 0; ch < nch; ++ch) target.slots[layout.gbuffer_slot[ch]][t] = asF(staging_[static_cast<size_t>(ch) * kLanes + i]);
+    for (int ch = 0; ch < hoisted; ++ch) planes[ch][t] = asF(staging_[static_cast<size_t>(ch) * kLanes + i]);
     if (commit_surface) commitSurface(i, t);
   };
+  if (packed) {  // lane by lane, each to its own pixel
+    for (uint64_t m = alive; m; m &= m - 1) {
+      const int i = __builtin_ctzll(m);
+      commitLane(i, static_cast<size_t>(packed->y[i] - target.tile_y0) * kTileSize +
+                        static_cast<size_t>(packed->x[i] - target.tile_x0));
+    }
+    return;
+  }
   // Row by row: a whole row's channels are copied at once.
   for (int row = 0; row < kBlockSize; ++row) {
     const unsigned row_mask = static_cast<unsigned>(alive >> (row * kBlockSize)) & ((1u << kBlockSize) - 1u);
@@ -178,9 +174,8 @@ void PixelExecutor::runAndCommit(const CompiledPrimitive& prim, const PixelProgr
     const size_t t0 = static_cast<size_t>(by + row - target.tile_y0) * kTileSize + static_cast<size_t>(bx - target.tile_x0);
     if (row_mask == (1u << kBlockSize) - 1u) {
       std::fill_n(target.shade_ids + t0, kBlockSize, shade_id);
-      for (int ch = 0; ch < nch; ++ch)
-        std::memcpy(target.slots[layout.gbuffer_slot[ch]] + t0, staging_.data() + static_cast<size_t>(ch) * kLanes + i0,
-                    sizeof(float) * kBlockSize);
+      for (int ch = 0; ch < hoisted; ++ch)
+        std::memcpy(planes[ch] + t0, staging_.data() + static_cast<size_t>(ch) * kLanes + i0, sizeof(float) * kBlockSize);
       if (commit_surface)
         for (int lx = 0; lx < kBlockSize; ++lx) commitSurface(i0 + lx, t0 + static_cast<size_t>(lx));
       continue;
@@ -248,8 +243,9 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const PixelProgra
     std::fill_n(R + static_cast<size_t>(kRegN) * kLanes, 3 * kLanes, 0u);
   }
   // X, Y and Z through the lane kernels and the depth loads of lane_kernels.h: whole-vector
-  // stores, from which the program's first vector loads of them forward (after 64 scalar
-  // stores such a load waits for them to drain: measured, 8% of a frame of small spheres).
+  // stores, which the program's first vector loads of them can forward from. (A stall perf
+  // showed at the program's first instruction, 8% of a frame of small spheres, was in fact the
+  // first read of the instance's record missing the cache: runTile prefetches it now.)
   const LaneIsaTables& isa = laneIsaTables();
   auto kernel = [&](Op op, unsigned wide) { return (*isa.kernels)[static_cast<size_t>(op)][wide]; };
   uint32_t* const RX = R + static_cast<size_t>(kRegX) * kLanes;
