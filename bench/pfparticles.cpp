@@ -25,12 +25,15 @@ int main(int argc, char** argv) {
   std::string primitive = "sphere_impostors";
   int count = 100000, threads = 1, frames = 5, size = 1024;
   bool stats = false;
+  float radius_scale = 1;
   std::string csv;
   app.add_option("--primitive", primitive, "the sphere primitive");
   app.add_option("--count", count, "spheres")->check(CLI::Range(1, 10000000));
   app.add_option("--threads", threads, "rasterizer threads")->check(CLI::Range(0, 256));
   app.add_option("--frames", frames, "timed frames (after one warm-up)")->check(CLI::Range(1, 1000));
   app.add_option("--size", size, "image size (square)")->check(CLI::Range(16, 8192));
+  app.add_option("--radius-scale", radius_scale, "radii times this (3: a dense cloud, many spheres per pixel)")
+      ->check(CLI::Range(0.01, 100.0));
   app.add_flag("--stats", stats, "print the work counters per frame");
   app.add_option("--csv", csv, "append primitive,count,size,threads,median_ms,fastest_ms,glend_ms to FILE");
   CLI11_PARSE(app, argc, argv);
@@ -53,7 +56,7 @@ int main(int argc, char** argv) {
   std::mt19937 rng(1);
   std::uniform_real_distribution<float> u(0, 1);
   std::vector<Ball> balls(static_cast<size_t>(count));
-  for (Ball& b : balls) b = {u(rng) * 8 - 4, u(rng) * 6 - 3, u(rng) * 6 - 3, 0.01f + 0.03f * u(rng), {u(rng), u(rng), u(rng)}};
+  for (Ball& b : balls) b = {u(rng) * 8 - 4, u(rng) * 6 - 3, u(rng) * 6 - 3, (0.01f + 0.03f * u(rng)) * radius_scale, {u(rng), u(rng), u(rng)}};
   const GLuint centre = pfglGetParamNameEXT("center"), radius = pfglGetParamNameEXT("radius");
   pfglMatrixMode(GL_PROJECTION);
   pfglFrustum(-0.47, 0.47, -0.47, 0.47, 1, 30);
@@ -110,11 +113,11 @@ int main(int argc, char** argv) {
     // The counters add up since the context was made; every frame draws the same.
     const pf::FrameStats& s = ctx->renderer.stats();
     const double n = frames + 1.0;
-    std::printf("per frame: %.0f blocks run (%.0f packed, %.0f accepted, %.0f rejected), %.1f%% lanes active at "
-                "start, %.1f%% committed; %.0f pixel instructions (%.1f per block), %.0f setup instructions (%.0f "
-                "per sphere)\n",
+    std::printf("per frame: %.0f blocks run (%.0f packed, %.0f accepted, %.0f rejected; %.0f culled by depth), "
+                "%.1f%% lanes active at start, %.1f%% committed; %.0f pixel instructions (%.1f per block), %.0f setup "
+                "instructions (%.0f per sphere)\n",
                 double(s.blocks_run) / n, double(s.blocks_packed) / n, double(s.blocks_accepted) / n,
-                double(s.blocks_rejected) / n,
+                double(s.blocks_rejected) / n, double(s.blocks_depth_culled) / n,
                 s.blocks_run ? 100.0 * double(s.lanes_started) / (64.0 * double(s.blocks_run)) : 0.0,
                 s.blocks_run ? 100.0 * double(s.lanes_committed) / (64.0 * double(s.blocks_run)) : 0.0,
                 double(s.pixel_instructions) / n,

@@ -135,6 +135,12 @@ void typeBuiltinCall(Expr& e, UnitKind unit, const std::function<void(SourceLoc,
     // statement (uniform; sema checks).
     if (!arity(1, 1) || any_void || !needScalars()) return;
     e.type = Type::of(BaseType::Void);
+  } else if (f == "depth_bound") {
+    // depth_bound(zmin, zmax): a promise that every depth the instance's pixels test with
+    // ztest() lies in [zmin, zmax] (window Z), so the renderer may skip blocks where none can
+    // pass: a statement (uniform; sema checks).
+    if (!arity(2, 2) || any_void || !needScalars()) return;
+    e.type = Type::of(BaseType::Void);
   } else if (f == "unscreen") {
     // The inverse of screen(): homogeneous window coordinates back to clip coordinates.
     if (!arity(1, 1) || any_void) return;

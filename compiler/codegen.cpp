@@ -10,10 +10,10 @@
 namespace pf {
 namespace {
 
-// The effects of calling another primitive: setup's, in program order.
-// (and facing(), setup's too: the instance's facing is uniform).
+// The effects of calling another primitive: setup's, in program order (and facing() and
+// depth_bound(), setup's too: they set uniform properties of the instance).
 bool isCallEffect(Op op) {
-  return op == Op::OutParam || op == Op::OutVertex || op == Op::Emit || op == Op::BackFacing;
+  return op == Op::OutParam || op == Op::OutVertex || op == Op::Emit || op == Op::BackFacing || op == Op::DepthBound;
 }
 
 // Reads of the instance's parameters at run-time indices: only setup has the parameters.
@@ -307,7 +307,8 @@ class Generator {
         Instr out{Op::Bound, 0, setupOperand(in.d), setupOperand(in.a), setupOperand(in.b), setupOperand(in.c)};
         setup_.code.push_back(out);
       } else if (isCallEffect(in.op)) {
-        setup_.code.push_back(Instr{in.op, static_cast<uint16_t>(in.imm), kNoOperand, setupOperand(in.a)});
+        setup_.code.push_back(
+            Instr{in.op, static_cast<uint16_t>(in.imm), kNoOperand, setupOperand(in.a), setupOperand(in.b)});
       } else if (in.op == Op::Retire) {
         if (varying_depth == 0) setup_.code.push_back(Instr{Op::Kill});
       } else if (in.op == Op::Break || in.op == Op::Continue) {

@@ -74,6 +74,8 @@ enum class Op : uint8_t {
   OutVertex,     // setup: outgoing sequence point imm's channels = interp register a
   Emit,          // setup: submit an instance of callee imm with the outgoing parameters
   BackFacing,    // setup: a (bool) says the instance shows its back (two-sided lighting)
+  DepthBound,    // setup: every depth the instance's pixels ztest() lies in [a, b] (window Z):
+                 // the renderer skips blocks where no such depth can pass (raster/coarse_depth.h)
   // loops (setup: jumps and a counter; pixel: masks). LoopBegin pushes a loop frame; LoopTest
   // removes the lanes whose b is false from the loop; Break / Continue remove the active lanes
   // for good / for this iteration; LoopContinue brings the continuing lanes back; LoopBack

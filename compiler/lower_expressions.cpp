@@ -407,6 +407,12 @@ Binding Lowerer::call(const Expr& e) {
     return scalar(e.type, emit(Op::Sel, ValueClass::Bool, false, front, stateOn(StateValue::CullFront),
                                stateOn(StateValue::CullBack)));
   }
+  if (f == "depth_bound") {
+    emitEffect(Op::DepthBound, farg(0), farg(1), -1, -1, 0, e.loc);
+    Binding none;
+    none.type = Type::of(BaseType::Void);
+    return none;
+  }
   if (f == "facing") {
     emitEffect(Op::BackFacing, emit(Op::BNot, ValueClass::Bool, false, frontFacing(farg(0))), -1, -1, -1, 0, e.loc);
     Binding none;

@@ -22,7 +22,7 @@ bool isEffect(Op op) {
     case Op::SurfaceCommit: case Op::FieldBox:
     case Op::FieldHit:  // reads the box FieldBox staged: never merged with another, never moved
     case Op::ZCommit: case Op::Break: case Op::Continue: case Op::OutParam: case Op::OutVertex:
-    case Op::Emit: case Op::BackFacing:
+    case Op::Emit: case Op::BackFacing: case Op::DepthBound:
       return true;
     default:
       return false;

@@ -306,13 +306,17 @@ void Analyzer::call(Expr& e) {
     if (fixedCall(e)) return;
     for (ExprPtr& a : e.args) fixedAsFloat(a);
     typeBuiltinCall(e, unit_->kind, [this](SourceLoc loc, const std::string& msg) { err(loc, msg); });
-    if (e.name == "facing") {
-      // An effect on the whole instance: uniform, and a statement.
-      if (&e != statement_call_) err(e.loc, "facing() is a statement: it sets the instance's facing and has no value");
-      if (unit_->kind != UnitKind::Primitive) err(e.loc, "facing() is only available in a primitive");
-      if (varying_control_ > 0 || (!e.args.empty() && e.args[0]->varying))
-        err(e.loc, "facing() sets the facing of the whole instance, so it must be uniform; " +
-                       (varying_control_ > 0 ? varying_control_why_ : whyOf(*e.args[0])));
+    if (e.name == "facing" || e.name == "depth_bound") {
+      // Effects on the whole instance: uniform, and statements.
+      const std::string what = e.name == "facing" ? "facing" : "depth bound";
+      if (&e != statement_call_) err(e.loc, e.name + "() is a statement: it sets the instance's " + what + " and has no value");
+      if (unit_->kind != UnitKind::Primitive) err(e.loc, e.name + "() is only available in a primitive");
+      const Expr* varying_arg = nullptr;
+      for (const ExprPtr& a : e.args)
+        if (a->varying && !varying_arg) varying_arg = a.get();
+      if (varying_control_ > 0 || varying_arg)
+        err(e.loc, e.name + "() sets the " + what + " of the whole instance, so it must be uniform; " +
+                       (varying_control_ > 0 ? varying_control_why_ : whyOf(*varying_arg)));
     }
     return;
   }

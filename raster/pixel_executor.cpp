@@ -606,7 +606,7 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const PixelProgra
       }
       case Op::XLoadVertex: case Op::Bound: case Op::Kill: case Op::OpCount:
       case Op::LoadParamAt: case Op::XLoadVertexAt: case Op::OutParam: case Op::OutVertex: case Op::Emit:
-      case Op::BackFacing:
+      case Op::BackFacing: case Op::DepthBound:
         continue;  // setup-only instructions never reach a pixel program
       case Op::XSel:
         forChannels(ins.imm, [&](int ch) {

@@ -33,6 +33,8 @@ Renderer::Renderer(int threads) : pool_(threads) {
   if (const char* e = std::getenv("PF_SETUP_BATCH")) setup_batching_ = std::strcmp(e, "0") != 0;
   // PF_PACKED_LANES=0: small bounds on aligned blocks too (for comparisons; images are identical).
   if (const char* e = std::getenv("PF_PACKED_LANES")) pack_small_bounds_ = std::strcmp(e, "0") != 0;
+  // PF_DEPTH_CULL=0: no coarse depth culling (for comparisons; images are identical).
+  if (const char* e = std::getenv("PF_DEPTH_CULL")) depth_culling_ = std::strcmp(e, "0") != 0;
   for (int i = 0; i < pool_.threadCount(); ++i) {
     scratch_.push_back(std::make_unique<WorkerScratch>());
     batch_setups_.push_back(std::make_unique<BatchSetupExecutor>());
@@ -315,6 +317,15 @@ bool Renderer::binInstance(const CompiledPrimitive& prim, const SetupOutput& out
     pixelRange(out.bound[1], out.bound[3], vy0, vy1, inst.y0, inst.y1);
     if (!(out.bound[0] <= out.bound[2]) || !(out.bound[1] <= out.bound[3])) inst.x1 = inst.x0;  // empty or NaN
   }
+  // Its depth bound: NaN is none; an empty one draws nothing.
+  inst.has_depth_bound = false;
+  inst.z_min = inst.z_max = 0;
+  if (out.has_depth_bound && out.depth_bound[0] == out.depth_bound[0] && out.depth_bound[1] == out.depth_bound[1]) {
+    if (out.depth_bound[0] > out.depth_bound[1]) inst.x1 = inst.x0;
+    inst.has_depth_bound = true;
+    inst.z_min = out.depth_bound[0];
+    inst.z_max = out.depth_bound[1];
+  }
   if (inst.x0 >= inst.x1 || inst.y0 >= inst.y1) {
     scene_.records.resize(offset);
     return false;
@@ -371,6 +382,8 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
   s.slot_planes.resize(scene_.gbuffer_slots);
   for (int k = 0; k < scene_.gbuffer_slots; ++k) s.slot_planes[k] = s.gbuffer.data() + kPlane * k;
 
+  if (depth_) s.coarse_depth.startTile(depth_, width_, x0, y0, w, h);
+
   BlockTarget target;
   target.depth = depth_;
   target.depth_stride = width_;
@@ -402,12 +415,31 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
     const ChannelLayout& layout = scene_.layouts[inst.layout];
     const RasterState& state = scene_.states[inst.state];
     const uint32_t* shared = inst.shared_offset == kNoShared ? nullptr : scene_.records.data() + inst.shared_offset;
+    // Coarse depth culling: the tile's blocks (indices within the tile) the instance touches,
+    // and whether its depth bound may skip some of them.
+    const int cbx0 = (ix0 - x0) / kBlockSize, cbx1 = (ix1 - 1 - x0) / kBlockSize;
+    const int cby0 = (iy0 - y0) / kBlockSize, cby1 = (iy1 - 1 - y0) / kBlockSize;
+    const bool cull = depth_culling_ && depth_ && inst.has_depth_bound && state.depth_test;
+    auto depthFails = [&](int cbx, int cby) {
+      if (!s.coarse_depth.fails(state.depth_func, inst.z_min, inst.z_max, cbx, cby)) return false;
+      ++s.blocks_depth_culled;
+      return true;
+    };
+    const uint64_t committed_before = s.executor.counters.lanes_committed;
     if (pack_small_bounds_ && packsBetter(ix0, ix1, iy0, iy1, x0, y0) && PixelExecutor::packs(*inst.prim, layout)) {
       // A small bound: its pixels, row by row, fill whole blocks of packed lanes.
+      // The blocks' columns it covers, less those coarse depth culling skips.
+      uint64_t live = 0;  // bit (cby - cby0) * 8 + (cbx - cbx0)
+      for (int cby = cby0; cby <= cby1; ++cby)
+        for (int cbx = cbx0; cbx <= cbx1; ++cbx)
+          if (!cull || !depthFails(cbx, cby)) live |= 1ull << ((cby - cby0) * CoarseDepth::kBlocksPerSide + cbx - cbx0);
+      if (!live) continue;
       PackedLanes& lanes = s.packed_lanes;
       int n = 0;
-      for (int y = iy0; y < iy1; ++y)
+      for (int y = iy0; y < iy1; ++y) {
+        const uint64_t live_row = live >> ((y - y0) / kBlockSize - cby0) * CoarseDepth::kBlocksPerSide;
         for (int x = ix0; x < ix1; ++x) {
+          if (!((live_row >> ((x - x0) / kBlockSize - cbx0)) & 1u)) continue;
           lanes.x[n] = x;
           lanes.y[n] = y;
           if (++n == kLanes) {
@@ -415,22 +447,28 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
             n = 0;
           }
         }
+      }
       if (n > 0)
         s.executor.runPackedBlock(*inst.prim, record, layout, state, inst.shade_id, lanes, (1ull << n) - 1, target,
                                   shared);
-      continue;
-    }
-    // Blocks are aligned to the tile; lanes outside the instance's pixels start retired.
-    for (int by = y0 + (iy0 - y0) / kBlockSize * kBlockSize; by < iy1; by += kBlockSize) {
-      for (int bx = x0 + (ix0 - x0) / kBlockSize * kBlockSize; bx < ix1; bx += kBlockSize) {
-        // The columns [ix0, ix1) of a row, then that row in every row of [iy0, iy1).
-        const int c0 = std::max(ix0 - bx, 0), c1 = std::min(ix1 - bx, kBlockSize);
-        const uint64_t row = ((1ull << c1) - 1) & ~((1ull << c0) - 1);
-        uint64_t mask = 0;
-        for (int ly = std::max(iy0 - by, 0); ly < std::min(iy1 - by, kBlockSize); ++ly) mask |= row << (ly * kBlockSize);
-        if (mask) s.executor.runBlock(*inst.prim, record, layout, state, inst.shade_id, bx, by, mask, target, shared);
+    } else {
+      // Blocks are aligned to the tile; lanes outside the instance's pixels start retired.
+      for (int by = y0 + cby0 * kBlockSize; by < iy1; by += kBlockSize) {
+        for (int bx = x0 + cbx0 * kBlockSize; bx < ix1; bx += kBlockSize) {
+          if (cull && depthFails((bx - x0) / kBlockSize, (by - y0) / kBlockSize)) continue;
+          // The columns [ix0, ix1) of a row, then that row in every row of [iy0, iy1).
+          const int c0 = std::max(ix0 - bx, 0), c1 = std::min(ix1 - bx, kBlockSize);
+          const uint64_t row = ((1ull << c1) - 1) & ~((1ull << c0) - 1);
+          uint64_t mask = 0;
+          for (int ly = std::max(iy0 - by, 0); ly < std::min(iy1 - by, kBlockSize); ++ly)
+            mask |= row << (ly * kBlockSize);
+          if (mask) s.executor.runBlock(*inst.prim, record, layout, state, inst.shade_id, bx, by, mask, target, shared);
+        }
       }
     }
+    // What it wrote to the depth buffer: those blocks' ranges are stale.
+    if (depth_ && state.depth_test && state.depth_write && s.executor.counters.lanes_committed != committed_before)
+      s.coarse_depth.written(ix0 - x0, iy0 - y0, ix1 - x0, iy1 - y0);
   }
   ShadeTarget st{color_, width_, x0, y0, w, h, scene_.color_mask};
   s.pixels_shaded += shadeTile(s.shade_ids.data(), s.slot_planes.data(), scene_.shades.data(), scene_.lightings.data(),
@@ -461,6 +499,7 @@ void Renderer::flush() {
     stats_.blocks_covered += s->executor.counters.blocks_covered;
     stats_.blocks_accepted += s->executor.counters.blocks_accepted;
     stats_.blocks_packed += s->executor.counters.blocks_packed;
+    stats_.blocks_depth_culled += s->blocks_depth_culled;
     stats_.pixel_instructions += s->executor.counters.instructions;
     stats_.pixels_shaded += s->pixels_shaded;
     stats_.tiles_run += s->tiles_run;
@@ -476,6 +515,7 @@ void Renderer::flush() {
     s->executor.counters = BlockCounters{};
     s->pixels_shaded = 0;
     s->tiles_run = 0;
+    s->blocks_depth_culled = 0;
   }
   scene_.reset();
 }
@@ -485,6 +525,7 @@ void Renderer::discardPending() {
     s->executor.counters = BlockCounters{};
     s->pixels_shaded = 0;
     s->tiles_run = 0;
+    s->blocks_depth_culled = 0;
   }
   scene_.reset();
 }

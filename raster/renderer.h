@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "raster/coarse_depth.h"
 #include "raster/pixel_executor.h"
 #include "raster/scene.h"
 #include "raster/setup_batch.h"
@@ -35,6 +36,8 @@ struct FrameStats {
   uint64_t blocks_covered = 0;        // blocks run whose every lane committed
   uint64_t blocks_accepted = 0;       // blocks run without coverage tests (PixelProgram::covered)
   uint64_t blocks_packed = 0;         // blocks run on packed lanes (a small bound's pixels)
+  uint64_t blocks_depth_culled = 0;   // (instance, block) pairs skipped by coarse depth culling
+                                      // (raster/coarse_depth.h; not in blocks_run)
   uint64_t pixels_shaded = 0;
   uint64_t gbuffer_bytes = 0;         // G-buffer the tiles run used: per tile, the frame's layout's
                                       // slots and the shading-state ids, 64x64 x 4 bytes each
@@ -90,6 +93,10 @@ class Renderer : private SubInstanceSink {
   // Batched setup on or off (on unless the environment says PF_SETUP_BATCH=0).
   void setSetupBatching(bool on) { setup_batching_ = on; }
   bool setupBatching() const { return setup_batching_; }
+  // Coarse depth culling of instances with a depth_bound() on or off (on unless the environment
+  // says PF_DEPTH_CULL=0; images are identical either way).
+  void setDepthCulling(bool on) { depth_culling_ = on; }
+  bool depthCulling() const { return depth_culling_; }
   // The batched setup's counters, summed over the threads that ran batches.
   SetupBatchCounters setupBatchCounters() const;
 
@@ -114,6 +121,8 @@ class Renderer : private SubInstanceSink {
   struct WorkerScratch {
     PixelExecutor executor;
     PackedLanes packed_lanes;
+    CoarseDepth coarse_depth;
+    uint64_t blocks_depth_culled = 0;
     std::vector<uint32_t> shade_ids;
     std::vector<float> gbuffer;
     std::vector<float*> slot_planes;
@@ -144,6 +153,7 @@ class Renderer : private SubInstanceSink {
   std::vector<SetupOutput> batch_outputs_;
   bool setup_batching_ = true;
   bool pack_small_bounds_ = true;  // PF_PACKED_LANES=0: every instance on aligned blocks
+  bool depth_culling_ = true;      // PF_DEPTH_CULL=0: no coarse depth culling
   uint64_t flushes_ = 0;
   uint32_t shared_offset_ = kNoShared;  // the shared records of the submission in progress
   uint64_t calls_this_submission_ = 0;  // instances its primitive calls made (submitCall)

@@ -22,6 +22,10 @@ struct Instance {
   uint32_t shade_id;       // 1 + index into Scene::shades
   uint32_t shared_offset;  // into Scene::records: its shared interpolators' records (kNoShared: none)
   int x0, y0, x1, y1;      // pixels [x0, x1) x [y0, y1) that the instance may cover
+  // depth_bound(): every depth its pixels test lies in [z_min, z_max] (raster/coarse_depth.h);
+  // without one, has_depth_bound is false.
+  bool has_depth_bound;
+  float z_min, z_max;
 };
 
 constexpr uint32_t kNoShared = 0xffffffffu;

@@ -217,6 +217,15 @@ void BatchSetupExecutor::runBatch(const CompiledPrimitive& prim, const SetupInpu
         forActive([&](int l) { out[l].back_facing = a[l] != 0; });
         continue;
       }
+      case Op::DepthBound: {
+        const uint32_t *a = lanesOf(ins.a), *b = lanesOf(ins.b);
+        forActive([&](int l) {
+          out[l].has_depth_bound = true;
+          out[l].depth_bound[0] = std::bit_cast<float>(a[l]);
+          out[l].depth_bound[1] = std::bit_cast<float>(b[l]);
+        });
+        continue;
+      }
       case Op::LoadState: {
         const float v = ins.imm < kStateValueCount ? state_values_[ins.imm] : 0.0f;
         std::fill_n(lanesOf(ins.dst), K, std::bit_cast<uint32_t>(v));

@@ -148,6 +148,11 @@ SetupOutput SetupExecutor::execute(const CompiledPrimitive& prim, const SetupInp
         continue;
       }
       case Op::BackFacing: out.back_facing = read(ins.a) != 0; continue;
+      case Op::DepthBound:
+        out.has_depth_bound = true;
+        out.depth_bound[0] = rf(ins.a);
+        out.depth_bound[1] = rf(ins.b);
+        continue;
       case Op::OutParam: {
         if (out_params_.size() <= ins.imm) out_params_.resize(ins.imm + 1u, 0u);
         out_params_[ins.imm] = read(ins.a);

@@ -38,6 +38,9 @@ struct SetupOutput {
   bool back_facing = false;  // facing(): the instance shows its back
   uint32_t instructions = 0;  // executed
   float bound[4] = {0, 0, 0, 0};  // xmin, ymin, xmax, ymax in window coordinates
+  // depth_bound(): every depth the instance's pixels test lies in [depth_bound[0], depth_bound[1]].
+  bool has_depth_bound = false;
+  float depth_bound[2] = {0, 0};
 };
 
 // An instance part-way through its setup program, as a batched executor (setup_batch.h)

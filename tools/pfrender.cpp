@@ -50,6 +50,9 @@ void printStats(PFcontext ctx, double ms) {
   std::printf("blocks packed      %llu (a small bound's pixels packed into whole blocks: %.1f%% of the blocks run)\n",
               static_cast<unsigned long long>(s.blocks_packed),
               s.blocks_run ? 100.0 * s.blocks_packed / double(s.blocks_run) : 0.0);
+  std::printf("blocks depth-culled %llu (skipped by coarse depth culling: an instance's depth_bound() against the "
+              "block's stored depths)\n",
+              static_cast<unsigned long long>(s.blocks_depth_culled));
   std::printf("active lanes       %.1f%% at start, %.1f%% committed\n",
               s.blocks_run ? 100.0 * s.lanes_started / (64.0 * s.blocks_run) : 0.0,
               s.blocks_run ? 100.0 * s.lanes_committed / (64.0 * s.blocks_run) : 0.0);

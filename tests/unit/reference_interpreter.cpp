@@ -147,7 +147,7 @@ class Interpreter {
       case Op::Continue: return {Flow::Continue, 1};
       case Op::Bound: case Op::Kill: case Op::InterpShared: case Op::SurfaceCommit: return {};
       // Calls of other primitives submit instances the reference of this one does not draw.
-      case Op::OutParam: case Op::OutVertex: case Op::Emit: case Op::BackFacing: return {};
+      case Op::OutParam: case Op::OutVertex: case Op::Emit: case Op::BackFacing: case Op::DepthBound: return {};
       case Op::LoadParamAt: {
         const int32_t slot = static_cast<int32_t>(get(in.a));
         const int64_t at = static_cast<int64_t>(slot) + in.imm;

@@ -45,6 +45,34 @@ TEST(Sema, BoundMustBeUniform) {
   EXPECT_NE(c.diagnostics.find("bound() needs a uniform value"), std::string::npos) << c.diagnostics;
 }
 
+TEST(Sema, DepthBoundIsAUniformStatementOfAPrimitive) {
+  auto ok = compile(
+      "primitive p(float z0[1]; varying float X; inout varying float Z)\n"
+      "{\n"
+      "    depth_bound(z0[0], z0[0] + 0.5);\n"
+      "    if (!ztest(z0[0])) return;\n"
+      "    Z = z0[0];\n"
+      "}\n");
+  ASSERT_TRUE(ok.ok) << ok.diagnostics;
+  auto c = compile(
+      "primitive p(varying float X; inout varying float Z)\n"
+      "{\n"
+      "    depth_bound(X, 1.0);\n"                // varying
+      "    float a = depth_bound(0.0, 1.0);\n"    // a value
+      "    depth_bound(0.0);\n"                   // arity
+      "    if (X > 2.0) depth_bound(0.0, 1.0);\n" // under varying control
+      "}\n"
+      "interpolator i() { depth_bound(0.0, 1.0); interpolator_return(color(1.0)); }\n");
+  ASSERT_FALSE(c.ok);
+  EXPECT_NE(c.diagnostics.find("3:5: error: depth_bound() sets the depth bound of the whole instance, so it must be uniform"),
+            std::string::npos)
+      << c.diagnostics;
+  EXPECT_NE(c.diagnostics.find("4:15: error: depth_bound() is a statement"), std::string::npos) << c.diagnostics;
+  EXPECT_NE(c.diagnostics.find("5:5: error: depth_bound() takes 2 arguments, not 1"), std::string::npos) << c.diagnostics;
+  EXPECT_NE(c.diagnostics.find("6:18: error: depth_bound() sets"), std::string::npos) << c.diagnostics;
+  EXPECT_NE(c.diagnostics.find("depth_bound() is only available in a primitive"), std::string::npos) << c.diagnostics;
+}
+
 TEST(Sema, TypeErrors) {
   auto c = compile(
       "primitive p(point v[3]; interpolator_data d[3])\n"

@@ -63,6 +63,8 @@ void compareBoth(const CompiledPrimitive& prim, const ChannelLayout& layout, con
     EXPECT_EQ(a.back_facing, b.back_facing) << what;
     EXPECT_EQ(a.instructions, b.instructions) << what;
     for (int k = 0; k < 4; ++k) EXPECT_EQ(u(a.bound[k]), u(b.bound[k])) << what << ", bound " << k;
+    EXPECT_EQ(a.has_depth_bound, b.has_depth_bound) << what;
+    for (int k = 0; k < 2; ++k) EXPECT_EQ(u(a.depth_bound[k]), u(b.depth_bound[k])) << what << ", depth bound " << k;
     EXPECT_EQ(scalar_records[i], batch_records[i]) << what << ": records differ";
   }
   EXPECT_EQ(batch.counters.lanes_batched + batch.counters.lanes_resumed + batch.counters.lanes_scalar,

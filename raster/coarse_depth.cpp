@@ -1,0 +1,89 @@
+// Coarse depth culling (see coarse_depth.h).
+#include "raster/coarse_depth.h"
+
+#include <algorithm>
+
+namespace pf {
+
+bool depthRangeFails(DepthFunc func, float zmin, float zmax, float dmin, float dmax) {
+  // Each case: even the most favourable pair (z, d) fails. NaN bounds make every comparison
+  // false, so no case claims anything for them.
+  switch (func) {
+    case DepthFunc::Never: return true;
+    case DepthFunc::Less: return zmin >= dmax;          // z < d fails for every pair
+    case DepthFunc::LessEqual: return zmin > dmax;      // z <= d
+    case DepthFunc::Greater: return zmax <= dmin;       // z > d
+    case DepthFunc::GreaterEqual: return zmax < dmin;   // z >= d
+    case DepthFunc::Equal: return zmin > dmax || zmax < dmin;
+    case DepthFunc::NotEqual: case DepthFunc::Always: return false;
+  }
+  return false;
+}
+
+void CoarseDepth::startTile(const float* depth, int stride, int x0, int y0, int w, int h) {
+  depth_ = depth;
+  stride_ = stride;
+  x0_ = x0;
+  y0_ = y0;
+  w_ = w;
+  h_ = h;
+  for (Block& b : blocks_) b.known = false;
+}
+
+void CoarseDepth::measure(Block& b, int bx, int by) const {
+  // Only the block's pixels inside the framebuffer (a tile at its right or top edge is cut).
+  const int px0 = bx * kBlockSize, py0 = by * kBlockSize;
+  const int cols = std::min(kBlockSize, w_ - px0), rows = std::min(kBlockSize, h_ - py0);
+  b.known = true;
+  if (cols <= 0 || rows <= 0) {  // (never asked of a block outside; no verdict if it were)
+    b.has_nan = true;
+    return;
+  }
+  const float* first = depth_ + static_cast<size_t>(y0_ + py0) * stride_ + x0_ + px0;
+  if (cols == kBlockSize) {
+    // A whole row at a time (the common case; GCC makes each row one vector min, max and
+    // compare): asked once per block written and then tested, it must cost little.
+    // NaN shows in `probe` (d * 0 is NaN for a NaN d, and for an infinite one: no verdict
+    // either, which is merely cautious).
+    float lo[kBlockSize], hi[kBlockSize], probe[kBlockSize];
+    for (int x = 0; x < kBlockSize; ++x) {
+      lo[x] = hi[x] = first[x];
+      probe[x] = first[x] * 0.0f;
+    }
+    for (int y = 1; y < rows; ++y) {
+      const float* row = first + static_cast<size_t>(y) * stride_;
+      for (int x = 0; x < kBlockSize; ++x) {
+        const float d = row[x];
+        lo[x] = d < lo[x] ? d : lo[x];
+        hi[x] = d > hi[x] ? d : hi[x];
+        probe[x] += d * 0.0f;
+      }
+    }
+    float l = lo[0], h = hi[0], p = probe[0];
+    for (int x = 1; x < kBlockSize; ++x) {
+      l = std::min(l, lo[x]);
+      h = std::max(h, hi[x]);
+      p += probe[x];
+    }
+    b.dmin = l;
+    b.dmax = h;
+    b.has_nan = p != p;
+    return;
+  }
+  float lo = first[0], hi = first[0];
+  bool nan = false;
+  for (int y = 0; y < rows; ++y) {
+    const float* row = first + static_cast<size_t>(y) * stride_;
+    for (int x = 0; x < cols; ++x) {
+      const float d = row[x];
+      nan |= d != d;
+      lo = std::min(lo, d);
+      hi = std::max(hi, d);
+    }
+  }
+  b.dmin = lo;
+  b.dmax = hi;
+  b.has_nan = nan;
+}
+
+}  // namespace pf

@@ -1,0 +1,66 @@
+// Coarse depth culling (the Hi-Z of GPUs, for any primitive that states its depths): per 8x8
+// block of the tile being run, the nearest and farthest depth stored under it. An instance whose
+// setup called depth_bound(zmin, zmax) promises that every depth its pixels test with ztest()
+// lies in [zmin, zmax]; where no depth in that range passes the context's depth test against
+// any depth stored in a block, none of its pixels there can be drawn, and the block is skipped
+// without running a lane.
+//
+// Why it pays: many small overlapping primitives drawn in no particular order (particles,
+// atoms) spend most of their pixel work on pixels that lose the depth test -- with 100k spheres
+// over a 1024x1024 image, 7 of every 10 lanes that start never commit. A block's range is
+// recomputed from the depth buffer only when asked after something was written under it, so
+// the bookkeeping costs one pass over 64 depths per (written block, later instance) pair.
+//
+// Exact by construction: a skipped block is one where the program's own depth test would have
+// failed for every lane (the test is of the same float values), so images are identical to the
+// bit with culling off (Renderer::setDepthCulling) -- provided the primitive keeps its promise.
+#pragma once
+
+#include <cstdint>
+
+#include "raster/limits.h"
+#include "raster/raster_state.h"
+
+namespace pf {
+
+// Whether no depth z in [zmin, zmax] passes `func` (z against the stored d, as ZTest compares)
+// for any stored d in [dmin, dmax]. False where it cannot tell (NotEqual, Always, NaN bounds).
+bool depthRangeFails(DepthFunc func, float zmin, float zmax, float dmin, float dmax);
+
+class CoarseDepth {
+ public:
+  static constexpr int kBlocksPerSide = kTileSize / kBlockSize;
+
+  // Starts a tile: the pixels [x0, x0 + w) x [y0, y0 + h) of `depth` (rows `stride` floats
+  // apart); no block's range is known yet.
+  void startTile(const float* depth, int stride, int x0, int y0, int w, int h);
+
+  // Whether no depth in [zmin, zmax] can pass `func` anywhere in the tile's block (bx, by)
+  // (block indices within the tile): depthRangeFails against the block's stored range,
+  // recomputed first if something was written under it since it was last asked.
+  bool fails(DepthFunc func, float zmin, float zmax, int bx, int by) {
+    Block& b = blocks_[by * kBlocksPerSide + bx];
+    if (!b.known) measure(b, bx, by);
+    return !b.has_nan && depthRangeFails(func, zmin, zmax, b.dmin, b.dmax);
+  }
+
+  // Depths under the pixels [px0, px1) x [py0, py1) (tile-relative) may have changed.
+  void written(int px0, int py0, int px1, int py1) {
+    for (int by = py0 / kBlockSize; by <= (py1 - 1) / kBlockSize; ++by)
+      for (int bx = px0 / kBlockSize; bx <= (px1 - 1) / kBlockSize; ++bx) blocks_[by * kBlocksPerSide + bx].known = false;
+  }
+
+ private:
+  struct Block {
+    float dmin = 0, dmax = 0;
+    bool known = false;
+    bool has_nan = false;  // a NaN (or an infinity) stored under the block: no verdict
+  };
+  void measure(Block& b, int bx, int by) const;
+
+  Block blocks_[kBlocksPerSide * kBlocksPerSide];
+  const float* depth_ = nullptr;
+  int stride_ = 0, x0_ = 0, y0_ = 0, w_ = 0, h_ = 0;
+};
+
+}  // namespace pf

@@ -1,0 +1,254 @@
+// Coarse depth culling (raster/coarse_depth.h): the verdict of a depth range against a block's
+// stored range is checked against every pair of depths it covers, a tile's block ranges
+// against a brute-force min/max of the buffer, and whole frames of sphere impostors (which
+// state depth_bound()) against the same frames with culling off: identical to the bit, under
+// each depth function, a reversed depth range and the depth test off, with blocks culled where
+// culling can apply and none where it cannot.
+#include <gtest/gtest.h>
+
+#include <primflow/gl.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "api/src/context_state.h"
+#include "raster/coarse_depth.h"
+
+namespace {
+
+using pf::DepthFunc;
+
+bool passes(DepthFunc f, float z, float d) {
+  switch (f) {
+    case DepthFunc::Never: return false;
+    case DepthFunc::Less: return z < d;
+    case DepthFunc::LessEqual: return z <= d;
+    case DepthFunc::Greater: return z > d;
+    case DepthFunc::GreaterEqual: return z >= d;
+    case DepthFunc::Equal: return z == d;
+    case DepthFunc::NotEqual: return z != d;
+    case DepthFunc::Always: return true;
+  }
+  return true;
+}
+
+constexpr DepthFunc kFuncs[] = {DepthFunc::Never,   DepthFunc::Less,     DepthFunc::Equal,        DepthFunc::LessEqual,
+                                DepthFunc::Greater, DepthFunc::NotEqual, DepthFunc::GreaterEqual, DepthFunc::Always};
+
+}  // namespace
+
+TEST(CoarseDepth, RangeVerdictIsExactlyWhetherNoPairPasses) {
+  // Ranges with ends on a grid: every value of the grid inside both ranges is a pair to try,
+  // and the ranges' ends are among them, so "no pair passes" is decided exactly -- except for
+  // NotEqual, where the verdict never claims anything.
+  const float grid[] = {-0.0f, 0.0f, 0.25f, 0.5f, 0.75f, 1.0f};
+  int claims = 0;
+  for (DepthFunc f : kFuncs)
+    for (float zmin : grid)
+      for (float zmax : grid)
+        for (float dmin : grid)
+          for (float dmax : grid) {
+            if (zmax < zmin || dmax < dmin) continue;
+            bool some_pass = false;
+            for (float z : grid)
+              for (float d : grid)
+                if (z >= zmin && z <= zmax && d >= dmin && d <= dmax) some_pass = some_pass || passes(f, z, d);
+            const bool fails = pf::depthRangeFails(f, zmin, zmax, dmin, dmax);
+            if (fails) ++claims;
+            if (f == DepthFunc::NotEqual || f == DepthFunc::Always)
+              EXPECT_FALSE(fails);
+            else
+              EXPECT_EQ(fails, !some_pass) << static_cast<int>(f) << " z [" << zmin << ", " << zmax << "] d [" << dmin
+                                           << ", " << dmax << "]";
+          }
+  EXPECT_GT(claims, 100);
+  // NaN ends claim nothing.
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (DepthFunc f : {DepthFunc::Less, DepthFunc::LessEqual, DepthFunc::Greater, DepthFunc::GreaterEqual,
+                      DepthFunc::Equal}) {
+    EXPECT_FALSE(pf::depthRangeFails(f, nan, nan, 0.5f, 0.5f));
+    EXPECT_FALSE(pf::depthRangeFails(f, 0.5f, 0.5f, nan, nan));
+  }
+}
+
+TEST(CoarseDepth, BlockRangesFollowTheBufferAsItIsWritten) {
+  // A 100 x 70 buffer: the tile at (64, 64) is cut to 36 x 6 pixels; the one at (0, 0) is whole.
+  constexpr int kW = 100, kH = 70;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  std::vector<float> depth(static_cast<size_t>(kW) * kH);
+  for (float& d : depth) d = u(rng);
+  struct Tile {
+    int x0, y0, w, h;
+  };
+  for (const Tile t : {Tile{0, 0, 64, 64}, Tile{64, 64, 36, 6}, Tile{64, 0, 36, 64}}) {
+    pf::CoarseDepth coarse;
+    coarse.startTile(depth.data(), kW, t.x0, t.y0, t.w, t.h);
+    for (int round = 0; round < 3; ++round) {
+      for (int by = 0; by * 8 < t.h; ++by)
+        for (int bx = 0; bx * 8 < t.w; ++bx) {
+          float lo = 2, hi = -1;
+          for (int y = by * 8; y < std::min(by * 8 + 8, t.h); ++y)
+            for (int x = bx * 8; x < std::min(bx * 8 + 8, t.w); ++x) {
+              const float d = depth[static_cast<size_t>(t.y0 + y) * kW + t.x0 + x];
+              lo = std::min(lo, d);
+              hi = std::max(hi, d);
+            }
+          // The stored range is exactly [lo, hi]: Less culls [z, z] exactly when z >= hi,
+          // Greater exactly when z <= lo.
+          EXPECT_TRUE(coarse.fails(DepthFunc::Less, hi, hi, bx, by));
+          EXPECT_FALSE(coarse.fails(DepthFunc::Less, std::nextafter(hi, 0.0f), hi, bx, by));
+          EXPECT_TRUE(coarse.fails(DepthFunc::Greater, lo, lo, bx, by));
+          EXPECT_FALSE(coarse.fails(DepthFunc::Greater, lo, std::nextafter(lo, 1.0f), bx, by));
+        }
+      // Write a random rectangle of the tile, nearer, and say so; the ranges must follow.
+      const int px0 = static_cast<int>(u(rng) * (t.w - 1)), py0 = static_cast<int>(u(rng) * (t.h - 1));
+      const int px1 = px0 + 1 + static_cast<int>(u(rng) * (t.w - px0 - 1));
+      const int py1 = py0 + 1 + static_cast<int>(u(rng) * (t.h - py0 - 1));
+      for (int y = py0; y < py1; ++y)
+        for (int x = px0; x < px1; ++x) depth[static_cast<size_t>(t.y0 + y) * kW + t.x0 + x] *= 0.5f;
+      coarse.written(px0, py0, px1, py1);
+    }
+    // A NaN under a block: no verdict there.
+    depth[static_cast<size_t>(t.y0 + 1) * kW + t.x0 + 2] = std::numeric_limits<float>::quiet_NaN();
+    coarse.written(2, 1, 3, 2);
+    EXPECT_FALSE(coarse.fails(DepthFunc::Less, 5.0f, 5.0f, 0, 0));
+    EXPECT_FALSE(coarse.fails(DepthFunc::Greater, -5.0f, -5.0f, 0, 0));
+  }
+}
+
+namespace {
+
+constexpr int kSize = 160;
+
+struct Frame {
+  std::vector<unsigned char> color;
+  std::vector<float> depth;
+  pf::FrameStats stats;
+};
+
+// A dense cloud of lit sphere impostors over a few triangles, two frames (the second with the
+// first's depth left in place, so whole instances find their blocks already nearer), drawn with
+// `func` (switched to `second_func`, if it is not 0, half-way through each frame's spheres),
+// `clear_z` and glDepthRange(near, far).
+Frame drawCloud(bool cull, GLenum func, double clear_z, double near, double far, bool depth_test = true,
+                GLenum second_func = 0) {
+  std::vector<unsigned char> px(static_cast<size_t>(kSize) * kSize * 4);
+  const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_THREADS, 2, 0};
+  PFcontext ctx = pfCreateContextAttribs(attribs);
+  EXPECT_TRUE(ctx && pfMakeCurrent(ctx, px.data(), GL_UNSIGNED_BYTE, kSize, kSize));
+  ctx->renderer.setDepthCulling(cull);
+  pfglMatrixMode(GL_PROJECTION);
+  pfglFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 12.0);
+  pfglMatrixMode(GL_MODELVIEW);
+  pfglTranslated(0.0, 0.0, -5.0);
+  if (depth_test) pfglEnable(GL_DEPTH_TEST);
+  pfglDepthFunc(func);
+  pfglDepthRange(near, far);
+  pfglClearDepth(clear_z);
+  pfglEnable(GL_LIGHTING);
+  pfglEnable(GL_LIGHT0);
+  pfglEnable(GL_COLOR_MATERIAL);
+  pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  const GLuint centre = pfglGetParamNameEXT("center"), radius = pfglGetParamNameEXT("radius");
+  const GLenum impostors = pfglGetPrimitiveEXT("sphere_impostors");
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> pos(-1.6f, 1.6f), col(0.0f, 1.0f);
+  for (int frame = 0; frame < 2; ++frame) {
+    pfglBegin(GL_TRIANGLES);
+    pfglColor3f(0.3f, 0.3f, 0.9f);
+    pfglNormal3f(0, 0, 1);
+    pfglVertex3f(-2, -2, -0.5f);
+    pfglVertex3f(2, -2, 0.5f);
+    pfglVertex3f(0, 2, 0.0f);
+    pfglEnd();
+    pfglBegin(impostors);
+    for (int i = 0; i < 3000; ++i) {
+      if (i == 1500 && second_func) {
+        pfglEnd();
+        pfglDepthFunc(second_func);
+        pfglBegin(impostors);
+      }
+      pfglColor3f(col(rng), col(rng), col(rng));
+      pfglRastParamfEXT(radius, 0.05f + 0.15f * col(rng));
+      pfglRastParam3fEXT(centre, pos(rng), pos(rng), pos(rng));
+      pfglSequencePointEXT();
+    }
+    pfglEnd();
+    pfglFinish();
+    pfglDepthFunc(func);
+  }
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  Frame f;
+  f.color = px;
+  GLint w, h, bits;
+  void* data = nullptr;
+  EXPECT_TRUE(pfGetDepthBuffer(ctx, &w, &h, &bits, &data));
+  const float* d = static_cast<const float*>(data);
+  f.depth.assign(d, d + kSize * kSize);
+  f.stats = ctx->renderer.stats();
+  pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
+  pfDestroyContext(ctx);
+  return f;
+}
+
+void expectSameImages(const Frame& culled, const Frame& plain) {
+  EXPECT_EQ(plain.stats.blocks_depth_culled, 0u);
+  EXPECT_EQ(culled.color, plain.color);
+  ASSERT_EQ(culled.depth.size(), plain.depth.size());
+  for (size_t i = 0; i < plain.depth.size(); ++i)
+    ASSERT_EQ(std::bit_cast<uint32_t>(culled.depth[i]), std::bit_cast<uint32_t>(plain.depth[i])) << "pixel " << i;
+  EXPECT_EQ(culled.stats.lanes_committed, plain.stats.lanes_committed);
+}
+
+}  // namespace
+
+TEST(CoarseDepth, ImpostorFramesAreTheSameToTheBitWithCullingOff) {
+  struct Case {
+    GLenum func;
+    double clear_z, near, far;
+  };
+  for (const Case k : {Case{GL_LESS, 1.0, 0.0, 1.0}, Case{GL_LEQUAL, 1.0, 0.0, 1.0}, Case{GL_GREATER, 0.0, 1.0, 0.0},
+                       Case{GL_GEQUAL, 0.0, 1.0, 0.0}, Case{GL_LESS, 1.0, 0.2, 0.7}}) {
+    SCOPED_TRACE(::testing::Message() << "func 0x" << std::hex << k.func << std::dec << " range " << k.near << ".."
+                                      << k.far);
+    const Frame culled = drawCloud(true, k.func, k.clear_z, k.near, k.far);
+    const Frame plain = drawCloud(false, k.func, k.clear_z, k.near, k.far);
+    expectSameImages(culled, plain);
+    // A dense cloud: most of its blocks are behind what is already drawn.
+    EXPECT_GT(culled.stats.blocks_depth_culled, culled.stats.blocks_run / 4);
+    EXPECT_LT(culled.stats.blocks_run, plain.stats.blocks_run);
+  }
+}
+
+TEST(CoarseDepth, BlockRangesFollowWhatWasDrawnWhenTheDepthFunctionTurns) {
+  // Under GL_LESS the stored depths only fall, so a block's farthest depth measured before
+  // draws stays a safe (if loose) bound for GL_LESS; its nearest does not, and GL_GREATER
+  // reads that one: a block range not measured again after the first spheres' writes would
+  // cull the later spheres behind them.
+  const Frame culled = drawCloud(true, GL_LESS, 1.0, 0.0, 1.0, true, GL_GREATER);
+  const Frame plain = drawCloud(false, GL_LESS, 1.0, 0.0, 1.0, true, GL_GREATER);
+  expectSameImages(culled, plain);
+  EXPECT_GT(culled.stats.blocks_depth_culled, 0u);
+}
+
+TEST(CoarseDepth, NothingIsCulledWhereTheDepthTestCannotRejectARange) {
+  // GL_ALWAYS and GL_NOTEQUAL pass somewhere in any range; with the depth test off nothing is
+  // tested at all.
+  for (GLenum func : {GL_ALWAYS, GL_NOTEQUAL}) {
+    const Frame f = drawCloud(true, func, 1.0, 0.0, 1.0);
+    EXPECT_EQ(f.stats.blocks_depth_culled, 0u);
+    expectSameImages(f, drawCloud(false, func, 1.0, 0.0, 1.0));
+  }
+  const Frame off = drawCloud(true, GL_LESS, 1.0, 0.0, 1.0, false);
+  EXPECT_EQ(off.stats.blocks_depth_culled, 0u);
+  // GL_NEVER: nothing passes, so every block of every bounded instance is culled, and nothing
+  // of the impostors is drawn.
+  const Frame never = drawCloud(true, GL_NEVER, 1.0, 0.0, 1.0);
+  EXPECT_GT(never.stats.blocks_depth_culled, 0u);
+  expectSameImages(never, drawCloud(false, GL_NEVER, 1.0, 0.0, 1.0));
+}
