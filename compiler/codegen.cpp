@@ -55,8 +55,17 @@ class Generator {
         break;
       if (op == Op::Retire) pixel_.last_coverage_retire = static_cast<int32_t>(pc);
     }
-    for (const Instr& ins : pixel_.code)
+    pixel_.gangs = true;
+    for (const Instr& ins : pixel_.code) {
       if (ins.op == Op::FieldHit) pixel_.casts_block_rays = true;
+      if (ins.op == Op::FieldHit || ins.op == Op::FieldBox || ins.op == Op::FieldGradient) pixel_.gangs = false;
+      if (ins.op == Op::JmpIfNot) {
+        if (operandKind(ins.b) == OperandKind::Uniform)
+          pixel_.branch_slots.push_back(operandIndex(ins.b));
+        else if (operandKind(ins.b) != OperandKind::Const)
+          pixel_.gangs = false;
+      }
+    }
     if (std::optional<PixelProgram> covered = coveredVariant(pixel_))
       pixel_.covered = std::make_shared<const PixelProgram>(std::move(*covered));
     result_.pixel = std::move(pixel_);

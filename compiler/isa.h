@@ -164,6 +164,14 @@ struct PixelProgram : Bytecode {
   // Has a FieldHit: its rays are those of an aligned block's pixels (raster/field/ray_caster.h),
   // so it never runs on packed lanes (PixelExecutor::runPackedBlock).
   bool casts_block_rays = false;
+  // May run in a gang block (PixelExecutor::runGangBlock): lanes of several instances at once,
+  // each reading its own instance's uniforms as a wide register. True unless the program reads
+  // a uniform as one value for the whole block -- field searches and gradients (their field,
+  // box, method), or a conditional jump on a register (a value uniform per instance, computed
+  // in a loop). Its conditional jumps on record slots are fine where every instance of the gang
+  // agrees on them: those slots are `branch_slots`.
+  bool gangs = false;
+  std::vector<uint32_t> branch_slots;
   // The last Retire before the first loop (-1: none): how far block rejection needs to look.
   int32_t last_early_retire = -1;
   // The last Retire before anything block rejection cannot follow (a depth test, a field

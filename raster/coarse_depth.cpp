@@ -20,7 +20,7 @@ bool depthRangeFails(DepthFunc func, float zmin, float zmax, float dmin, float d
   return false;
 }
 
-void CoarseDepth::startTile(const float* depth, int stride, int x0, int y0, int w, int h) {
+void CoarseDepth::startTile(const float* depth, int stride, int x0, int y0, int w, int h, bool cleared) {
   depth_ = depth;
   stride_ = stride;
   x0_ = x0;
@@ -28,6 +28,19 @@ void CoarseDepth::startTile(const float* depth, int stride, int x0, int y0, int 
   w_ = w;
   h_ = h;
   for (Block& b : blocks_) b.known = false;
+  if (!cleared || (w == kTileSize && h == kTileSize)) {
+    std::fill_n(committed_, kBlocksPerSide * kBlocksPerSide, cleared ? 0ull : ~0ull);
+    return;
+  }
+  for (int by = 0; by < kBlocksPerSide; ++by)
+    for (int bx = 0; bx < kBlocksPerSide; ++bx) {
+      // Pixels outside the framebuffer (a cut tile) never hold the clear depth: set.
+      uint64_t outside = 0;
+      for (int y = 0; y < kBlockSize; ++y)
+        for (int x = 0; x < kBlockSize; ++x)
+          if (bx * kBlockSize + x >= w || by * kBlockSize + y >= h) outside |= 1ull << (y * kBlockSize + x);
+      committed_[by * kBlocksPerSide + bx] = outside;
+    }
 }
 
 void CoarseDepth::measure(Block& b, int bx, int by) const {

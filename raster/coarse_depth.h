@@ -32,15 +32,23 @@ class CoarseDepth {
   static constexpr int kBlocksPerSide = kTileSize / kBlockSize;
 
   // Starts a tile: the pixels [x0, x0 + w) x [y0, y0 + h) of `depth` (rows `stride` floats
-  // apart); no block's range is known yet.
-  void startTile(const float* depth, int stride, int x0, int y0, int w, int h);
+  // apart); no block's range is known yet. `cleared`: the tile's depth was just cleared.
+  void startTile(const float* depth, int stride, int x0, int y0, int w, int h, bool cleared);
+  // Where the executor marks the pixels it commits (BlockTarget::committed_pixels).
+  uint64_t* committedPixels() { return committed_; }
 
   // Whether no depth in [zmin, zmax] can pass `func` anywhere in the tile's block (bx, by)
   // (block indices within the tile): depthRangeFails against the block's stored range,
   // recomputed first if something was written under it since it was last asked.
+  // A block of a cleared tile where some pixel was not drawn yet holds the clear depth, which
+  // a range can hardly lose to (GL_LESS against a far clear): no verdict, without measuring
+  // (measures are the cost of culling where it rarely succeeds -- small, scattered instances).
   bool fails(DepthFunc func, float zmin, float zmax, int bx, int by) {
     Block& b = blocks_[by * kBlocksPerSide + bx];
-    if (!b.known) measure(b, bx, by);
+    if (!b.known) {
+      if (~committed_[by * kBlocksPerSide + bx]) return false;
+      measure(b, bx, by);
+    }
     return !b.has_nan && depthRangeFails(func, zmin, zmax, b.dmin, b.dmax);
   }
 
@@ -59,6 +67,9 @@ class CoarseDepth {
   void measure(Block& b, int bx, int by) const;
 
   Block blocks_[kBlocksPerSide * kBlocksPerSide];
+  // Per block, the pixels drawn since the tile's clear (and those outside the framebuffer, or
+  // every pixel if there was no clear): a block is measured only once all are set.
+  uint64_t committed_[kBlocksPerSide * kBlocksPerSide];
   const float* depth_ = nullptr;
   int stride_ = 0, x0_ = 0, y0_ = 0, w_ = 0, h_ = 0;
 };

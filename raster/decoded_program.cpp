@@ -17,6 +17,7 @@ namespace {
 // file, counted anyway where their numbers are a pixel register's; a register number past the
 // program's registers is never treated as unchanging).
 void fuseProducts(const PixelProgram& program, const LaneIsaTables& isa, DecodedProgram& out) {
+  const bool wide_uniforms = out.wide_uniforms;
   const size_t n = program.code.size();
   DecodedProgram::Scratch& s = out.scratch;
   s.uses.assign(program.num_regs, 0);
@@ -52,7 +53,9 @@ void fuseProducts(const PixelProgram& program, const LaneIsaTables& isa, Decoded
     if (r < static_cast<int64_t>(kFirstFreePixelReg)) return defs[static_cast<size_t>(r)] == 0;  // X, Y, Z, P, N
     return defs[static_cast<size_t>(r)] == 1 && !masked[static_cast<size_t>(r)];
   };
-  auto shape = [&](uint32_t o) { return reg(o) >= 0 ? 1u : 0u; };
+  auto shape = [&](uint32_t o) {
+    return reg(o) >= 0 || (wide_uniforms && o != kNoOperand && operandKind(o) == OperandKind::Uniform) ? 1u : 0u;
+  };
   for (size_t pc = 0; pc < n; ++pc) {
     const Instr& add = program.code[pc];
     if (add.op != Op::FAdd && add.op != Op::FSub) continue;
@@ -90,8 +93,10 @@ void fuseProducts(const PixelProgram& program, const LaneIsaTables& isa, Decoded
 
 }  // namespace
 
-void decodeProgram(const PixelProgram& program, const LaneIsaTables& isa, DecodedProgram& out) {
+void decodeProgram(const PixelProgram& program, const LaneIsaTables& isa, DecodedProgram& out,
+                   bool wide_uniforms) {
   out.program = &program;
+  out.wide_uniforms = wide_uniforms;
   out.code_data = program.code.data();
   out.constants_data = program.constants.data();
   out.code_size = program.code.size();
@@ -117,7 +122,15 @@ void decodeProgram(const PixelProgram& program, const LaneIsaTables& isa, Decode
           d.offset[k] = i * static_cast<uint32_t>(kLanes);
           wide |= 1u << k;
           break;
-        case OperandKind::Uniform: d.base[k] = OperandBase::Record; d.offset[k] = i; break;
+        case OperandKind::Uniform:
+          d.base[k] = OperandBase::Record;
+          if (wide_uniforms) {
+            d.offset[k] = i * static_cast<uint32_t>(kLanes);
+            wide |= 1u << k;
+          } else {
+            d.offset[k] = i;
+          }
+          break;
         case OperandKind::Const: d.base[k] = OperandBase::Constants; d.offset[k] = i; break;
         case OperandKind::Param: break;  // never in a pixel program: zeros, as the switch reads it
       }

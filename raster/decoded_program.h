@@ -5,7 +5,9 @@
 // a base (registers, record, constants, zeros) and an offset. The executor then runs a value
 // instruction without decoding it: per block, that decoding was about a fifth of a frame of
 // small spheres (docs/performance.md). A product read only by one add or subtract is fused into
-// it (FusedForm): one kernel, the same two roundings.
+// it (FusedForm): one kernel, the same two roundings. A program decoded for gang blocks
+// (PixelExecutor::runGangBlock) reads each uniform as a wide register -- its record then holds
+// kLanes values per slot, one per lane's instance.
 #pragma once
 
 #include <cstdint>
@@ -35,6 +37,7 @@ struct DecodedProgram {
   const uint32_t* constants_data = nullptr;
   size_t code_size = 0;
   const LaneIsaTables* isa = nullptr;
+  bool wide_uniforms = false;  // record slot i is kLanes words at i * kLanes (a gang's)
   std::vector<DecodedInstr> code;  // one per instruction of program->code
   int fused = 0;                   // products fused into their add (lane_kernels.h, FusedForm)
   // The fusion's per-register counts (kept with the object: decoding again reuses them).
@@ -44,14 +47,15 @@ struct DecodedProgram {
     std::vector<uint8_t> masked, consumed;
   } scratch;
 
-  bool decodes(const PixelProgram& p, const LaneIsaTables& tables) const {
+  bool decodes(const PixelProgram& p, const LaneIsaTables& tables, bool wide) const {
     return program == &p && code_data == p.code.data() && code_size == p.code.size() &&
-           constants_data == p.constants.data() && isa == &tables;
+           constants_data == p.constants.data() && isa == &tables && wide_uniforms == wide;
   }
 };
 
 // Decodes `program` into `out` (its storage reused: a frame's decoding allocates nothing once
-// the buffers have grown).
-void decodeProgram(const PixelProgram& program, const LaneIsaTables& isa, DecodedProgram& out);
+// the buffers have grown); `wide_uniforms`: for gang blocks.
+void decodeProgram(const PixelProgram& program, const LaneIsaTables& isa, DecodedProgram& out,
+                   bool wide_uniforms = false);
 
 }  // namespace pf

@@ -85,6 +85,40 @@ void gatherPortable(uint32_t* __restrict d, const float* base, const int32_t* of
   for (int i = 0; i < kLanes; ++i) d[i] = (mask >> i) & 1u ? fromF(base[offset[i]]) : 0u;
 }
 
+void spreadPortable(uint32_t* __restrict d, const uint32_t* const* records, const int* first, int members,
+                    size_t words) {
+  for (int m = 0; m < members; ++m) {
+    const int l0 = first[m], l1 = m + 1 < members ? first[m + 1] : kLanes;
+    const uint32_t* r = records[m];
+    uint32_t* w = d + l0;
+    for (size_t k = 0; k < words; ++k, w += kLanes) std::fill(w, w + (l1 - l0), r[k]);
+  }
+}
+
+// The members a gang block's lane groups of N hold: for each group, its members in lane
+// order and the group's lanes each has (bit i: lane N g + i). The first member of a group
+// fills it; the others are merged over it.
+template <int N>
+struct SpreadGroups {
+  struct Group {
+    int count = 0;
+    int member[N];
+    unsigned bits[N];
+  } group[kLanes / N];
+  SpreadGroups(const int* first, int members) {
+    for (int m = 0; m < members; ++m) {
+      const int l0 = first[m], l1 = m + 1 < members ? first[m + 1] : kLanes;
+      for (int g = l0 / N; l1 > l0 && g <= (l1 - 1) / N; ++g) {
+        const int a = std::max(l0, g * N) - g * N, b = std::min(l1, (g + 1) * N) - g * N;
+        Group& gr = group[g];
+        gr.member[gr.count] = m;
+        gr.bits[gr.count] = ((b - a == 32 ? 0u : (1u << (b - a))) - 1u) << a;
+        ++gr.count;
+      }
+    }
+  }
+};
+
 struct Baseline {
   template <Op OP, unsigned WIDE>
   static void run(PF_LANE_PARAMS) { PF_LANE_LOOP; }
@@ -95,6 +129,10 @@ struct Baseline {
   }
   static void gather(uint32_t* __restrict d, const float* base, const int32_t* offset, uint64_t mask) {
     gatherPortable(d, base, offset, mask);
+  }
+  static void spread(uint32_t* __restrict d, const uint32_t* const* records, const int* first, int members,
+                     size_t words) {
+    spreadPortable(d, records, first, members, words);
   }
   template <Op OP>
   static void batch(PF_BATCH_PARAMS) { PF_BATCH_LOOP; }
@@ -171,6 +209,20 @@ struct Avx2 {
       _mm256_storeu_ps(reinterpret_cast<float*>(d + 8 * g), v);
     }
   }
+  // Each 8-lane group of each word built in a register (a broadcast per member it holds,
+  // blended) and stored whole: masked stores are slow where a gang needs them most (AMD).
+  [[gnu::target("avx2")]] static void spread(uint32_t* __restrict d, const uint32_t* const* records, const int* first,
+                                             int members, size_t words) {
+    SpreadGroups<8> groups(first, members);
+    for (size_t k = 0; k < words; ++k, d += kLanes)
+      for (int g = 0; g < kLanes / 8; ++g) {
+        const SpreadGroups<8>::Group& gr = groups.group[g];
+        __m256i v = _mm256_set1_epi32(static_cast<int>(records[gr.member[0]][k]));
+        for (int e = 1; e < gr.count; ++e)
+          v = _mm256_blendv_epi8(v, _mm256_set1_epi32(static_cast<int>(records[gr.member[e]][k])), rowMask(gr.bits[e]));
+        _mm256_storeu_si256(reinterpret_cast<__m256i*>(d + 8 * g), v);
+      }
+  }
   [[gnu::target("avx2")]] static void blend(uint32_t* __restrict d, const uint32_t* __restrict s, uint64_t mask) {
     const __m256i bit = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
     for (int g = 0; g < kLanes / 8; ++g) {
@@ -227,6 +279,23 @@ struct Avx512 {
                                         : _mm512_setzero_ps());
     }
   }
+  // Each 16-lane group of each word built in a register (a broadcast per member it holds,
+  // merged under its lanes' mask) and stored whole: masked stores to memory are slow on AMD.
+  [[gnu::target("arch=x86-64-v4,prefer-vector-width=512")]] static void spread(uint32_t* __restrict d,
+                                                                              const uint32_t* const* records,
+                                                                              const int* first, int members,
+                                                                              size_t words) {
+    SpreadGroups<16> groups(first, members);
+    for (size_t k = 0; k < words; ++k, d += kLanes)
+      for (int g = 0; g < kLanes / 16; ++g) {
+        const SpreadGroups<16>::Group& gr = groups.group[g];
+        __m512i v = _mm512_set1_epi32(static_cast<int>(records[gr.member[0]][k]));
+        for (int e = 1; e < gr.count; ++e)
+          v = _mm512_mask_mov_epi32(v, static_cast<__mmask16>(gr.bits[e]),
+                                    _mm512_set1_epi32(static_cast<int>(records[gr.member[e]][k])));
+        _mm512_storeu_si512(d + 16 * g, v);
+      }
+  }
   [[gnu::target("arch=x86-64-v4,prefer-vector-width=512")]] static void blend(uint32_t* __restrict d,
                                                                              const uint32_t* __restrict s,
                                                                              uint64_t mask) {
@@ -271,7 +340,7 @@ constexpr LaneKernelTable kBaselineKernels = tableOf<Baseline>();
 constexpr BatchKernelTable kBaselineBatch = batchTableOf<Baseline>();
 constexpr FusedKernelTable kBaselineFused = fusedTableOf<Baseline>();
 constexpr LaneIsaTables kBaseline{&kBaselineKernels,
-                                  {&Baseline::nonzero, &Baseline::blend, &Baseline::load_block, &Baseline::gather},
+                                  {&Baseline::nonzero, &Baseline::blend, &Baseline::load_block, &Baseline::gather, &Baseline::spread},
                                   &kBaselineBatch, &kBaselineFused};
 #ifdef PF_LANE_ISAS
 constexpr LaneKernelTable kAvx2Kernels = tableOf<Avx2>();
@@ -280,10 +349,10 @@ constexpr BatchKernelTable kAvx2Batch = batchTableOf<Avx2>();
 constexpr BatchKernelTable kAvx512Batch = batchTableOf<Avx512>();
 constexpr FusedKernelTable kAvx2Fused = fusedTableOf<Avx2>();
 constexpr FusedKernelTable kAvx512Fused = fusedTableOf<Avx512>();
-constexpr LaneIsaTables kAvx2{&kAvx2Kernels, {&Avx2::nonzero, &Avx2::blend, &Avx2::load_block, &Avx2::gather},
+constexpr LaneIsaTables kAvx2{&kAvx2Kernels, {&Avx2::nonzero, &Avx2::blend, &Avx2::load_block, &Avx2::gather, &Avx2::spread},
                               &kAvx2Batch, &kAvx2Fused};
 constexpr LaneIsaTables kAvx512{&kAvx512Kernels,
-                                {&Avx512::nonzero, &Avx512::blend, &Avx512::load_block, &Avx512::gather},
+                                {&Avx512::nonzero, &Avx512::blend, &Avx512::load_block, &Avx512::gather, &Avx512::spread},
                                 &kAvx512Batch, &kAvx512Fused};
 #endif
 

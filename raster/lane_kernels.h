@@ -38,6 +38,10 @@ struct LaneMaskOps {
   void (*load_block)(uint32_t* __restrict d, const float* base, int stride, uint64_t mask);
   // Packed lanes: lane i at base[offset[i]].
   void (*gather)(uint32_t* __restrict d, const float* base, const int32_t* offset, uint64_t mask);
+  // A gang block's uniforms (PixelExecutor::runGangBlock): word k of records[m] into lanes
+  // [first[m], first[m + 1]) of d + k * kLanes -- the last member's up to kLanes -- for every
+  // k < words. Members in lane order, first[0] == 0.
+  void (*spread)(uint32_t* __restrict d, const uint32_t* const* records, const int* first, int members, size_t words);
 };
 
 // The batched setup's kernels (raster/setup_batch.cpp): kSetupBatchLanes lanes, every operand

@@ -17,6 +17,7 @@
 
 #include "compiler/scalar_ops.h"
 #include "raster/lane_kernels.h"
+#include "raster/setup_executor.h"
 
 namespace pf {
 namespace {
@@ -65,15 +66,17 @@ void PixelExecutor::startFrame() {
   if (shared_) shared_->startFrame();  // the shared interpolators' programs, decoded by it
 }
 
-const DecodedProgram& PixelExecutor::decoded(const PixelProgram& program, const LaneIsaTables& isa) {
-  if (decoded_last_ < decoded_live_ && decoded_[decoded_last_].decodes(program, isa)) return decoded_[decoded_last_];
+const DecodedProgram& PixelExecutor::decoded(const PixelProgram& program, const LaneIsaTables& isa,
+                                             bool wide_uniforms) {
+  if (decoded_last_ < decoded_live_ && decoded_[decoded_last_].decodes(program, isa, wide_uniforms))
+    return decoded_[decoded_last_];
   for (size_t i = 0; i < decoded_live_; ++i)
-    if (decoded_[i].decodes(program, isa)) {
+    if (decoded_[i].decodes(program, isa, wide_uniforms)) {
       decoded_last_ = i;
       return decoded_[i];
     }
   if (decoded_live_ == decoded_.size()) decoded_.emplace_back();
-  decodeProgram(program, isa, decoded_[decoded_live_]);
+  decodeProgram(program, isa, decoded_[decoded_live_], wide_uniforms);
   decoded_last_ = decoded_live_++;
   return decoded_[decoded_last_];
 }
@@ -113,6 +116,32 @@ void PixelExecutor::runPackedBlock(const CompiledPrimitive& prim, const uint32_t
   runAndCommit(prim, prim.pixel, record, layout, state, shade_id, 0, 0, &lanes, mask, target, shared_records);
 }
 
+void PixelExecutor::runGangBlock(const CompiledPrimitive& prim, const GangMember* members, int member_count,
+                                 const ChannelLayout& layout, const RasterState& state, uint32_t shade_id,
+                                 const PackedLanes& lanes, uint64_t mask, const BlockTarget& target,
+                                 const uint32_t* shared_records) {
+  if (!prim.pixel.gangs || !packs(prim, layout)) throw std::logic_error("runGangBlock: " + prim.name + " does not gang");
+  if (member_count == 1) {  // one instance: its record as it is
+    runPackedBlock(prim, members[0].record, layout, state, shade_id, lanes, mask, target, shared_records);
+    return;
+  }
+  // Each record word spread over its instance's lanes (the last member's to the block's end:
+  // lanes outside `mask` compute too, on some instance's values).
+  const size_t words = SetupExecutor::recordWords(prim, layout.count);
+  if (gang_record_.size() < words * kLanes) gang_record_.resize(words * kLanes);
+  const uint32_t* records[kLanes];
+  int first[kLanes];
+  for (int m = 0; m < member_count; ++m) {
+    records[m] = members[m].record;
+    first[m] = members[m].first_lane;
+  }
+  laneIsaTables().masks.spread(gang_record_.data(), records, first, member_count, words);
+  ++counters.blocks_packed;
+  ++counters.blocks_ganged;
+  runAndCommit(prim, prim.pixel, gang_record_.data(), layout, state, shade_id, 0, 0, &lanes, mask, target,
+               shared_records, true);
+}
+
 bool PixelExecutor::packs(const CompiledPrimitive& prim, const ChannelLayout& layout) {
   if (prim.pixel.casts_block_rays) return false;
   for (const ChannelLayout::SharedInterpolator& s : layout.shared)
@@ -123,15 +152,29 @@ bool PixelExecutor::packs(const CompiledPrimitive& prim, const ChannelLayout& la
 void PixelExecutor::runAndCommit(const CompiledPrimitive& prim, const PixelProgram& program, const uint32_t* record,
                                  const ChannelLayout& layout, const RasterState& state, uint32_t shade_id, int bx,
                                  int by, const PackedLanes* packed, uint64_t mask, const BlockTarget& target,
-                                 const uint32_t* shared_records) {
+                                 const uint32_t* shared_records, bool wide_record) {
   const int nch = layout.count;
   ++counters.blocks_run;
   counters.lanes_started += static_cast<uint64_t>(__builtin_popcountll(mask));
-  const uint64_t alive =
-      execute(prim, program, record, layout, state, bx, by, packed, mask, target, shared_records, nullptr);
+  const uint64_t alive = execute(prim, program, record, layout, state, bx, by, packed, mask, target, shared_records,
+                                 nullptr, wide_record);
 
   // Commit: the lanes still alive are this instance's pixels.
   counters.lanes_committed += static_cast<uint64_t>(__builtin_popcountll(alive));
+  if (target.committed_pixels && alive) {
+    constexpr int kBlocksPerRow = kTileSize / kBlockSize;
+    if (packed) {
+      for (uint64_t m = alive; m; m &= m - 1) {
+        const int i = __builtin_ctzll(m);
+        const int x = packed->x[i] - target.tile_x0, y = packed->y[i] - target.tile_y0;
+        target.committed_pixels[(y / kBlockSize) * kBlocksPerRow + x / kBlockSize] |=
+            1ull << ((y % kBlockSize) * kBlockSize + x % kBlockSize);
+      }
+    } else {
+      target.committed_pixels[((by - target.tile_y0) / kBlockSize) * kBlocksPerRow + (bx - target.tile_x0) / kBlockSize] |=
+          alive;
+    }
+  }
   if (alive == ~0ull) ++counters.blocks_covered;
   // Per-pixel lighting's surface: P (divided by w) and N. (An instance that does not set N --
   // a callee of one that does -- has no surface: 0.)
@@ -221,7 +264,7 @@ void PixelExecutor::runSharedInterpolators(const CompiledPrimitive& prim, const 
 uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const PixelProgram& program, const uint32_t* record,
                                 const ChannelLayout& layout, const RasterState& state, int bx, int by,
                                 const PackedLanes* packed, uint64_t mask, const BlockTarget& target,
-                                const uint32_t* shared_records, const uint32_t* p_in) {
+                                const uint32_t* shared_records, const uint32_t* p_in, bool wide_record) {
   ++run_serial_;  // field_hit()'s tapes belong to this run only
   const PixelProgram& p = program;
   const int nch = layout.count;
@@ -293,13 +336,15 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const PixelProgra
       std::fill_n(RZ, kLanes, 0u);
   }
 
-  const uint32_t* xrecord = record + p.num_uniform_slots;
+  // A gang's record: kLanes words per record word.
+  const size_t record_stride = wide_record ? static_cast<size_t>(kLanes) : 1u;
+  const uint32_t* xrecord = record + p.num_uniform_slots * record_stride;
   // Pointer to an operand's lanes (wide) or its single value (scalar).
   auto src = [&](uint32_t o, bool& wide) -> const uint32_t* {
     uint32_t i = operandIndex(o);
     switch (operandKind(o)) {
       case OperandKind::Reg: wide = true; return R + static_cast<size_t>(i) * kLanes;
-      case OperandKind::Uniform: wide = false; return record + i;
+      case OperandKind::Uniform: wide = wide_record; return record + i * record_stride;
       case OperandKind::Const: wide = false; return &p.constants[i];
       case OperandKind::Param: break;
     }
@@ -313,8 +358,8 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const PixelProgra
       wide = true;
       return xregs_.data() + (static_cast<size_t>(i) * nch + c) * kLanes;
     }
-    wide = false;
-    return xrecord + static_cast<size_t>(i) * nch + c;
+    wide = wide_record;
+    return xrecord + (static_cast<size_t>(i) * nch + c) * record_stride;
   };
 
   uint64_t alive = mask;
@@ -362,7 +407,7 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const PixelProgra
   };
 
   const size_t n = p.code.size();
-  const DecodedInstr* const dec = decoded(p, isa).code.data();
+  const DecodedInstr* const dec = decoded(p, isa, wide_record).code.data();
   // The decoded operands' bases (OperandBase order).
   const uint32_t* const bases[4] = {R, record, p.constants.data(), kZeroLanes};
   uint64_t executed = 0;
@@ -395,7 +440,8 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const PixelProgra
       case Op::Jmp: pc = ins.a; continue;
       case Op::JmpIfNot: {
         // A uniform condition: in a register (computed per iteration of a loop), every active
-        // lane holds the same value; read the first one.
+        // lane holds the same value; read the first one. (In a gang block's wide record too:
+        // its instances agree on the program's branch_slots.)
         bool w;
         const uint32_t* c = src(ins.b, w);
         if (w ? (exec == 0 || !c[__builtin_ctzll(exec)]) : !c[0]) pc = ins.a;

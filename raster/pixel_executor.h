@@ -27,6 +27,9 @@ struct BlockTarget {
   uint32_t* shade_ids = nullptr;  // tile G-buffer: shading state per pixel (0 = not drawn)
   float* const* slots = nullptr;  // tile G-buffer: one kTileSize^2 plane per channel slot
   int tile_x0 = 0, tile_y0 = 0;   // window coordinates of the tile's first pixel
+  // Per 8x8 block of the tile (row-major), a bit per pixel (row-major in the block) set as
+  // lanes commit there (CoarseDepth: which blocks still hold cleared pixels); may be null.
+  uint64_t* committed_pixels = nullptr;
 };
 
 // The pixels of a packed block: lane i is pixel (x[i], y[i]) -- any pixels of one tile, each
@@ -38,11 +41,19 @@ struct PackedLanes {
   int32_t y[kLanes];
 };
 
+// One instance of a gang block: its uniform record, and the first of its lanes (its lanes run
+// to the next member's first, the last member's to the block's end).
+struct GangMember {
+  const uint32_t* record;
+  int first_lane;
+};
+
 struct BlockCounters {
   uint64_t blocks_run = 0;
   uint64_t blocks_rejected = 0;  // skipped whole by block_rejection.h (not in blocks_run)
   uint64_t blocks_accepted = 0;  // run by the covered program, without coverage tests (in blocks_run)
   uint64_t blocks_packed = 0;    // run on packed lanes (in blocks_run)
+  uint64_t blocks_ganged = 0;    // packed blocks holding lanes of several instances (in blocks_packed)
   uint64_t lanes_started = 0;
   uint64_t lanes_committed = 0;
   uint64_t blocks_covered = 0;  // blocks whose every lane committed (the instance covers them whole)
@@ -77,6 +88,16 @@ class PixelExecutor {
   void runPackedBlock(const CompiledPrimitive& prim, const uint32_t* record, const ChannelLayout& layout,
                       const RasterState& state, uint32_t shade_id, const PackedLanes& lanes, uint64_t mask,
                       const BlockTarget& target, const uint32_t* shared_records = nullptr);
+  // Runs a packed block whose lanes belong to several instances of `prim` under one state,
+  // layout, shade and shared interpolators, which do not share a pixel: `members` (in lane
+  // order, the first at lane 0) say whose each lane is. Each lane reads its own instance's
+  // uniforms (the program decoded with wide uniforms), so it computes the same bits as on a
+  // block of its instance alone. Only for a primitive whose pixel program gangs
+  // (PixelProgram::gangs) and whose members agree on its branch_slots.
+  void runGangBlock(const CompiledPrimitive& prim, const GangMember* members, int member_count,
+                    const ChannelLayout& layout, const RasterState& state, uint32_t shade_id,
+                    const PackedLanes& lanes, uint64_t mask, const BlockTarget& target,
+                    const uint32_t* shared_records = nullptr);
   // Whether `prim` drawn with `layout` may run on packed lanes: none of its programs casts the
   // rays of an aligned block (FieldHit).
   static bool packs(const CompiledPrimitive& prim, const ChannelLayout& layout);
@@ -95,15 +116,17 @@ class PixelExecutor {
   // Runs a program over the block; returns the lanes alive at its end. `p_in`: P's 4 components
   // (kLanes each) for a shared interpolator, null for a primitive (P starts at (0, 0, 0, 1)).
   // `program` is prim.pixel, or its covered variant (block_rejection.h). `packed`: the lanes'
-  // pixels, or null for the aligned block at (bx, by).
+  // pixels, or null for the aligned block at (bx, by). `wide_record`: `record` holds kLanes
+  // values per slot, one per lane (a gang block's), instead of one.
   uint64_t execute(const CompiledPrimitive& prim, const PixelProgram& program, const uint32_t* record,
                    const ChannelLayout& layout, const RasterState& state, int bx, int by, const PackedLanes* packed,
-                   uint64_t mask, const BlockTarget& target, const uint32_t* shared_records, const uint32_t* p_in);
+                   uint64_t mask, const BlockTarget& target, const uint32_t* shared_records, const uint32_t* p_in,
+                   bool wide_record = false);
   // Runs `program` over the lanes and commits the lanes still alive to the target.
   void runAndCommit(const CompiledPrimitive& prim, const PixelProgram& program, const uint32_t* record,
                     const ChannelLayout& layout, const RasterState& state, uint32_t shade_id, int bx, int by,
                     const PackedLanes* packed, uint64_t mask, const BlockTarget& target,
-                    const uint32_t* shared_records);
+                    const uint32_t* shared_records, bool wide_record = false);
   // Runs the layout's shared interpolators for the `exec` lanes at surface point P (4 operands)
   // into their staging channels -- all but those `prim` computes itself (its `name:` labels).
   void runSharedInterpolators(const CompiledPrimitive& prim, const ChannelLayout& layout, const RasterState& state,
@@ -120,7 +143,7 @@ class PixelExecutor {
 
   // The programs this frame ran, decoded (decoded_program.h); startFrame() forgets them but
   // keeps their storage. Few per frame: found by a linear search from the last one used.
-  const DecodedProgram& decoded(const PixelProgram& program, const LaneIsaTables& isa);
+  const DecodedProgram& decoded(const PixelProgram& program, const LaneIsaTables& isa, bool wide_uniforms);
   std::vector<DecodedProgram> decoded_;
   size_t decoded_live_ = 0;
   size_t decoded_last_ = 0;
@@ -166,6 +189,7 @@ class PixelExecutor {
   std::vector<uint32_t> regs_;     // num_regs x kLanes
   std::vector<uint32_t> xregs_;    // num_interp_regs x channels x kLanes
   std::vector<uint32_t> staging_;  // channels x kLanes: interpolator_return results
+  std::vector<uint32_t> gang_record_;  // a gang block's uniforms: kLanes per record word
 };
 
 }  // namespace pf

@@ -13,6 +13,11 @@ namespace {
 // (PixelExecutor::runPackedBlock) than on the aligned blocks they touch -- and none of those
 // blocks lies wholly inside them, where block rejection might skip it or run it without
 // coverage tests (a larger bound keeps the aligned blocks).
+// The largest bound (pixels within a tile) that joins gang blocks: past it, aligned blocks
+// wholly inside the bound may be skipped or run without coverage tests (block rejection), and
+// few lanes are left empty anyway.
+constexpr int kGangArea = 4 * kLanes;
+
 bool packsBetter(int ix0, int ix1, int iy0, int iy1, int x0, int y0) {
   auto blocksTouched = [](int a0, int a1, int origin) {
     return (a1 - 1 - origin) / kBlockSize - (a0 - origin) / kBlockSize + 1;
@@ -33,6 +38,8 @@ Renderer::Renderer(int threads) : pool_(threads) {
   if (const char* e = std::getenv("PF_SETUP_BATCH")) setup_batching_ = std::strcmp(e, "0") != 0;
   // PF_PACKED_LANES=0: small bounds on aligned blocks too (for comparisons; images are identical).
   if (const char* e = std::getenv("PF_PACKED_LANES")) pack_small_bounds_ = std::strcmp(e, "0") != 0;
+  // PF_GANG_BLOCKS=0: small instances packed one at a time (for comparisons; images are identical).
+  if (const char* e = std::getenv("PF_GANG_BLOCKS")) gang_blocks_ = std::strcmp(e, "0") != 0;
   // PF_DEPTH_CULL=0: no coarse depth culling (for comparisons; images are identical).
   if (const char* e = std::getenv("PF_DEPTH_CULL")) depth_culling_ = std::strcmp(e, "0") != 0;
   for (int i = 0; i < pool_.threadCount(); ++i) {
@@ -382,7 +389,8 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
   s.slot_planes.resize(scene_.gbuffer_slots);
   for (int k = 0; k < scene_.gbuffer_slots; ++k) s.slot_planes[k] = s.gbuffer.data() + kPlane * k;
 
-  if (depth_) s.coarse_depth.startTile(depth_, width_, x0, y0, w, h);
+  if (depth_) s.coarse_depth.startTile(depth_, width_, x0, y0, w, h, scene_.clear.depth);
+  s.gang.clear();
 
   BlockTarget target;
   target.depth = depth_;
@@ -391,6 +399,7 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
   target.slots = s.slot_planes.data();
   target.tile_x0 = x0;
   target.tile_y0 = y0;
+  if (depth_) target.committed_pixels = s.coarse_depth.committedPixels();
 
   // The instances of a bin are a sparse, uneven walk through Scene::instances and records
   // (the hardware prefetcher does not follow it): each instance's record -- the uniform values
@@ -425,8 +434,19 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
       ++s.blocks_depth_culled;
       return true;
     };
+    // Small bounds run packed: alone (packsBetter), or -- for a program that gangs -- with the
+    // pixels of the instances around it in the bin, up to kGangArea pixels each (a gang fills
+    // its blocks whatever the bound's shape, so it takes bounds that on aligned blocks would
+    // have whole blocks inside).
+    const bool packs = pack_small_bounds_ && PixelExecutor::packs(*inst.prim, layout);
+    const bool gangs = packs && gang_blocks_ && inst.prim->pixel.gangs &&
+                       (ix1 - ix0) * (iy1 - iy0) <= kGangArea;
+    const GangBlock::Rect rect{ix0, iy0, ix1, iy1};
+    // The block being filled runs first unless this instance joins it (the bin's order).
+    if (!s.gang.empty() && !(gangs && s.gang.accepts(inst, record, rect)))
+      s.gang.run(s.executor, scene_, target, depth_ ? &s.coarse_depth : nullptr, false);
     const uint64_t committed_before = s.executor.counters.lanes_committed;
-    if (pack_small_bounds_ && packsBetter(ix0, ix1, iy0, iy1, x0, y0) && PixelExecutor::packs(*inst.prim, layout)) {
+    if (gangs || (packs && packsBetter(ix0, ix1, iy0, iy1, x0, y0))) {
       // A small bound: its pixels, row by row, fill whole blocks of packed lanes.
       // The blocks' columns it covers, less those coarse depth culling skips.
       uint64_t live = 0;  // bit (cby - cby0) * 8 + (cbx - cbx0)
@@ -434,6 +454,18 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
         for (int cbx = cbx0; cbx <= cbx1; ++cbx)
           if (!cull || !depthFails(cbx, cby)) live |= 1ull << ((cby - cby0) * CoarseDepth::kBlocksPerSide + cbx - cbx0);
       if (!live) continue;
+      if (gangs) {
+        s.gang.join(inst, record, rect);
+        for (int y = iy0; y < iy1; ++y) {
+          const uint64_t live_row = live >> ((y - y0) / kBlockSize - cby0) * CoarseDepth::kBlocksPerSide;
+          for (int x = ix0; x < ix1; ++x) {
+            if (!((live_row >> ((x - x0) / kBlockSize - cbx0)) & 1u)) continue;
+            if (s.gang.full()) s.gang.run(s.executor, scene_, target, depth_ ? &s.coarse_depth : nullptr, true);
+            s.gang.add(x, y);
+          }
+        }
+        continue;  // its depth writes mark the coarse depth when its block runs
+      }
       PackedLanes& lanes = s.packed_lanes;
       int n = 0;
       for (int y = iy0; y < iy1; ++y) {
@@ -470,6 +502,7 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
     if (depth_ && state.depth_test && state.depth_write && s.executor.counters.lanes_committed != committed_before)
       s.coarse_depth.written(ix0 - x0, iy0 - y0, ix1 - x0, iy1 - y0);
   }
+  s.gang.run(s.executor, scene_, target, depth_ ? &s.coarse_depth : nullptr, false);
   ShadeTarget st{color_, width_, x0, y0, w, h, scene_.color_mask};
   s.pixels_shaded += shadeTile(s.shade_ids.data(), s.slot_planes.data(), scene_.shades.data(), scene_.lightings.data(),
                               scene_.lighting_equations.data(), st);
@@ -499,6 +532,7 @@ void Renderer::flush() {
     stats_.blocks_covered += s->executor.counters.blocks_covered;
     stats_.blocks_accepted += s->executor.counters.blocks_accepted;
     stats_.blocks_packed += s->executor.counters.blocks_packed;
+    stats_.blocks_ganged += s->executor.counters.blocks_ganged;
     stats_.blocks_depth_culled += s->blocks_depth_culled;
     stats_.pixel_instructions += s->executor.counters.instructions;
     stats_.pixels_shaded += s->pixels_shaded;

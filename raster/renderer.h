@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "raster/coarse_depth.h"
+#include "raster/gang_block.h"
 #include "raster/pixel_executor.h"
 #include "raster/scene.h"
 #include "raster/setup_batch.h"
@@ -36,6 +37,7 @@ struct FrameStats {
   uint64_t blocks_covered = 0;        // blocks run whose every lane committed
   uint64_t blocks_accepted = 0;       // blocks run without coverage tests (PixelProgram::covered)
   uint64_t blocks_packed = 0;         // blocks run on packed lanes (a small bound's pixels)
+  uint64_t blocks_ganged = 0;         // packed blocks holding several instances' pixels (raster/gang_block.h)
   uint64_t blocks_depth_culled = 0;   // (instance, block) pairs skipped by coarse depth culling
                                       // (raster/coarse_depth.h; not in blocks_run)
   uint64_t pixels_shaded = 0;
@@ -97,6 +99,9 @@ class Renderer : private SubInstanceSink {
   // says PF_DEPTH_CULL=0; images are identical either way).
   void setDepthCulling(bool on) { depth_culling_ = on; }
   bool depthCulling() const { return depth_culling_; }
+  // Gang blocks (raster/gang_block.h) on or off (on unless the environment says
+  // PF_GANG_BLOCKS=0; images are identical either way).
+  void setGangBlocks(bool on) { gang_blocks_ = on; }
   // The batched setup's counters, summed over the threads that ran batches.
   SetupBatchCounters setupBatchCounters() const;
 
@@ -122,6 +127,7 @@ class Renderer : private SubInstanceSink {
     PixelExecutor executor;
     PackedLanes packed_lanes;
     CoarseDepth coarse_depth;
+    GangBlock gang;
     uint64_t blocks_depth_culled = 0;
     std::vector<uint32_t> shade_ids;
     std::vector<float> gbuffer;
@@ -154,6 +160,7 @@ class Renderer : private SubInstanceSink {
   bool setup_batching_ = true;
   bool pack_small_bounds_ = true;  // PF_PACKED_LANES=0: every instance on aligned blocks
   bool depth_culling_ = true;      // PF_DEPTH_CULL=0: no coarse depth culling
+  bool gang_blocks_ = true;        // PF_GANG_BLOCKS=0: small instances packed one at a time
   uint64_t flushes_ = 0;
   uint32_t shared_offset_ = kNoShared;  // the shared records of the submission in progress
   uint64_t calls_this_submission_ = 0;  // instances its primitive calls made (submitCall)

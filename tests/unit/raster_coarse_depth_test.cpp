@@ -87,7 +87,7 @@ TEST(CoarseDepth, BlockRangesFollowTheBufferAsItIsWritten) {
   };
   for (const Tile t : {Tile{0, 0, 64, 64}, Tile{64, 64, 36, 6}, Tile{64, 0, 36, 64}}) {
     pf::CoarseDepth coarse;
-    coarse.startTile(depth.data(), kW, t.x0, t.y0, t.w, t.h);
+    coarse.startTile(depth.data(), kW, t.x0, t.y0, t.w, t.h, false);
     for (int round = 0; round < 3; ++round) {
       for (int by = 0; by * 8 < t.h; ++by)
         for (int bx = 0; bx * 8 < t.w; ++bx) {
@@ -119,6 +119,34 @@ TEST(CoarseDepth, BlockRangesFollowTheBufferAsItIsWritten) {
     EXPECT_FALSE(coarse.fails(DepthFunc::Less, 5.0f, 5.0f, 0, 0));
     EXPECT_FALSE(coarse.fails(DepthFunc::Greater, -5.0f, -5.0f, 0, 0));
   }
+}
+
+TEST(CoarseDepth, AClearedTileIsMeasuredOnlyWhereEveryPixelWasDrawn) {
+  // After a clear to the far plane, a block with an undrawn pixel keeps that depth: no verdict
+  // without measuring. Once every pixel of it (those inside the framebuffer: this tile is cut to
+  // 20 x 12) is marked drawn, it is measured.
+  constexpr int kW = 84, kH = 76;
+  std::vector<float> depth(static_cast<size_t>(kW) * kH, 1.0f);
+  pf::CoarseDepth coarse;
+  coarse.startTile(depth.data(), kW, 64, 64, 20, 12, true);
+  uint64_t* committed = coarse.committedPixels();
+  // Draw block (1, 0) (pixels 8..15 x 0..7 of the tile) nearer, all but one pixel.
+  for (int y = 0; y < 8; ++y)
+    for (int x = 8; x < 16; ++x) depth[static_cast<size_t>(64 + y) * kW + 64 + x] = 0.25f;
+  committed[1] = ~0ull & ~(1ull << 9);
+  coarse.written(8, 0, 16, 8);
+  EXPECT_FALSE(coarse.fails(DepthFunc::Less, 0.5f, 0.5f, 1, 0));
+  committed[1] = ~0ull;
+  EXPECT_TRUE(coarse.fails(DepthFunc::Less, 0.5f, 0.5f, 1, 0));
+  // Block (2, 1) holds pixels 16..19 x 8..11 only: those four columns and rows are all it needs.
+  for (int y = 8; y < 12; ++y)
+    for (int x = 16; x < 20; ++x) depth[static_cast<size_t>(64 + y) * kW + 64 + x] = 0.25f;
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 4; ++x) committed[1 * pf::CoarseDepth::kBlocksPerSide + 2] |= 1ull << (y * 8 + x);
+  coarse.written(16, 8, 20, 12);
+  EXPECT_TRUE(coarse.fails(DepthFunc::Less, 0.5f, 0.5f, 2, 1));
+  // Block (0, 0), never drawn: no verdict, even for a range behind the clear.
+  EXPECT_FALSE(coarse.fails(DepthFunc::Less, 2.0f, 2.0f, 0, 0));
 }
 
 namespace {

@@ -132,20 +132,28 @@ TEST(PackedLanes, ImagesAreTheSameToTheBitWithPackingOff) {
   ::setenv("PF_PACKED_LANES", "0", 1);
   const Frame aligned = drawScene();
   ::unsetenv("PF_PACKED_LANES");
-  const Frame packed = drawScene();
+  ::setenv("PF_GANG_BLOCKS", "0", 1);
+  const Frame alone = drawScene();  // each instance's pixels in blocks of their own
+  ::unsetenv("PF_GANG_BLOCKS");
+  const Frame ganged = drawScene();  // small instances' pixels sharing blocks (raster/gang_block.h)
   EXPECT_EQ(aligned.stats.blocks_packed, 0u);
-  // Packing happened, and ran fewer blocks.
-  EXPECT_GT(packed.stats.blocks_packed, 200u);
-  EXPECT_LT(packed.stats.blocks_run, aligned.stats.blocks_run);
-  EXPECT_EQ(packed.stats.lanes_committed, aligned.stats.lanes_committed);
-  ASSERT_EQ(packed.color.size(), aligned.color.size());
-  size_t colour_diff = 0, depth_diff = 0, drawn = 0;
-  for (size_t i = 0; i < packed.color.size(); ++i) colour_diff += packed.color[i] != aligned.color[i];
-  for (size_t i = 0; i < packed.depth.size(); ++i) {
-    depth_diff += std::bit_cast<uint32_t>(packed.depth[i]) != std::bit_cast<uint32_t>(aligned.depth[i]);
-    drawn += packed.depth[i] < 1.0f;
+  EXPECT_EQ(alone.stats.blocks_ganged, 0u);
+  // Packing happened, and ran fewer blocks; gangs fewer still.
+  EXPECT_GT(alone.stats.blocks_packed, 200u);
+  EXPECT_LT(alone.stats.blocks_run, aligned.stats.blocks_run);
+  EXPECT_GT(ganged.stats.blocks_ganged, 50u);
+  EXPECT_LT(ganged.stats.blocks_run, alone.stats.blocks_run);
+  for (const Frame* packed : {&alone, &ganged}) {
+    EXPECT_EQ(packed->stats.lanes_committed, aligned.stats.lanes_committed);
+    ASSERT_EQ(packed->color.size(), aligned.color.size());
+    size_t colour_diff = 0, depth_diff = 0, drawn = 0;
+    for (size_t i = 0; i < packed->color.size(); ++i) colour_diff += packed->color[i] != aligned.color[i];
+    for (size_t i = 0; i < packed->depth.size(); ++i) {
+      depth_diff += std::bit_cast<uint32_t>(packed->depth[i]) != std::bit_cast<uint32_t>(aligned.depth[i]);
+      drawn += packed->depth[i] < 1.0f;
+    }
+    EXPECT_EQ(colour_diff, 0u);
+    EXPECT_EQ(depth_diff, 0u);
+    EXPECT_GT(drawn, static_cast<size_t>(kW * kH / 5));  // the scene is not empty
   }
-  EXPECT_EQ(colour_diff, 0u);
-  EXPECT_EQ(depth_diff, 0u);
-  EXPECT_GT(drawn, static_cast<size_t>(kW * kH / 5));  // the scene is not empty
 }
