@@ -113,11 +113,12 @@ int main(int argc, char** argv) {
     // The counters add up since the context was made; every frame draws the same.
     const pf::FrameStats& s = ctx->renderer.stats();
     const double n = frames + 1.0;
-    std::printf("per frame: %.0f blocks run (%.0f packed, %.0f accepted, %.0f rejected; %.0f culled by depth), "
-                "%.1f%% lanes active at start, %.1f%% committed; %.0f pixel instructions (%.1f per block), %.0f setup "
-                "instructions (%.0f per sphere)\n",
-                double(s.blocks_run) / n, double(s.blocks_packed) / n, double(s.blocks_accepted) / n,
-                double(s.blocks_rejected) / n, double(s.blocks_depth_culled) / n,
+    std::printf("per frame: %.0f blocks run (%.0f packed, %.0f of them ganged, %.0f accepted, %.0f rejected; %.0f "
+                "culled by depth, and %.0f pixels), %.1f%% lanes active at start, %.1f%% committed; %.0f pixel "
+                "instructions (%.1f per block), %.0f setup instructions (%.0f per sphere)\n",
+                double(s.blocks_run) / n, double(s.blocks_packed) / n, double(s.blocks_ganged) / n,
+                double(s.blocks_accepted) / n, double(s.blocks_rejected) / n, double(s.blocks_depth_culled) / n,
+                double(s.pixels_depth_culled) / n,
                 s.blocks_run ? 100.0 * double(s.lanes_started) / (64.0 * double(s.blocks_run)) : 0.0,
                 s.blocks_run ? 100.0 * double(s.lanes_committed) / (64.0 * double(s.blocks_run)) : 0.0,
                 double(s.pixel_instructions) / n,

@@ -5,21 +5,6 @@
 
 namespace pf {
 
-bool depthRangeFails(DepthFunc func, float zmin, float zmax, float dmin, float dmax) {
-  // Each case: even the most favourable pair (z, d) fails. NaN bounds make every comparison
-  // false, so no case claims anything for them.
-  switch (func) {
-    case DepthFunc::Never: return true;
-    case DepthFunc::Less: return zmin >= dmax;          // z < d fails for every pair
-    case DepthFunc::LessEqual: return zmin > dmax;      // z <= d
-    case DepthFunc::Greater: return zmax <= dmin;       // z > d
-    case DepthFunc::GreaterEqual: return zmax < dmin;   // z >= d
-    case DepthFunc::Equal: return zmin > dmax || zmax < dmin;
-    case DepthFunc::NotEqual: case DepthFunc::Always: return false;
-  }
-  return false;
-}
-
 void CoarseDepth::startTile(const float* depth, int stride, int x0, int y0, int w, int h, bool cleared) {
   depth_ = depth;
   stride_ = stride;

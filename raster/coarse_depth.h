@@ -25,7 +25,20 @@ namespace pf {
 
 // Whether no depth z in [zmin, zmax] passes `func` (z against the stored d, as ZTest compares)
 // for any stored d in [dmin, dmax]. False where it cannot tell (NotEqual, Always, NaN bounds).
-bool depthRangeFails(DepthFunc func, float zmin, float zmax, float dmin, float dmax);
+inline bool depthRangeFails(DepthFunc func, float zmin, float zmax, float dmin, float dmax) {
+  // Each case: even the most favourable pair (z, d) fails. NaN bounds make every comparison
+  // false, so no case claims anything for them.
+  switch (func) {
+    case DepthFunc::Never: return true;
+    case DepthFunc::Less: return zmin >= dmax;          // z < d fails for every pair
+    case DepthFunc::LessEqual: return zmin > dmax;      // z <= d
+    case DepthFunc::Greater: return zmax <= dmin;       // z > d
+    case DepthFunc::GreaterEqual: return zmax < dmin;   // z >= d
+    case DepthFunc::Equal: return zmin > dmax || zmax < dmin;
+    case DepthFunc::NotEqual: case DepthFunc::Always: return false;
+  }
+  return false;
+}
 
 class CoarseDepth {
  public:

@@ -434,6 +434,15 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
       ++s.blocks_depth_culled;
       return true;
     };
+    // And per pixel, as packed lanes are filled: the depth a pixel holds now is the one its
+    // lane will test (whatever runs before it has run, or -- a gang block's other members --
+    // has none of its pixels), so a pixel where no depth of the bound can pass is left out.
+    auto pixelFails = [&](int x, int y) {
+      const float d = depth_[static_cast<size_t>(y) * width_ + x];
+      if (!depthRangeFails(state.depth_func, inst.z_min, inst.z_max, d, d)) return false;
+      ++s.pixels_depth_culled;
+      return true;
+    };
     // Small bounds run packed: alone (packsBetter), or -- for a program that gangs -- with the
     // pixels of the instances around it in the bin, up to kGangArea pixels each (a gang fills
     // its blocks whatever the bound's shape, so it takes bounds that on aligned blocks would
@@ -458,10 +467,26 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
         s.gang.join(inst, record, rect);
         for (int y = iy0; y < iy1; ++y) {
           const uint64_t live_row = live >> ((y - y0) / kBlockSize - cby0) * CoarseDepth::kBlocksPerSide;
-          for (int x = ix0; x < ix1; ++x) {
-            if (!((live_row >> ((x - x0) / kBlockSize - cbx0)) & 1u)) continue;
-            if (s.gang.full()) s.gang.run(s.executor, scene_, target, depth_ ? &s.coarse_depth : nullptr, true);
-            s.gang.add(x, y);
+          // Each run of live block columns of the row at once.
+          for (int cbx = cbx0; cbx <= cbx1; ++cbx) {
+            if (!((live_row >> (cbx - cbx0)) & 1u)) continue;
+            int end = cbx;
+            while (end < cbx1 && ((live_row >> (end + 1 - cbx0)) & 1u)) ++end;
+            int xa = std::max(ix0, x0 + cbx * kBlockSize);
+            const int xb = std::min(ix1, x0 + (end + 1) * kBlockSize);
+            if (cull) {
+              for (int x = xa; x < xb; ++x) {
+                if (pixelFails(x, y)) continue;
+                if (s.gang.full()) s.gang.run(s.executor, scene_, target, &s.coarse_depth, true);
+                s.gang.addRow(y, x, x + 1);
+              }
+            } else {
+              while (xa < xb) {
+                if (s.gang.full()) s.gang.run(s.executor, scene_, target, depth_ ? &s.coarse_depth : nullptr, true);
+                xa = s.gang.addRow(y, xa, xb);
+              }
+            }
+            cbx = end;
           }
         }
         continue;  // its depth writes mark the coarse depth when its block runs
@@ -471,7 +496,7 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
       for (int y = iy0; y < iy1; ++y) {
         const uint64_t live_row = live >> ((y - y0) / kBlockSize - cby0) * CoarseDepth::kBlocksPerSide;
         for (int x = ix0; x < ix1; ++x) {
-          if (!((live_row >> ((x - x0) / kBlockSize - cbx0)) & 1u)) continue;
+          if (!((live_row >> ((x - x0) / kBlockSize - cbx0)) & 1u) || (cull && pixelFails(x, y))) continue;
           lanes.x[n] = x;
           lanes.y[n] = y;
           if (++n == kLanes) {
@@ -534,6 +559,7 @@ void Renderer::flush() {
     stats_.blocks_packed += s->executor.counters.blocks_packed;
     stats_.blocks_ganged += s->executor.counters.blocks_ganged;
     stats_.blocks_depth_culled += s->blocks_depth_culled;
+    stats_.pixels_depth_culled += s->pixels_depth_culled;
     stats_.pixel_instructions += s->executor.counters.instructions;
     stats_.pixels_shaded += s->pixels_shaded;
     stats_.tiles_run += s->tiles_run;
@@ -550,6 +576,7 @@ void Renderer::flush() {
     s->pixels_shaded = 0;
     s->tiles_run = 0;
     s->blocks_depth_culled = 0;
+    s->pixels_depth_culled = 0;
   }
   scene_.reset();
 }
@@ -560,6 +587,7 @@ void Renderer::discardPending() {
     s->pixels_shaded = 0;
     s->tiles_run = 0;
     s->blocks_depth_culled = 0;
+    s->pixels_depth_culled = 0;
   }
   scene_.reset();
 }

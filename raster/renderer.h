@@ -40,6 +40,7 @@ struct FrameStats {
   uint64_t blocks_ganged = 0;         // packed blocks holding several instances' pixels (raster/gang_block.h)
   uint64_t blocks_depth_culled = 0;   // (instance, block) pairs skipped by coarse depth culling
                                       // (raster/coarse_depth.h; not in blocks_run)
+  uint64_t pixels_depth_culled = 0;   // pixels of small instances left out of packed lanes by it
   uint64_t pixels_shaded = 0;
   uint64_t gbuffer_bytes = 0;         // G-buffer the tiles run used: per tile, the frame's layout's
                                       // slots and the shading-state ids, 64x64 x 4 bytes each
@@ -129,6 +130,7 @@ class Renderer : private SubInstanceSink {
     CoarseDepth coarse_depth;
     GangBlock gang;
     uint64_t blocks_depth_culled = 0;
+    uint64_t pixels_depth_culled = 0;
     std::vector<uint32_t> shade_ids;
     std::vector<float> gbuffer;
     std::vector<float*> slot_planes;

@@ -51,8 +51,11 @@ void printStats(PFcontext ctx, double ms) {
               static_cast<unsigned long long>(s.blocks_packed),
               s.blocks_run ? 100.0 * s.blocks_packed / double(s.blocks_run) : 0.0);
   std::printf("blocks depth-culled %llu (skipped by coarse depth culling: an instance's depth_bound() against the "
-              "block's stored depths)\n",
-              static_cast<unsigned long long>(s.blocks_depth_culled));
+              "block's stored depths), and %llu pixels of packed lanes\n",
+              static_cast<unsigned long long>(s.blocks_depth_culled),
+              static_cast<unsigned long long>(s.pixels_depth_culled));
+  std::printf("blocks ganged      %llu (packed blocks shared by several small instances)\n",
+              static_cast<unsigned long long>(s.blocks_ganged));
   std::printf("active lanes       %.1f%% at start, %.1f%% committed\n",
               s.blocks_run ? 100.0 * s.lanes_started / (64.0 * s.blocks_run) : 0.0,
               s.blocks_run ? 100.0 * s.lanes_committed / (64.0 * s.blocks_run) : 0.0);
