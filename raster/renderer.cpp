@@ -437,6 +437,14 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
     // And per pixel, as packed lanes are filled: the depth a pixel holds now is the one its
     // lane will test (whatever runs before it has run, or -- a gang block's other members --
     // has none of its pixels), so a pixel where no depth of the bound can pass is left out.
+    auto blockMayPass = [&](int bx, int by, uint64_t mask) {
+      for (uint64_t m = mask; m; m &= m - 1) {
+        const int i = __builtin_ctzll(m);
+        const float d = depth_[static_cast<size_t>(by + i / kBlockSize) * width_ + bx + i % kBlockSize];
+        if (!depthRangeFails(state.depth_func, inst.z_min, inst.z_max, d, d)) return true;
+      }
+      return false;
+    };
     auto pixelFails = [&](int x, int y) {
       const float d = depth_[static_cast<size_t>(y) * width_ + x];
       if (!depthRangeFails(state.depth_func, inst.z_min, inst.z_max, d, d)) return false;
@@ -519,6 +527,12 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
           uint64_t mask = 0;
           for (int ly = std::max(iy0 - by, 0); ly < std::min(iy1 - by, kBlockSize); ++ly)
             mask |= row << (ly * kBlockSize);
+          // Skipped too where no pixel of it can pass (the block's other pixels, outside the
+          // instance, may hold the clear depth that keeps the coarse test from saying so).
+          if (cull && mask && !blockMayPass(bx, by, mask)) {
+            ++s.blocks_depth_culled;
+            continue;
+          }
           if (mask) s.executor.runBlock(*inst.prim, record, layout, state, inst.shade_id, bx, by, mask, target, shared);
         }
       }
