@@ -5,6 +5,26 @@
 
 namespace pf {
 
+uint64_t depthPassMask(DepthFunc func, float zmin, float zmax, const float* d, int n) {
+  // Each case the negation of depthRangeFails's for one stored depth (NaN stored: passes,
+  // as depthRangeFails claims nothing for it).
+  auto mask = [&](auto may_pass) {
+    uint64_t m = 0;
+    for (int i = 0; i < n; ++i) m |= static_cast<uint64_t>(may_pass(d[i])) << i;
+    return m;
+  };
+  switch (func) {
+    case DepthFunc::Never: return 0;
+    case DepthFunc::Less: return mask([&](float v) { return !(zmin >= v); });
+    case DepthFunc::LessEqual: return mask([&](float v) { return !(zmin > v); });
+    case DepthFunc::Greater: return mask([&](float v) { return !(zmax <= v); });
+    case DepthFunc::GreaterEqual: return mask([&](float v) { return !(zmax < v); });
+    case DepthFunc::Equal: return mask([&](float v) { return !(zmin > v || zmax < v); });
+    case DepthFunc::NotEqual: case DepthFunc::Always: break;
+  }
+  return n >= 64 ? ~0ull : (1ull << n) - 1;
+}
+
 void CoarseDepth::startTile(const float* depth, int stride, int x0, int y0, int w, int h, bool cleared) {
   depth_ = depth;
   stride_ = stride;

@@ -40,6 +40,11 @@ inline bool depthRangeFails(DepthFunc func, float zmin, float zmax, float dmin, 
   return false;
 }
 
+// Bit i set where no depth z in [zmin, zmax] fails `func` against d[i] -- that is, where
+// !depthRangeFails(func, zmin, zmax, d[i], d[i]) -- for i < n <= 64. One pass of independent
+// loads and compares (no branch per pixel, no chain of loads).
+uint64_t depthPassMask(DepthFunc func, float zmin, float zmax, const float* d, int n);
+
 class CoarseDepth {
  public:
   static constexpr int kBlocksPerSide = kTileSize / kBlockSize;

@@ -434,9 +434,10 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
       ++s.blocks_depth_culled;
       return true;
     };
-    // And per pixel, as packed lanes are filled: the depth a pixel holds now is the one its
-    // lane will test (whatever runs before it has run, or -- a gang block's other members --
-    // has none of its pixels), so a pixel where no depth of the bound can pass is left out.
+    // And per pixel, as packed lanes are filled (depthPassMask): the depth a pixel holds now is
+    // the one its lane will test (whatever runs before it has run, or -- a gang block's other
+    // members -- has none of its pixels), so a pixel where no depth of the bound can pass is
+    // left out.
     auto blockMayPass = [&](int bx, int by, uint64_t mask) {
       for (uint64_t m = mask; m; m &= m - 1) {
         const int i = __builtin_ctzll(m);
@@ -444,12 +445,6 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
         if (!depthRangeFails(state.depth_func, inst.z_min, inst.z_max, d, d)) return true;
       }
       return false;
-    };
-    auto pixelFails = [&](int x, int y) {
-      const float d = depth_[static_cast<size_t>(y) * width_ + x];
-      if (!depthRangeFails(state.depth_func, inst.z_min, inst.z_max, d, d)) return false;
-      ++s.pixels_depth_culled;
-      return true;
     };
     // Small bounds run packed: alone (packsBetter), or -- for a program that gangs -- with the
     // pixels of the instances around it in the bin, up to kGangArea pixels each (a gang fills
@@ -483,9 +478,12 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
             int xa = std::max(ix0, x0 + cbx * kBlockSize);
             const int xb = std::min(ix1, x0 + (end + 1) * kBlockSize);
             if (cull) {
-              for (int x = xa; x < xb; ++x) {
-                if (pixelFails(x, y)) continue;
+              const uint64_t pass = depthPassMask(state.depth_func, inst.z_min, inst.z_max,
+                                                  depth_ + static_cast<size_t>(y) * width_ + xa, xb - xa);
+              s.pixels_depth_culled += static_cast<uint64_t>(xb - xa - __builtin_popcountll(pass));
+              for (uint64_t m = pass; m; m &= m - 1) {
                 if (s.gang.full()) s.gang.run(s.executor, scene_, target, &s.coarse_depth, true);
+                const int x = xa + __builtin_ctzll(m);
                 s.gang.addRow(y, x, x + 1);
               }
             } else {
@@ -503,9 +501,18 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
       int n = 0;
       for (int y = iy0; y < iy1; ++y) {
         const uint64_t live_row = live >> ((y - y0) / kBlockSize - cby0) * CoarseDepth::kBlocksPerSide;
-        for (int x = ix0; x < ix1; ++x) {
-          if (!((live_row >> ((x - x0) / kBlockSize - cbx0)) & 1u) || (cull && pixelFails(x, y))) continue;
-          lanes.x[n] = x;
+        // The row's pixels in live blocks (bit x - ix0), less those the depth test would fail.
+        uint64_t row = 0;
+        for (int x = ix0; x < ix1; ++x)
+          row |= static_cast<uint64_t>((live_row >> ((x - x0) / kBlockSize - cbx0)) & 1u) << (x - ix0);
+        if (cull) {
+          const uint64_t pass = depthPassMask(state.depth_func, inst.z_min, inst.z_max,
+                                              depth_ + static_cast<size_t>(y) * width_ + ix0, ix1 - ix0);
+          s.pixels_depth_culled += static_cast<uint64_t>(__builtin_popcountll(row & ~pass));
+          row &= pass;
+        }
+        for (uint64_t m = row; m; m &= m - 1) {
+          lanes.x[n] = ix0 + __builtin_ctzll(m);
           lanes.y[n] = y;
           if (++n == kLanes) {
             s.executor.runPackedBlock(*inst.prim, record, layout, state, inst.shade_id, lanes, ~0ull, target, shared);
