@@ -5,6 +5,7 @@
 // G-buffer's planes are already laid out that way -- so that the equation's loops vectorize.
 #include "raster/shading.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 
@@ -42,12 +43,17 @@ void lightRun(const ShadeState& s, const LightingState& l, const LightingEquatio
   const float* const ny = slots[s.surface_slot + 4] + i0;
   const float* const nz = slots[s.surface_slot + 5] + i0;
   for (int i = 0; i < n; ++i) {
-    const float d = nx[i] * nx[i] + ny[i] * ny[i] + nz[i] * nz[i];
-    const bool unit = std::sqrt(d) > 0.0f;
-    const float inv = 1.0f / std::sqrt(d);
-    normal[0][i] = unit ? nx[i] * inv : nx[i];
-    normal[1][i] = unit ? ny[i] * inv : ny[i];
-    normal[2][i] = unit ? nz[i] * inv : nz[i];
+    // (Every product computed, then chosen: an operation in one arm of a select is one the
+    // compiler may not run for every lane -- it could raise a floating-point exception -- and
+    // the loop would not vectorize.)
+    const float x = nx[i], y = ny[i], z = nz[i];
+    const float len = std::sqrt(x * x + y * y + z * z);
+    const float inv = 1.0f / len;
+    const bool unit = len > 0.0f;
+    const float ux = x * inv, uy = y * inv, uz = z * inv;
+    normal[0][i] = unit ? ux : x;
+    normal[1][i] = unit ? uy : y;
+    normal[2][i] = unit ? uz : z;
   }
   // Two-sided lighting: a normal facing away from the eye (dot(n, -p) < 0) shows the back face.
   // (Without it P is not read: the lighting may not need it, and then it was not written --
@@ -85,11 +91,22 @@ void lightRun(const ShadeState& s, const LightingState& l, const LightingEquatio
       default: break;
     }
     const bool front_tracks = l.color_material_face != GL_BACK, back_tracks = l.color_material_face != GL_FRONT;
+    // (face[i] ? back_tracks : front_tracks) ? colour : own, decided per run where it can be.
     for (int t : tracked) {
-      if (t < 0) continue;
-      for (int k = 0; k < 4; ++k)
-        for (int i = 0; i < n; ++i)
-          material[t][k][i] = (face[i] ? back_tracks : front_tracks) ? c[k][i] : material[t][k][i];
+      if (t < 0 || !(front_tracks || back_tracks)) continue;
+      for (int k = 0; k < 4; ++k) {
+        float* const m = material[t][k];
+        const float* const colour = c[k];
+        if (front_tracks && back_tracks) {
+          std::copy_n(colour, n, m);
+          continue;
+        }
+        const uint8_t tracking_face = back_tracks ? 1 : 0;
+        for (int i = 0; i < n; ++i) {
+          const float a = colour[i], b = m[i];
+          m[i] = face[i] == tracking_face ? a : b;
+        }
+      }
     }
   }
   LitPoints in;
@@ -131,9 +148,21 @@ uint64_t shadeTile(const uint32_t* shade_ids, const float* const* slots, const S
       runColour(s, slots, i0, n, c);
       if (s.lighting >= 0) lightRun(s, lightings[s.lighting], equations[s.lighting], slots, i0, n, c);
       uint8_t* px = t.color + (static_cast<size_t>(t.y0 + y) * t.stride + t.x0 + x) * 4;
-      for (int i = 0; i < n; ++i)
-        for (int k = 0; k < 4; ++k)
-          if (t.color_mask & (1u << k)) px[4 * i + k] = toUnorm8(c[k][i]);
+      if (t.color_mask == 0xf) {
+        // toUnorm8 without a branch, so that the loop vectorizes: the same bytes.
+        for (int i = 0; i < n; ++i)
+          for (int k = 0; k < 4; ++k) {
+            const float v = c[k][i];
+            const float clamped = v > 0.0f ? v : 0.0f;  // NaN too: 0
+            const float rounded = clamped * 255.0f + 0.5f;
+            const float scaled = clamped >= 1.0f ? 255.0f : rounded;
+            px[4 * i + k] = static_cast<uint8_t>(static_cast<int>(scaled));
+          }
+      } else {
+        for (int i = 0; i < n; ++i)
+          for (int k = 0; k < 4; ++k)
+            if (t.color_mask & (1u << k)) px[4 * i + k] = toUnorm8(c[k][i]);
+      }
       shaded += static_cast<uint64_t>(n);
       x = end;
     }
