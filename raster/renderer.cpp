@@ -359,24 +359,32 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
   const int x0 = tx * kTileSize, y0 = ty * kTileSize;
   const int w = std::min(kTileSize, width_ - x0), h = std::min(kTileSize, height_ - y0);
 
+  // (The clears read the buffers' addresses into locals first: a byte store may alias any
+  // member, and the loops would reload them at every pixel instead of filling rows.)
+  const size_t stride = static_cast<size_t>(width_);
   if (scene_.clear.color) {
     uint8_t c[4];
     for (int k = 0; k < 4; ++k) c[k] = toUnorm8(scene_.clear.rgba[k]);
     const uint8_t mask = scene_.clear.color_mask;
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x) {
-        uint8_t* px = color_ + (static_cast<size_t>(y0 + y) * width_ + x0 + x) * 4;
-        if (mask == 0xf) {
-          std::copy(c, c + 4, px);
-        } else {
-          for (int k = 0; k < 4; ++k)
-            if (mask & (1u << k)) px[k] = c[k];
-        }
+    uint8_t* const color = color_;
+    uint32_t pixel;
+    std::memcpy(&pixel, c, sizeof pixel);
+    for (int y = 0; y < h; ++y) {
+      uint8_t* const row = color + ((static_cast<size_t>(y0 + y) * stride) + static_cast<size_t>(x0)) * 4;
+      if (mask == 0xf) {
+        for (int x = 0; x < w; ++x) std::memcpy(row + 4 * x, &pixel, sizeof pixel);
+        continue;
       }
+      for (int x = 0; x < w; ++x)
+        for (int k = 0; k < 4; ++k)
+          if (mask & (1u << k)) row[4 * x + k] = c[k];
+    }
   }
-  if (scene_.clear.depth && depth_)
-    for (int y = 0; y < h; ++y)
-      std::fill_n(depth_ + static_cast<size_t>(y0 + y) * width_ + x0, w, scene_.clear.z);
+  if (scene_.clear.depth && depth_) {
+    float* const depth = depth_;
+    const float z = scene_.clear.z;
+    for (int y = 0; y < h; ++y) std::fill_n(depth + static_cast<size_t>(y0 + y) * stride + x0, w, z);
+  }
 
   const TileBin& bin = scene_.bins[tile];
   if (bin.instances.empty()) return;
