@@ -136,9 +136,9 @@ void typeBuiltinCall(Expr& e, UnitKind unit, const std::function<void(SourceLoc,
     if (!arity(1, 1) || any_void || !needScalars()) return;
     e.type = Type::of(BaseType::Void);
   } else if (f == "depth_bound") {
-    // depth_bound(zmin, zmax): a promise that every depth the instance's pixels test with
-    // ztest() lies in [zmin, zmax] (window Z), so the renderer may skip blocks where none can
-    // pass: a statement (uniform; sema checks).
+    // depth_bound(zmin, zmax): a promise that every pixel the instance draws passed ztest(z)
+    // with z in [zmin, zmax] (window Z), so the renderer may skip blocks where none can pass: a
+    // statement (uniform; sema checks; codegen refuses it in a primitive without ztest()).
     if (!arity(2, 2) || any_void || !needScalars()) return;
     e.type = Type::of(BaseType::Void);
   } else if (f == "unscreen") {

@@ -73,6 +73,18 @@ class Generator {
     result_.setup.constants = std::move(setup_.constants);
     result_.setup.num_regs = setup_.num_regs;
     result_.setup.num_interp_regs = setup_.num_interp_regs;
+    // depth_bound() lets the renderer skip pixels where no depth of the range passes the depth
+    // test: sound only for a primitive whose pixels are drawn where ztest() passed. One that
+    // never tests has nothing for the bound to describe.
+    bool pixel_tests_depth = false;
+    for (const Instr& ins : result_.pixel.code) pixel_tests_depth = pixel_tests_depth || ins.op == Op::ZTest;
+    for (const auto& [in, conds] : roots_)
+      if (in->op == Op::DepthBound && !pixel_tests_depth) {
+        result_.errors.push_back({in->loc, "depth_bound() describes the depths this primitive tests with ztest(), "
+                                           "but it never calls ztest(): blocks skipped by the bound would lose "
+                                           "pixels the depth test does not decide"});
+        break;
+      }
     if (max_nesting_ > kMaxProgramNesting)
       result_.errors.push_back({deepest_, "loops and varying ifs nest " + std::to_string(max_nesting_) +
                                               " deep here (inlined functions count as a loop each); at most " +

@@ -1,8 +1,8 @@
 // Coarse depth culling (the Hi-Z of GPUs, for any primitive that states its depths): per 8x8
 // block of the tile being run, the nearest and farthest depth stored under it. An instance whose
-// setup called depth_bound(zmin, zmax) promises that every depth its pixels test with ztest()
-// lies in [zmin, zmax]; where no depth in that range passes the context's depth test against
-// any depth stored in a block, none of its pixels there can be drawn, and the block is skipped
+// setup called depth_bound(zmin, zmax) promises that every pixel it draws passed ztest(z) with z
+// in [zmin, zmax]; where no depth in that range passes the context's depth test against any
+// depth stored in a block, none of its pixels there can be drawn, and the block is skipped
 // without running a lane.
 //
 // Why it pays: many small overlapping primitives drawn in no particular order (particles,
@@ -40,7 +40,7 @@ inline bool depthRangeFails(DepthFunc func, float zmin, float zmax, float dmin, 
   return false;
 }
 
-// Bit i set where no depth z in [zmin, zmax] fails `func` against d[i] -- that is, where
+// Bit i set where some depth z in [zmin, zmax] may pass `func` against d[i] -- that is, where
 // !depthRangeFails(func, zmin, zmax, d[i], d[i]) -- for i < n <= 64. One pass of independent
 // loads and compares (no branch per pixel, no chain of loads).
 uint64_t depthPassMask(DepthFunc func, float zmin, float zmax, const float* d, int n);

@@ -4,7 +4,7 @@
 namespace pf {
 
 bool GangBlock::accepts(const Instance& inst, const uint32_t* record, const Rect& rect) const {
-  if (full()) return false;
+  if (full() || members_ == kLanes) return false;
   if (members_ == 0) return true;
   const Instance& k = *key_;
   if (inst.prim != k.prim || inst.state != k.state || inst.layout != k.layout || inst.shade_id != k.shade_id ||
@@ -24,6 +24,10 @@ void GangBlock::join(const Instance& inst, const uint32_t* record, const Rect& r
     key_ = &inst;
     key_record_ = record;
   }
+  // The last member added no lane (the depth filter left out all its pixels): it has nothing
+  // in the block, so the new one takes its place -- else such members would pile up past
+  // kLanes.
+  if (members_ > 0 && member_[members_ - 1].first_lane == lanes_) --members_;
   member_[members_] = GangMember{record, lanes_};
   rect_[members_] = rect;
   ++members_;
@@ -35,8 +39,8 @@ void GangBlock::run(PixelExecutor& executor, const Scene& scene, const BlockTarg
     const Instance& k = *key_;
     const RasterState& state = scene.states[k.state];
     const uint32_t* shared = k.shared_offset == kNoShared ? nullptr : scene.records.data() + k.shared_offset;
-    // Members that joined without a pixel (their last block filled exactly) have no lanes:
-    // leave them out, so that every member's lanes run to the next one's first.
+    // The last member may have no lane (the depth filter left out all its pixels): leave it
+    // out, so that every member's lanes run to the next one's first.
     int n = 0;
     for (int m = 0; m < members_; ++m) {
       const int end = m + 1 < members_ ? member_[m + 1].first_lane : lanes_;

@@ -62,23 +62,24 @@ RegionVerdict PixelExecutor::regionVerdict(const PixelProgram& program, const ui
 void PixelExecutor::startFrame() {
   for (RegionMemo& m : region_memos_) m.program = nullptr;  // a program may be freed, its address reused
   decoded_live_ = 0;
-  decoded_last_ = 0;
+  decoded_last_[0] = decoded_last_[1] = 0;
   if (shared_) shared_->startFrame();  // the shared interpolators' programs, decoded by it
 }
 
 const DecodedProgram& PixelExecutor::decoded(const PixelProgram& program, const LaneIsaTables& isa,
                                              bool wide_uniforms) {
-  if (decoded_last_ < decoded_live_ && decoded_[decoded_last_].decodes(program, isa, wide_uniforms))
-    return decoded_[decoded_last_];
+  // (A program runs both ways in a frame of gangs: each way remembers its own last.)
+  size_t& last = decoded_last_[wide_uniforms ? 1 : 0];
+  if (last < decoded_live_ && decoded_[last].decodes(program, isa, wide_uniforms)) return decoded_[last];
   for (size_t i = 0; i < decoded_live_; ++i)
     if (decoded_[i].decodes(program, isa, wide_uniforms)) {
-      decoded_last_ = i;
+      last = i;
       return decoded_[i];
     }
   if (decoded_live_ == decoded_.size()) decoded_.emplace_back();
   decodeProgram(program, isa, decoded_[decoded_live_], wide_uniforms);
-  decoded_last_ = decoded_live_++;
-  return decoded_[decoded_last_];
+  last = decoded_live_++;
+  return decoded_[last];
 }
 
 bool PixelExecutor::blockRejectionWanted() { return std::getenv("PF_NO_BLOCK_REJECTION") == nullptr; }

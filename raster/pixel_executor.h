@@ -146,7 +146,7 @@ class PixelExecutor {
   const DecodedProgram& decoded(const PixelProgram& program, const LaneIsaTables& isa, bool wide_uniforms);
   std::vector<DecodedProgram> decoded_;
   size_t decoded_live_ = 0;
-  size_t decoded_last_ = 0;
+  size_t decoded_last_[2] = {0, 0};  // the last found, per decoding (scalar, wide uniforms)
 
   field::FieldRayCaster caster_;
   BlockRejection rejection_;

@@ -9,15 +9,15 @@
 namespace pf {
 namespace {
 
-// Whether the pixels [ix0, ix1) x [iy0, iy1) of the tile at (x0, y0) run in fewer blocks packed
-// (PixelExecutor::runPackedBlock) than on the aligned blocks they touch -- and none of those
-// blocks lies wholly inside them, where block rejection might skip it or run it without
-// coverage tests (a larger bound keeps the aligned blocks).
 // The largest bound (pixels within a tile) that joins gang blocks: past it, aligned blocks
 // wholly inside the bound may be skipped or run without coverage tests (block rejection), and
 // few lanes are left empty anyway.
 constexpr int kGangArea = 4 * kLanes;
 
+// Whether the pixels [ix0, ix1) x [iy0, iy1) of the tile at (x0, y0) run in fewer blocks packed
+// (PixelExecutor::runPackedBlock) than on the aligned blocks they touch -- and none of those
+// blocks lies wholly inside them, where block rejection might skip it or run it without
+// coverage tests (a larger bound keeps the aligned blocks).
 bool packsBetter(int ix0, int ix1, int iy0, int iy1, int x0, int y0) {
   auto blocksTouched = [](int a0, int a1, int origin) {
     return (a1 - 1 - origin) / kBlockSize - (a0 - origin) / kBlockSize + 1;

@@ -159,6 +159,40 @@ TEST(LaneKernels, MaskLoopsAgreeWithTheirDefinition) {
   }
 }
 
+// A gang block's record spread (LaneMaskOps::spread) on every set against its definition: word
+// k of member m in lanes [first[m], first[m + 1]) -- members of one lane, of 64, of lengths
+// that cut the 8- and 16-lane groups anywhere, and members with no lane (first equal).
+TEST(LaneKernels, GangRecordSpreadMatchesItsDefinition) {
+  IsaGuard guard;
+  std::mt19937 rng(17);
+  for (LaneIsa isa : availableLaneIsas()) {
+    ASSERT_TRUE(setLaneIsa(isa));
+    for (int trial = 0; trial < 300; ++trial) {
+      // Member boundaries: 0, then sorted cuts (repeats give members without a lane).
+      const int members = 1 + static_cast<int>(rng() % (trial % 3 == 0 ? 64 : 6));
+      std::vector<int> first(static_cast<size_t>(members), 0);
+      for (int m = 1; m < members; ++m) first[static_cast<size_t>(m)] = static_cast<int>(rng() % kLanes);
+      std::sort(first.begin(), first.end());
+      const size_t words = 1 + rng() % 45;
+      std::vector<std::vector<uint32_t>> records(static_cast<size_t>(members), std::vector<uint32_t>(words));
+      std::vector<const uint32_t*> record_ptrs;
+      for (auto& r : records) {
+        for (uint32_t& w : r) w = static_cast<uint32_t>(rng());
+        record_ptrs.push_back(r.data());
+      }
+      std::vector<uint32_t> got(words * kLanes, 0xdeadbeefu), want(words * kLanes, 0xdeadbeefu);
+      for (int m = 0; m < members; ++m) {
+        const int l1 = m + 1 < members ? first[static_cast<size_t>(m) + 1] : kLanes;
+        for (size_t k = 0; k < words; ++k)
+          for (int l = first[static_cast<size_t>(m)]; l < l1; ++l)
+            want[k * kLanes + static_cast<size_t>(l)] = records[static_cast<size_t>(m)][k];
+      }
+      laneMaskOps().spread(got.data(), record_ptrs.data(), first.data(), members, words);
+      ASSERT_EQ(got, want) << laneIsaName(isa) << ", trial " << trial << ", " << members << " members";
+    }
+  }
+}
+
 // The fused multiply-and-add kernels (the decoder's FusedForm) compute, on every set and for
 // every operand shape, the bits of the FMul and then the FAdd / FSub they stand for.
 TEST(LaneKernels, FusedProductsAreTheTwoInstructionsBits) {

@@ -25,14 +25,15 @@ struct Frame {
   pf::FrameStats stats;
 };
 
-// Draws `scene` into a fresh context (2 threads) with gang blocks on or off.
-Frame draw(bool gangs, const std::function<void()>& scene) {
-  std::vector<unsigned char> px(static_cast<size_t>(kSize) * kSize * 4);
+// Draws `scene` into a fresh context (2 threads, `size` pixels square) with gang blocks and
+// coarse depth culling on or off; the scene clears.
+Frame draw(bool gangs, const std::function<void()>& scene, bool cull = true, int size = kSize) {
+  std::vector<unsigned char> px(static_cast<size_t>(size) * size * 4);
   const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_THREADS, 2, 0};
   PFcontext ctx = pfCreateContextAttribs(attribs);
-  EXPECT_TRUE(ctx && pfMakeCurrent(ctx, px.data(), GL_UNSIGNED_BYTE, kSize, kSize));
+  EXPECT_TRUE(ctx && pfMakeCurrent(ctx, px.data(), GL_UNSIGNED_BYTE, size, size));
   ctx->renderer.setGangBlocks(gangs);
-  pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  ctx->renderer.setDepthCulling(cull);
   scene();
   pfglFinish();
   EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
@@ -42,17 +43,14 @@ Frame draw(bool gangs, const std::function<void()>& scene) {
   void* data = nullptr;
   EXPECT_TRUE(pfGetDepthBuffer(ctx, &w, &h, &bits, &data));
   const float* d = static_cast<const float*>(data);
-  f.depth.assign(d, d + kSize * kSize);
+  f.depth.assign(d, d + size * size);
   f.stats = ctx->renderer.stats();
   pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
   pfDestroyContext(ctx);
   return f;
 }
 
-void expectSame(const Frame& ganged, const Frame& alone) {
-  EXPECT_EQ(alone.stats.blocks_ganged, 0u);
-  EXPECT_GT(ganged.stats.blocks_ganged, 0u);
-  EXPECT_LT(ganged.stats.blocks_run, alone.stats.blocks_run);
+void expectSameImage(const Frame& ganged, const Frame& alone) {
   EXPECT_EQ(ganged.stats.lanes_committed, alone.stats.lanes_committed);
   size_t colour_diff = 0, depth_diff = 0;
   for (size_t i = 0; i < alone.color.size(); ++i) colour_diff += ganged.color[i] != alone.color[i];
@@ -62,11 +60,18 @@ void expectSame(const Frame& ganged, const Frame& alone) {
   EXPECT_EQ(depth_diff, 0u);
 }
 
-void perspective() {
+void expectSame(const Frame& ganged, const Frame& alone) {
+  EXPECT_EQ(alone.stats.blocks_ganged, 0u);
+  EXPECT_GT(ganged.stats.blocks_ganged, 0u);
+  EXPECT_LT(ganged.stats.blocks_run, alone.stats.blocks_run);
+  expectSameImage(ganged, alone);
+}
+
+void perspective(double distance = 4.0) {
   pfglMatrixMode(GL_PROJECTION);
   pfglFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 10.0);
   pfglMatrixMode(GL_MODELVIEW);
-  pfglTranslated(0.0, 0.0, -4.0);
+  pfglTranslated(0.0, 0.0, -distance);
   pfglEnable(GL_DEPTH_TEST);
 }
 
@@ -77,6 +82,7 @@ TEST(GangBlocks, AnInstanceNeverSharesABlockWithOneItOverlaps) {
   // Sharing a block, both would pass the depth test against the depth before them and the
   // later lane's commit would win.
   auto scene = [] {
+    pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     perspective();
     const GLuint centre = pfglGetParamNameEXT("center"), radius = pfglGetParamNameEXT("radius");
     std::mt19937 rng(21);
@@ -147,6 +153,7 @@ TEST(GangBlocks, InstancesThatDisagreeOnABranchNeverShareABlock) {
                  mode = pfglGetParamNameEXT("mode");
     std::mt19937 rng(4);
     std::uniform_real_distribution<float> pos(-0.9f, 0.9f), u(0.0f, 1.0f);
+    pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     pfglEnable(GL_DEPTH_TEST);
     pfglBegin(disc);
     for (int i = 0; i < 3000; ++i) {
@@ -159,4 +166,48 @@ TEST(GangBlocks, InstancesThatDisagreeOnABranchNeverShareABlock) {
     pfglEnd();
   };
   expectSame(draw(true, scene), draw(false, scene));
+}
+
+// Instances whose every pixel the depth filter leaves out join a gang block without a lane;
+// each must take the place of the one before it, not pile up past the block's 64 members
+// (they wrote past the member arrays and crashed). Many disjoint small spheres in one tile
+// behind a depth cleared to 0 under GL_LESS (nothing passes), and a lattice drawn front to
+// back (the back layer hidden), against the same scenes unculled.
+TEST(GangBlocks, MembersWithEveryPixelCulledDoNotPileUp) {
+  auto behind_clear = [] {
+    pfglClearDepth(0.0);
+    pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    perspective();
+    const GLuint centre = pfglGetParamNameEXT("center"), radius = pfglGetParamNameEXT("radius");
+    pfglBegin(pfglGetPrimitiveEXT("sphere_impostors"));
+    for (int j = 0; j < 12; ++j)
+      for (int i = 0; i < 12; ++i) {
+        pfglColor3f(1, 0, 0);
+        pfglRastParamfEXT(radius, 0.06f);
+        pfglRastParam3fEXT(centre, -1.8f + 0.3f * i, -1.8f + 0.3f * j, 0.0f);
+        pfglSequencePointEXT();
+      }
+    pfglEnd();
+  };
+  const Frame none = draw(true, behind_clear, true, 64);
+  EXPECT_GT(none.stats.pixels_depth_culled, 500u);
+  expectSameImage(none, draw(true, behind_clear, false, 64));
+  auto lattice = [] {
+    pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    perspective();
+    const GLuint centre = pfglGetParamNameEXT("center"), radius = pfglGetParamNameEXT("radius");
+    pfglBegin(pfglGetPrimitiveEXT("sphere_impostors"));
+    for (int layer = 0; layer < 2; ++layer)
+      for (int j = 0; j < 9; ++j)
+        for (int i = 0; i < 9; ++i) {
+          pfglColor3f(static_cast<float>(layer), static_cast<float>(1 - layer), 0.0f);
+          pfglRastParamfEXT(radius, layer == 0 ? 0.16f : 0.04f);
+          pfglRastParam3fEXT(centre, -1.68f + 0.42f * i, -1.68f + 0.42f * j, layer == 0 ? 0.3f : 0.0f);
+          pfglSequencePointEXT();
+        }
+    pfglEnd();
+  };
+  const Frame front = draw(true, lattice, true, 64);
+  EXPECT_GT(front.stats.pixels_depth_culled, 0u);
+  expectSameImage(front, draw(true, lattice, false, 64));
 }

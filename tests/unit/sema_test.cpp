@@ -71,6 +71,19 @@ TEST(Sema, DepthBoundIsAUniformStatementOfAPrimitive) {
   EXPECT_NE(c.diagnostics.find("5:5: error: depth_bound() takes 2 arguments, not 1"), std::string::npos) << c.diagnostics;
   EXPECT_NE(c.diagnostics.find("6:18: error: depth_bound() sets"), std::string::npos) << c.diagnostics;
   EXPECT_NE(c.diagnostics.find("depth_bound() is only available in a primitive"), std::string::npos) << c.diagnostics;
+  // A primitive that never tests depth: the bound would describe nothing, and culling by it
+  // would drop pixels.
+  auto untested = compile(
+      "primitive p(varying float X; inout varying float Z)\n"
+      "{\n"
+      "    depth_bound(0.9, 0.95);\n"
+      "    Z = 0.9;\n"
+      "}\n");
+  ASSERT_FALSE(untested.ok);
+  EXPECT_NE(untested.diagnostics.find("3:5: error: depth_bound() describes the depths this primitive tests with "
+                                      "ztest(), but it never calls ztest()"),
+            std::string::npos)
+      << untested.diagnostics;
 }
 
 TEST(Sema, TypeErrors) {
