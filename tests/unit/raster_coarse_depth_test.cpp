@@ -9,13 +9,12 @@
 #include <primflow/gl.h>
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <limits>
 #include <random>
 #include <vector>
 
-#include "api/src/context_state.h"
+#include "rendered_frame.h"
 #include "raster/coarse_depth.h"
 
 namespace {
@@ -153,11 +152,7 @@ namespace {
 
 constexpr int kSize = 160;
 
-struct Frame {
-  std::vector<unsigned char> color;
-  std::vector<float> depth;
-  pf::FrameStats stats;
-};
+using Frame = pf::test::RenderedFrame;
 
 // A dense cloud of lit sphere impostors over a few triangles, two frames (the second with the
 // first's depth left in place, so whole instances find their blocks already nearer), drawn with
@@ -165,73 +160,54 @@ struct Frame {
 // `clear_z` and glDepthRange(near, far).
 Frame drawCloud(bool cull, GLenum func, double clear_z, double near, double far, bool depth_test = true,
                 GLenum second_func = 0) {
-  std::vector<unsigned char> px(static_cast<size_t>(kSize) * kSize * 4);
-  const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_THREADS, 2, 0};
-  PFcontext ctx = pfCreateContextAttribs(attribs);
-  EXPECT_TRUE(ctx && pfMakeCurrent(ctx, px.data(), GL_UNSIGNED_BYTE, kSize, kSize));
-  ctx->renderer.setDepthCulling(cull);
-  pfglMatrixMode(GL_PROJECTION);
-  pfglFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 12.0);
-  pfglMatrixMode(GL_MODELVIEW);
-  pfglTranslated(0.0, 0.0, -5.0);
-  if (depth_test) pfglEnable(GL_DEPTH_TEST);
-  pfglDepthFunc(func);
-  pfglDepthRange(near, far);
-  pfglClearDepth(clear_z);
-  pfglEnable(GL_LIGHTING);
-  pfglEnable(GL_LIGHT0);
-  pfglEnable(GL_COLOR_MATERIAL);
-  pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  const GLuint centre = pfglGetParamNameEXT("center"), radius = pfglGetParamNameEXT("radius");
-  const GLenum impostors = pfglGetPrimitiveEXT("sphere_impostors");
-  std::mt19937 rng(3);
-  std::uniform_real_distribution<float> pos(-1.6f, 1.6f), col(0.0f, 1.0f);
-  for (int frame = 0; frame < 2; ++frame) {
-    pfglBegin(GL_TRIANGLES);
-    pfglColor3f(0.3f, 0.3f, 0.9f);
-    pfglNormal3f(0, 0, 1);
-    pfglVertex3f(-2, -2, -0.5f);
-    pfglVertex3f(2, -2, 0.5f);
-    pfglVertex3f(0, 2, 0.0f);
-    pfglEnd();
-    pfglBegin(impostors);
-    for (int i = 0; i < 3000; ++i) {
-      if (i == 1500 && second_func) {
-        pfglEnd();
-        pfglDepthFunc(second_func);
-        pfglBegin(impostors);
-      }
-      pfglColor3f(col(rng), col(rng), col(rng));
-      pfglRastParamfEXT(radius, 0.05f + 0.15f * col(rng));
-      pfglRastParam3fEXT(centre, pos(rng), pos(rng), pos(rng));
-      pfglSequencePointEXT();
-    }
-    pfglEnd();
-    pfglFinish();
+  return pf::test::renderFrame(kSize, 2, [&](pf::Renderer& r) { r.setDepthCulling(cull); }, [&] {
+    pfglMatrixMode(GL_PROJECTION);
+    pfglFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 12.0);
+    pfglMatrixMode(GL_MODELVIEW);
+    pfglTranslated(0.0, 0.0, -5.0);
+    if (depth_test) pfglEnable(GL_DEPTH_TEST);
     pfglDepthFunc(func);
-  }
-  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
-  Frame f;
-  f.color = px;
-  GLint w, h, bits;
-  void* data = nullptr;
-  EXPECT_TRUE(pfGetDepthBuffer(ctx, &w, &h, &bits, &data));
-  const float* d = static_cast<const float*>(data);
-  f.depth.assign(d, d + kSize * kSize);
-  f.stats = ctx->renderer.stats();
-  pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
-  pfDestroyContext(ctx);
-  return f;
+    pfglDepthRange(near, far);
+    pfglClearDepth(clear_z);
+    pfglEnable(GL_LIGHTING);
+    pfglEnable(GL_LIGHT0);
+    pfglEnable(GL_COLOR_MATERIAL);
+    pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    const GLuint centre = pfglGetParamNameEXT("center"), radius = pfglGetParamNameEXT("radius");
+    const GLenum impostors = pfglGetPrimitiveEXT("sphere_impostors");
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> pos(-1.6f, 1.6f), col(0.0f, 1.0f);
+    for (int frame = 0; frame < 2; ++frame) {
+      pfglBegin(GL_TRIANGLES);
+      pfglColor3f(0.3f, 0.3f, 0.9f);
+      pfglNormal3f(0, 0, 1);
+      pfglVertex3f(-2, -2, -0.5f);
+      pfglVertex3f(2, -2, 0.5f);
+      pfglVertex3f(0, 2, 0.0f);
+      pfglEnd();
+      pfglBegin(impostors);
+      for (int i = 0; i < 3000; ++i) {
+        if (i == 1500 && second_func) {
+          pfglEnd();
+          pfglDepthFunc(second_func);
+          pfglBegin(impostors);
+        }
+        pfglColor3f(col(rng), col(rng), col(rng));
+        pfglRastParamfEXT(radius, 0.05f + 0.15f * col(rng));
+        pfglRastParam3fEXT(centre, pos(rng), pos(rng), pos(rng));
+        pfglSequencePointEXT();
+      }
+      pfglEnd();
+      pfglFinish();
+      pfglDepthFunc(func);
+    }
+  });
 }
 
 void expectSameImages(const Frame& culled, const Frame& plain) {
   EXPECT_EQ(plain.stats.blocks_depth_culled, 0u);
   EXPECT_EQ(plain.stats.pixels_depth_culled, 0u);
-  EXPECT_EQ(culled.color, plain.color);
-  ASSERT_EQ(culled.depth.size(), plain.depth.size());
-  for (size_t i = 0; i < plain.depth.size(); ++i)
-    ASSERT_EQ(std::bit_cast<uint32_t>(culled.depth[i]), std::bit_cast<uint32_t>(plain.depth[i])) << "pixel " << i;
-  EXPECT_EQ(culled.stats.lanes_committed, plain.stats.lanes_committed);
+  pf::test::expectIdenticalFrames(culled, plain);
 }
 
 }  // namespace

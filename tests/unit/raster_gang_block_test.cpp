@@ -8,63 +8,34 @@
 
 #include <primflow/gl.h>
 
-#include <bit>
 #include <functional>
 #include <random>
 #include <vector>
 
-#include "api/src/context_state.h"
+#include "rendered_frame.h"
 
 namespace {
 
 constexpr int kSize = 128;
 
-struct Frame {
-  std::vector<unsigned char> color;
-  std::vector<float> depth;
-  pf::FrameStats stats;
-};
+using Frame = pf::test::RenderedFrame;
 
-// Draws `scene` into a fresh context (2 threads, `size` pixels square) with gang blocks and
-// coarse depth culling on or off; the scene clears.
+// Draws `scene` (which clears) into a fresh context (2 threads, `size` pixels square) with
+// gang blocks and coarse depth culling on or off.
 Frame draw(bool gangs, const std::function<void()>& scene, bool cull = true, int size = kSize) {
-  std::vector<unsigned char> px(static_cast<size_t>(size) * size * 4);
-  const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_THREADS, 2, 0};
-  PFcontext ctx = pfCreateContextAttribs(attribs);
-  EXPECT_TRUE(ctx && pfMakeCurrent(ctx, px.data(), GL_UNSIGNED_BYTE, size, size));
-  ctx->renderer.setGangBlocks(gangs);
-  ctx->renderer.setDepthCulling(cull);
-  scene();
-  pfglFinish();
-  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
-  Frame f;
-  f.color = px;
-  GLint w, h, bits;
-  void* data = nullptr;
-  EXPECT_TRUE(pfGetDepthBuffer(ctx, &w, &h, &bits, &data));
-  const float* d = static_cast<const float*>(data);
-  f.depth.assign(d, d + size * size);
-  f.stats = ctx->renderer.stats();
-  pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
-  pfDestroyContext(ctx);
-  return f;
-}
-
-void expectSameImage(const Frame& ganged, const Frame& alone) {
-  EXPECT_EQ(ganged.stats.lanes_committed, alone.stats.lanes_committed);
-  size_t colour_diff = 0, depth_diff = 0;
-  for (size_t i = 0; i < alone.color.size(); ++i) colour_diff += ganged.color[i] != alone.color[i];
-  for (size_t i = 0; i < alone.depth.size(); ++i)
-    depth_diff += std::bit_cast<uint32_t>(ganged.depth[i]) != std::bit_cast<uint32_t>(alone.depth[i]);
-  EXPECT_EQ(colour_diff, 0u);
-  EXPECT_EQ(depth_diff, 0u);
+  return pf::test::renderFrame(size, 2,
+                               [&](pf::Renderer& r) {
+                                 r.setGangBlocks(gangs);
+                                 r.setDepthCulling(cull);
+                               },
+                               scene);
 }
 
 void expectSame(const Frame& ganged, const Frame& alone) {
   EXPECT_EQ(alone.stats.blocks_ganged, 0u);
   EXPECT_GT(ganged.stats.blocks_ganged, 0u);
   EXPECT_LT(ganged.stats.blocks_run, alone.stats.blocks_run);
-  expectSameImage(ganged, alone);
+  pf::test::expectIdenticalFrames(ganged, alone);
 }
 
 void perspective(double distance = 4.0) {
@@ -191,7 +162,7 @@ TEST(GangBlocks, MembersWithEveryPixelCulledDoNotPileUp) {
   };
   const Frame none = draw(true, behind_clear, true, 64);
   EXPECT_GT(none.stats.pixels_depth_culled, 500u);
-  expectSameImage(none, draw(true, behind_clear, false, 64));
+  pf::test::expectIdenticalFrames(none, draw(true, behind_clear, false, 64));
   auto lattice = [] {
     pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     perspective();
@@ -209,5 +180,5 @@ TEST(GangBlocks, MembersWithEveryPixelCulledDoNotPileUp) {
   };
   const Frame front = draw(true, lattice, true, 64);
   EXPECT_GT(front.stats.pixels_depth_culled, 0u);
-  expectSameImage(front, draw(true, lattice, false, 64));
+  pf::test::expectIdenticalFrames(front, draw(true, lattice, false, 64));
 }
