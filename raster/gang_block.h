@@ -10,7 +10,6 @@
 // the image is the same to the bit as one instance at a time (raster_packed_lanes_test.cpp).
 #pragma once
 
-#include <algorithm>
 #include <cstdint>
 
 #include "raster/coarse_depth.h"
@@ -34,16 +33,11 @@ class GangBlock {
   bool accepts(const Instance& inst, const uint32_t* record, const Rect& rect) const;
   // Makes `inst` the member whose pixels add() adds (accepts() said yes, or the block is empty).
   void join(const Instance& inst, const uint32_t* record, const Rect& rect);
-  // Adds pixels [x0, x1) of row y of the last member, as many as fit; returns the first left
-  // out (x1 if all fit).
-  int addRow(int y, int x0, int x1) {
-    const int n = std::min(x1 - x0, kLanes - lanes_);
-    for (int i = 0; i < n; ++i) {
-      pixels_.x[lanes_ + i] = x0 + i;
-      pixels_.y[lanes_ + i] = y;
-    }
-    lanes_ += n;
-    return x0 + n;
+  // Adds pixel (x, y) of the last member (the block is not full).
+  void add(int x, int y) {
+    pixels_.x[lanes_] = x;
+    pixels_.y[lanes_] = y;
+    ++lanes_;
   }
   // Runs the block's lanes and empties it. `keep_last`: the last member goes on in the next
   // block (its pixels did not all fit). Depths written mark `coarse`'s blocks (the tile at

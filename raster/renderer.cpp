@@ -442,15 +442,20 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
       ++s.blocks_depth_culled;
       return true;
     };
-    // And per pixel, as packed lanes are filled (depthPassMask): the depth a pixel holds now is
-    // the one its lane will test (whatever runs before it has run, or -- a gang block's other
-    // members -- has none of its pixels), so a pixel where no depth of the bound can pass is
-    // left out.
+    // And per pixel (depthPassMask): the depth a pixel holds now is the one its lane will test
+    // (whatever runs before it has run, or -- a gang block's other members -- has none of its
+    // pixels), so a pixel where no depth of the bound can pass need not run. Bit i of the
+    // result: pixel (x + i, y), for n <= 64 pixels.
+    auto mayPass = [&](int x, int y, int n) {
+      return depthPassMask(state.depth_func, inst.z_min, inst.z_max, depth_ + static_cast<size_t>(y) * width_ + x, n);
+    };
+    // Whether some pixel of an aligned block's lanes in `mask` may pass (its rows read only as
+    // far as the framebuffer: a block at its right edge hangs past it).
     auto blockMayPass = [&](int bx, int by, uint64_t mask) {
-      for (uint64_t m = mask; m; m &= m - 1) {
-        const int i = __builtin_ctzll(m);
-        const float d = depth_[static_cast<size_t>(by + i / kBlockSize) * width_ + bx + i % kBlockSize];
-        if (!depthRangeFails(state.depth_func, inst.z_min, inst.z_max, d, d)) return true;
+      const int columns = std::min(kBlockSize, width_ - bx);
+      for (int row = 0; row < kBlockSize; ++row) {
+        const uint64_t lanes = (mask >> (row * kBlockSize)) & ((1u << kBlockSize) - 1u);
+        if (lanes && (mayPass(bx, by + row, columns) & lanes)) return true;
       }
       return false;
     };
@@ -474,54 +479,33 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
         for (int cbx = cbx0; cbx <= cbx1; ++cbx)
           if (!cull || !depthFails(cbx, cby)) live |= 1ull << ((cby - cby0) * CoarseDepth::kBlocksPerSide + cbx - cbx0);
       if (!live) continue;
-      if (gangs) {
-        s.gang.join(inst, record, rect);
-        for (int y = iy0; y < iy1; ++y) {
-          const uint64_t live_row = live >> ((y - y0) / kBlockSize - cby0) * CoarseDepth::kBlocksPerSide;
-          // Each run of live block columns of the row at once.
-          for (int cbx = cbx0; cbx <= cbx1; ++cbx) {
-            if (!((live_row >> (cbx - cbx0)) & 1u)) continue;
-            int end = cbx;
-            while (end < cbx1 && ((live_row >> (end + 1 - cbx0)) & 1u)) ++end;
-            int xa = std::max(ix0, x0 + cbx * kBlockSize);
-            const int xb = std::min(ix1, x0 + (end + 1) * kBlockSize);
-            if (cull) {
-              const uint64_t pass = depthPassMask(state.depth_func, inst.z_min, inst.z_max,
-                                                  depth_ + static_cast<size_t>(y) * width_ + xa, xb - xa);
-              // (Counted as they are added: popcount is a library call on baseline x86-64.)
-              int kept = 0;
-              for (uint64_t m = pass; m; m &= m - 1, ++kept) {
-                if (s.gang.full()) s.gang.run(s.executor, scene_, target, &s.coarse_depth, true);
-                const int x = xa + __builtin_ctzll(m);
-                s.gang.addRow(y, x, x + 1);
-              }
-              s.pixels_depth_culled += static_cast<uint64_t>(xb - xa - kept);
-            } else {
-              while (xa < xb) {
-                if (s.gang.full()) s.gang.run(s.executor, scene_, target, depth_ ? &s.coarse_depth : nullptr, true);
-                xa = s.gang.addRow(y, xa, xb);
-              }
-            }
-            cbx = end;
-          }
-        }
-        continue;  // its depth writes mark the coarse depth when its block runs
-      }
-      PackedLanes& lanes = s.packed_lanes;
-      int n = 0;
-      for (int y = iy0; y < iy1; ++y) {
+      // Row y's pixels to run, bit x - ix0: those in live blocks that may pass the depth test.
+      auto rowPixels = [&](int y) {
         const uint64_t live_row = live >> ((y - y0) / kBlockSize - cby0) * CoarseDepth::kBlocksPerSide;
-        // The row's pixels in live blocks (bit x - ix0), less those the depth test would fail.
         uint64_t row = 0;
         for (int x = ix0; x < ix1; ++x)
           row |= static_cast<uint64_t>((live_row >> ((x - x0) / kBlockSize - cbx0)) & 1u) << (x - ix0);
         if (cull) {
-          const uint64_t pass = depthPassMask(state.depth_func, inst.z_min, inst.z_max,
-                                              depth_ + static_cast<size_t>(y) * width_ + ix0, ix1 - ix0);
+          const uint64_t pass = mayPass(ix0, y, ix1 - ix0);
+          // (Counted bit by bit: popcount is a library call on baseline x86-64.)
           for (uint64_t m = row & ~pass; m; m &= m - 1) ++s.pixels_depth_culled;
           row &= pass;
         }
-        for (uint64_t m = row; m; m &= m - 1) {
+        return row;
+      };
+      if (gangs) {
+        s.gang.join(inst, record, rect);
+        for (int y = iy0; y < iy1; ++y)
+          for (uint64_t m = rowPixels(y); m; m &= m - 1) {
+            if (s.gang.full()) s.gang.run(s.executor, scene_, target, depth_ ? &s.coarse_depth : nullptr, true);
+            s.gang.add(ix0 + __builtin_ctzll(m), y);
+          }
+        continue;  // its depth writes mark the coarse depth when its block runs
+      }
+      PackedLanes& lanes = s.packed_lanes;
+      int n = 0;
+      for (int y = iy0; y < iy1; ++y)
+        for (uint64_t m = rowPixels(y); m; m &= m - 1) {
           lanes.x[n] = ix0 + __builtin_ctzll(m);
           lanes.y[n] = y;
           if (++n == kLanes) {
@@ -529,7 +513,6 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
             n = 0;
           }
         }
-      }
       if (n > 0)
         s.executor.runPackedBlock(*inst.prim, record, layout, state, inst.shade_id, lanes, (1ull << n) - 1, target,
                                   shared);

@@ -159,8 +159,8 @@ using Frame = pf::test::RenderedFrame;
 // `func` (switched to `second_func`, if it is not 0, half-way through each frame's spheres),
 // `clear_z` and glDepthRange(near, far).
 Frame drawCloud(bool cull, GLenum func, double clear_z, double near, double far, bool depth_test = true,
-                GLenum second_func = 0) {
-  return pf::test::renderFrame(kSize, 2, [&](pf::Renderer& r) { r.setDepthCulling(cull); }, [&] {
+                GLenum second_func = 0, int size = kSize) {
+  return pf::test::renderFrame(size, 2, [&](pf::Renderer& r) { r.setDepthCulling(cull); }, [&] {
     pfglMatrixMode(GL_PROJECTION);
     pfglFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 12.0);
     pfglMatrixMode(GL_MODELVIEW);
@@ -239,6 +239,15 @@ TEST(CoarseDepth, BlockRangesFollowWhatWasDrawnWhenTheDepthFunctionTurns) {
   // cull the later spheres behind them.
   const Frame culled = drawCloud(true, GL_LESS, 1.0, 0.0, 1.0, true, GL_GREATER);
   const Frame plain = drawCloud(false, GL_LESS, 1.0, 0.0, 1.0, true, GL_GREATER);
+  expectSameImages(culled, plain);
+  EXPECT_GT(culled.stats.blocks_depth_culled, 0u);
+}
+
+TEST(CoarseDepth, AFramebufferCutMidBlockIsCulledExactly) {
+  // 157 pixels: the right and top tiles end inside a block, whose rows the per-pixel tests must
+  // read only as far as the framebuffer (ASan watches the last row).
+  const Frame culled = drawCloud(true, GL_LESS, 1.0, 0.0, 1.0, true, 0, 157);
+  const Frame plain = drawCloud(false, GL_LESS, 1.0, 0.0, 1.0, true, 0, 157);
   expectSameImages(culled, plain);
   EXPECT_GT(culled.stats.blocks_depth_culled, 0u);
 }
