@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "compiler/native/native_cache.h"
 #include "compiler/scalar_ops.h"
 #include "raster/lane_kernels.h"
 #include "raster/setup_executor.h"
@@ -63,6 +64,7 @@ void PixelExecutor::startFrame() {
   for (RegionMemo& m : region_memos_) m.program = nullptr;  // a program may be freed, its address reused
   decoded_live_ = 0;
   decoded_last_[0] = decoded_last_[1] = 0;
+  native_.startFrame();
   if (shared_) shared_->startFrame();  // the shared interpolators' programs, decoded by it
 }
 
@@ -83,6 +85,8 @@ const DecodedProgram& PixelExecutor::decoded(const PixelProgram& program, const 
 }
 
 bool PixelExecutor::blockRejectionWanted() { return std::getenv("PF_NO_BLOCK_REJECTION") == nullptr; }
+
+bool PixelExecutor::nativeWanted() { return nativeCodeWantedByEnvironment(); }
 
 void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* record,
                              const ChannelLayout& layout, const RasterState& state,
@@ -157,8 +161,15 @@ void PixelExecutor::runAndCommit(const CompiledPrimitive& prim, const PixelProgr
   const int nch = layout.count;
   ++counters.blocks_run;
   counters.lanes_started += static_cast<uint64_t>(__builtin_popcountll(mask));
-  const uint64_t alive = execute(prim, program, record, layout, state, bx, by, packed, mask, target, shared_records,
-                                 nullptr, wide_record);
+  // Native code, where there is some for the program: the block whole, commit included.
+  NativeBlockFunction native;
+  if (use_native)
+    native = native_.find(prim, program, layout, state, target,
+                          !packed ? NativeBlockShape::Aligned : wide_record ? NativeBlockShape::Gang : NativeBlockShape::Packed);
+  const uint64_t alive = native ? native_.run(native, prim, record, layout, state, shade_id, bx, by, packed, mask, target,
+                                              shared_records, counters.iteration_cap_lanes, counters.cap_primitive)
+                                : execute(prim, program, record, layout, state, bx, by, packed, mask, target,
+                                          shared_records, nullptr, wide_record);
 
   // Commit: the lanes still alive are this instance's pixels.
   counters.lanes_committed += static_cast<uint64_t>(__builtin_popcountll(alive));
@@ -177,6 +188,10 @@ void PixelExecutor::runAndCommit(const CompiledPrimitive& prim, const PixelProgr
     }
   }
   if (alive == ~0ull) ++counters.blocks_covered;
+  if (native) {
+    ++counters.blocks_native;
+    return;
+  }
   // Per-pixel lighting's surface: P (divided by w) and N. (An instance that does not set N --
   // a callee of one that does -- has no surface: 0.)
   // (P only where the lighting reads it: ChannelLayout::surface_eye.)

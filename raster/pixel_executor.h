@@ -16,6 +16,7 @@
 #include "raster/field/gradient_evaluator.h"
 #include "raster/field/ray_caster.h"
 #include "raster/limits.h"
+#include "raster/native_blocks.h"
 #include "raster/raster_state.h"
 
 namespace pf {
@@ -57,7 +58,8 @@ struct BlockCounters {
   uint64_t lanes_started = 0;
   uint64_t lanes_committed = 0;
   uint64_t blocks_covered = 0;  // blocks whose every lane committed (the instance covers them whole)
-  uint64_t instructions = 0;  // executed, once per block (each covers every lane)
+  uint64_t blocks_native = 0;  // run by native code (compiler/native/; in blocks_run)
+  uint64_t instructions = 0;  // executed by the interpreter, once per block (each covers every lane)
   uint64_t iteration_cap_lanes = 0;  // lanes stopped by the iteration cap
   const CompiledPrimitive* cap_primitive = nullptr;  // the last primitive that hit it
   field::FieldCounters field;          // implicit surfaces: work of field_hit()
@@ -111,6 +113,10 @@ class PixelExecutor {
   // PF_NO_BLOCK_REJECTION in the environment turns it off for the executors made afterwards.
   bool use_block_rejection = blockRejectionWanted();
   static bool blockRejectionWanted();
+  // Run pixel programs as native code where it can (raster/native_blocks.h), else the
+  // interpreter; on unless the environment says PF_JIT=0. Images are identical either way.
+  bool use_native = nativeWanted();
+  static bool nativeWanted();
 
  private:
   // Runs a program over the block; returns the lanes alive at its end. `p_in`: P's 4 components
@@ -148,6 +154,7 @@ class PixelExecutor {
   size_t decoded_live_ = 0;
   size_t decoded_last_[2] = {0, 0};  // the last found, per decoding (scalar, wide uniforms)
 
+  NativeBlocks native_;
   field::FieldRayCaster caster_;
   BlockRejection rejection_;
   // The verdicts of a tile's regions (regionVerdict) and what each was computed for.

@@ -571,6 +571,7 @@ void Renderer::flush() {
     stats_.blocks_covered += s->executor.counters.blocks_covered;
     stats_.blocks_accepted += s->executor.counters.blocks_accepted;
     stats_.blocks_packed += s->executor.counters.blocks_packed;
+    stats_.blocks_native += s->executor.counters.blocks_native;
     stats_.blocks_ganged += s->executor.counters.blocks_ganged;
     stats_.blocks_depth_culled += s->blocks_depth_culled;
     stats_.pixels_depth_culled += s->pixels_depth_culled;

@@ -36,6 +36,7 @@ struct FrameStats {
   uint64_t lanes_committed = 0;
   uint64_t blocks_covered = 0;        // blocks run whose every lane committed
   uint64_t blocks_accepted = 0;       // blocks run without coverage tests (PixelProgram::covered)
+  uint64_t blocks_native = 0;         // blocks run by native code (compiler/native/), not the interpreter
   uint64_t blocks_packed = 0;         // blocks run on packed lanes (a small bound's pixels)
   uint64_t blocks_ganged = 0;         // packed blocks holding several instances' pixels (raster/gang_block.h)
   uint64_t blocks_depth_culled = 0;   // (instance, block) pairs skipped by coarse depth culling
@@ -45,7 +46,7 @@ struct FrameStats {
   uint64_t gbuffer_bytes = 0;         // G-buffer the tiles run used: per tile, the frame's layout's
                                       // slots and the shading-state ids, 64x64 x 4 bytes each
   uint64_t setup_instructions = 0;    // executed by setup programs
-  uint64_t pixel_instructions = 0;    // executed by pixel programs, once per block
+  uint64_t pixel_instructions = 0;    // executed by interpreted pixel programs, once per block
   uint64_t iteration_cap_pixels = 0;  // pixels stopped by the iteration cap
   uint64_t iteration_cap_instances = 0;  // instances stopped by it in setup
   field::FieldCounters field;         // implicit surfaces (field_hit): rays, evaluations, culling

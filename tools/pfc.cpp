@@ -1,5 +1,7 @@
 // pfc: the primitive-language compiler on the command line.
-//   pfc FILE.pfl [--emit=ast|ir|setup|pixel|tape] [--field NAME --params V...]
+//   pfc FILE.pfl [--emit=ast|ir|setup|pixel|native|tape] [--field NAME --params V...]
+//   --emit=native: each primitive's pixel program as native code (LLVM IR and assembly), for
+//   the block shape, instruction set and channels --block, --isa and --channels give.
 // Diagnostics go to stderr as file:line:col: error: message, with the line and a caret.
 // Field units are compiled to tapes too (docs/language.md, "Fields"): those without parameters
 // always, one with parameters when --field names it and --params gives their values.
@@ -14,6 +16,7 @@
 #include "compiler/builtin_primitives.h"
 #include "compiler/compiler.h"
 #include "compiler/field/field_unit.h"
+#include "compiler/native/native_cache.h"
 #include "compiler/parser.h"
 
 int main(int argc, char** argv) {
@@ -23,8 +26,17 @@ int main(int argc, char** argv) {
   app.add_option("file", file, "source file (.pfl)")->required();
   bool explain = false;
   app.add_option("--emit", emit,
-                 "print a stage: ast, ir, setup (per-instance program), pixel (per-block program), tape (fields)")
-      ->check(CLI::IsMember({"none", "ast", "ir", "setup", "pixel", "tape"}));
+                 "print a stage: ast, ir, setup (per-instance program), pixel (per-block program), native (the pixel "
+                 "program as machine code), tape (fields)")
+      ->check(CLI::IsMember({"none", "ast", "ir", "setup", "pixel", "native", "tape"}));
+  std::string block = "aligned", isa = "avx512";
+  int channels = 4;
+  app.add_option("--block", block, "--emit=native: the block shape (aligned, packed, gang)")
+      ->check(CLI::IsMember({"aligned", "packed", "gang"}));
+  app.add_option("--isa", isa, "--emit=native: the instruction set (sse2, avx2, avx512)")
+      ->check(CLI::IsMember({"sse2", "avx2", "avx512"}));
+  app.add_option("--channels", channels, "--emit=native: perspective-correct channels drawn (e.g. 4: a colour)")
+      ->check(CLI::Range(0, 64));
   std::string field_name;
   std::vector<float> params;
   app.add_option("--field", field_name, "the field unit --params are for");
@@ -59,6 +71,30 @@ int main(int argc, char** argv) {
   std::cerr << log.format();
   if (!ok) return 1;
   std::cout << listing;
+  if (emit == "native") {
+    // The variant an instance with `channels` perspective-correct channels, a depth buffer and
+    // GL_LESS would draw with.
+    pf::NativePixelVariant v;
+    v.isa = isa == "sse2" ? pf::NativeIsa::Sse2 : isa == "avx2" ? pf::NativeIsa::Avx2 : pf::NativeIsa::Avx512;
+    v.shape = block == "packed" ? pf::NativeBlockShape::Packed
+              : block == "gang" ? pf::NativeBlockShape::Gang : pf::NativeBlockShape::Aligned;
+    v.depth_compare = pf::NativeDepthCompare::Less;
+    v.has_depth_buffer = v.depth_commit = true;
+    v.channels = channels;
+    v.kind_end[0] = v.kind_end[1] = v.kind_end[2] = channels;
+    v.kind_begin[1] = v.kind_begin[2] = channels;
+    for (const auto& prim : module.primitives) {
+      v.writes_normal = prim->writes_normal;
+      v.named_bound.assign(prim->named_interpolators.size(), false);
+      std::string text, error;
+      if (!pf::nativePixelListing(prim->pixel, v, text, error)) {
+        std::cout << "primitive " << prim->name << ": no native code: " << error << "\n";
+        continue;
+      }
+      std::cout << "primitive " << prim->name << ": native pixel program (" << block << " blocks, " << isa << ")\n"
+                << text;
+    }
+  }
   // The field units, as tapes: what a point-dependent branch or an unsupported operation stops.
   pf::DiagnosticLog units_log;
   const pf::Program program = pf::parse(units_log.addSource(file, ss.str()), units_log);

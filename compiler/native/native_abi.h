@@ -1,0 +1,93 @@
+// The calling convention between native pixel programs (compiler/native/pixel_codegen.h) and
+// the rasterizer that runs them: plain data only, no LLVM. A compiled pixel program is one
+// function over one 8x8 pixel block -- its X/Y/Z set-up, the program, the depth test and write,
+// and the commit of the surviving lanes to the tile's G-buffer -- specialised on what is known
+// when the block is drawn (NativePixelVariant); what changes per block arrives in
+// NativeBlockArgs.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace pf {
+
+struct PixelProgram;
+
+// Lanes of a block (8x8) and of the tile's G-buffer planes (64x64): raster/limits.h's values,
+// repeated here because the compiler does not include the rasterizer (checked there).
+constexpr int kNativeBlockSize = 8;
+constexpr int kNativeLanes = 64;
+constexpr int kNativeTileSize = 64;
+
+// The instruction set native code is generated for, and so its vector width (lanes per
+// vector register of 32-bit values): the same three sets as the interpreter's kernels.
+enum class NativeIsa : uint8_t { Sse2, Avx2, Avx512 };
+constexpr int nativeVectorWidth(NativeIsa isa) { return isa == NativeIsa::Avx512 ? 16 : isa == NativeIsa::Avx2 ? 8 : 4; }
+const char* nativeIsaName(NativeIsa isa);
+
+// How a block's lanes map to pixels (raster/pixel_executor.h): an aligned 8x8 block at (bx, by);
+// packed lanes, each its own pixel (lane_x, lane_y); or a packed gang block, whose record holds
+// kNativeLanes words per slot, one per lane's instance.
+enum class NativeBlockShape : uint8_t { Aligned, Packed, Gang };
+
+// GL's depth function as the program's ztest() applies it (Always when the depth test is off).
+enum class NativeDepthCompare : uint8_t { Never, Less, Equal, LessEqual, Greater, NotEqual, GreaterEqual, Always };
+
+// What a native pixel program is specialised on (part of its cache key with the program's
+// content): the block's shape, the depth buffer's use, and the instance's channel layout.
+struct NativePixelVariant {
+  NativeIsa isa = NativeIsa::Sse2;
+  NativeBlockShape shape = NativeBlockShape::Aligned;
+  NativeDepthCompare depth_compare = NativeDepthCompare::Always;
+  bool has_depth_buffer = false;  // else Z starts at 0 and nothing is written
+  bool depth_commit = false;      // ZCommit writes: a depth buffer, the depth test on, depth writes on
+  // The channels (raster's ChannelLayout): how many, and each interpolation kind's range.
+  int channels = 0;
+  int kind_begin[3] = {0, 0, 0};
+  int kind_end[3] = {0, 0, 0};
+  // Per-pixel lighting's surface (P's 3 slots when surface_eye, then N's 3) for the lanes that
+  // commit; writes_normal: the primitive sets N (else the slots get zeros).
+  bool commit_surface = false;
+  bool surface_eye = false;
+  bool writes_normal = false;
+  // The layout's shared interpolators, in order: their pixel program, first channel and
+  // record offset among the instance's shared records; `named_index`: the entry of the
+  // primitive's named_interpolators that names it -- the primitive fills those channels itself
+  // (a `name:` label) and the interpolator does not run -- or -1.
+  struct Shared {
+    const PixelProgram* pixel = nullptr;
+    int first = 0;
+    uint32_t record_offset = 0;
+    int named_index = -1;
+  };
+  std::vector<Shared> shared;
+  // Per entry of the primitive's named_interpolators: whether the layout binds it.
+  std::vector<bool> named_bound;
+};
+
+// The per-block arguments of a native pixel program.
+struct NativeBlockArgs {
+  const uint32_t* record = nullptr;          // the instance's uniform record (a gang's: wide)
+  const uint32_t* shared_records = nullptr;  // the layout's shared interpolators' records
+  const int32_t* lane_x = nullptr;           // packed / gang: each lane's pixel
+  const int32_t* lane_y = nullptr;
+  float* depth = nullptr;  // the depth buffer (whole framebuffer), when has_depth_buffer
+  const float* state_values = nullptr;  // compiler/isa.h's StateValue order (LoadState)
+  uint32_t* shade_ids = nullptr;        // the tile's G-buffer: shading state per pixel
+  float* const* planes = nullptr;       // per channel, its G-buffer plane (64x64 floats)
+  float* const* surface_planes = nullptr;  // the 6 surface planes, when commit_surface
+  uint64_t mask = 0;         // the lanes that start (bit i: lane i)
+  uint64_t cap_lanes = 0;    // out: lanes the iteration cap stopped
+  int32_t cap_source = -1;   // out: who hit it: -1 the primitive, k the layout's shared interpolator k
+  int32_t bx = 0, by = 0;    // an aligned block's lower-left pixel
+  int32_t depth_stride = 0;  // floats per row of the depth buffer
+  int32_t tile_x0 = 0, tile_y0 = 0;
+  uint32_t shade_id = 0;
+  uint32_t iteration_cap = 0;
+};
+
+// A compiled pixel program: returns the lanes that committed (alive at the end).
+using NativePixelFunction = uint64_t (*)(NativeBlockArgs* args);
+
+}  // namespace pf

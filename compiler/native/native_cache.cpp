@@ -1,0 +1,205 @@
+// The process-wide cache of native programs (see native_cache.h).
+#include "compiler/native/native_cache.h"
+
+#include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <mutex>
+#include <unordered_map>
+
+#include <llvm/IR/LLVMContext.h>
+#include <llvm/IR/Module.h>
+#include <llvm/IR/Verifier.h>
+#include <llvm/Support/raw_ostream.h>
+
+#include "compiler/native/jit_engine.h"
+#include "compiler/native/pixel_codegen.h"
+
+namespace pf {
+
+bool nativeCodeWantedByEnvironment() {
+  const char* e = std::getenv("PF_JIT");
+  return !(e && std::strcmp(e, "0") == 0);
+}
+
+namespace {
+
+// The key: every byte that can change the generated code. Written into a buffer the caller
+// keeps, so that finding a function compiled before allocates nothing (a frame's draws look
+// their programs up again each frame: raster/native_blocks.h).
+class KeyWriter {
+ public:
+  explicit KeyWriter(std::string& key) : key_(key) { key_.clear(); }
+  template <class T>
+  void put(const T& v) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    const char* p = reinterpret_cast<const char*>(&v);
+    key_.append(p, sizeof v);
+  }
+  void program(const PixelProgram& p) {
+    put(p.code.size());
+    for (const Instr& in : p.code) {
+      put(in.op);
+      put(in.imm);
+      put(in.dst);
+      put(in.a);
+      put(in.b);
+      put(in.c);
+      put(in.d);
+      put(in.masked_write);
+    }
+    put(p.constants.size());
+    key_.append(reinterpret_cast<const char*>(p.constants.data()), p.constants.size() * sizeof(uint32_t));
+    put(p.num_regs);
+    put(p.num_interp_regs);
+    put(p.num_uniform_slots);
+    put(p.num_interp_uniform_slots);
+    put(p.reads_surface);
+  }
+  void variant(const NativePixelVariant& v) {
+    put(v.isa);
+    put(v.shape);
+    put(v.depth_compare);
+    put(v.has_depth_buffer);
+    put(v.depth_commit);
+    put(v.channels);
+    put(v.kind_begin);
+    put(v.kind_end);
+    put(v.commit_surface);
+    put(v.surface_eye);
+    put(v.writes_normal);
+    put(v.shared.size());
+    for (const NativePixelVariant::Shared& s : v.shared) {
+      put(s.first);
+      put(s.record_offset);
+      put(s.named_index);
+      if (s.named_index < 0 && s.pixel) program(*s.pixel);
+    }
+    put(v.named_bound.size());
+    for (bool b : v.named_bound) put(b);
+  }
+
+ private:
+  std::string& key_;
+};
+
+enum class Built { Yes, Unsupported, Unavailable, Broken };
+
+// A module holding the pixel function for `program`, named `name`, with its target set.
+Built buildModule(const PixelProgram& program, const NativePixelVariant& variant, const std::string& name,
+                  llvm::LLVMContext& context, std::unique_ptr<llvm::Module>& module, std::string& error) {
+  JitEngine* engine = JitEngine::instance();
+  if (!engine) {
+    error = "native code is unavailable";
+    return Built::Unavailable;
+  }
+  module = std::make_unique<llvm::Module>("primflow." + name, context);
+  llvm::Function* fn = buildPixelFunction(*module, name, program, variant, error);
+  if (!fn) return Built::Unsupported;
+  engine->setTarget(*fn, variant.isa);
+  std::string problems;
+  llvm::raw_string_ostream os(problems);
+  if (llvm::verifyModule(*module, &os)) {
+    error = "generated code does not verify: " + os.str();
+    return Built::Broken;
+  }
+  return Built::Yes;
+}
+
+}  // namespace
+
+struct NativeProgramCache::Impl {
+  struct Entry {
+    bool ready = false;
+    NativePixelFunction function = nullptr;
+  };
+  mutable std::mutex mutex;
+  std::condition_variable compiled;
+  std::unordered_map<std::string, std::shared_ptr<Entry>> entries;
+  NativeCacheStats stats;
+  uint64_t serial = 0;  // names the functions: pf_pixel_<serial>
+};
+
+NativeProgramCache::NativeProgramCache() : impl_(new Impl) {}
+NativeProgramCache::~NativeProgramCache() { delete impl_; }
+
+NativeProgramCache& NativeProgramCache::instance() {
+  static NativeProgramCache* cache = new NativeProgramCache;  // never destroyed (jit_engine.h)
+  return *cache;
+}
+
+NativeCacheStats NativeProgramCache::stats() const {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  return impl_->stats;
+}
+
+NativePixelFunction NativeProgramCache::pixelFunction(const PixelProgram& program, const NativePixelVariant& variant) {
+  thread_local std::string key;
+  KeyWriter w(key);
+  w.program(program);
+  w.variant(variant);
+  std::shared_ptr<Impl::Entry> entry;
+  uint64_t serial = 0;
+  {
+    std::unique_lock<std::mutex> lock(impl_->mutex);
+    auto it = impl_->entries.find(key);
+    if (it != impl_->entries.end()) {
+      entry = it->second;
+      impl_->compiled.wait(lock, [&] { return entry->ready; });
+      return entry->function;
+    }
+    entry = std::make_shared<Impl::Entry>();
+    impl_->entries.emplace(key, entry);
+    serial = impl_->serial++;
+  }
+  // This thread compiles it.
+  const auto start = std::chrono::steady_clock::now();
+  NativePixelFunction function = nullptr;
+  bool refused = false, failed = false;
+  std::string error;
+  {
+    auto context = std::make_unique<llvm::LLVMContext>();
+    std::unique_ptr<llvm::Module> module;
+    const std::string name = "pf_pixel_" + std::to_string(serial);
+    std::vector<void*> addresses;
+    switch (buildModule(program, variant, name, *context, module, error)) {
+      case Built::Yes:
+        if (JitEngine::instance()->add(std::move(module), std::move(context), {name}, addresses, error))
+          function = reinterpret_cast<NativePixelFunction>(addresses[0]);
+        else
+          failed = true;
+        break;
+      case Built::Unsupported: refused = true; break;  // (a field search, here or in an interpolator)
+      case Built::Unavailable: break;                   // (said once by JitEngine)
+      case Built::Broken: failed = true; break;
+    }
+  }
+  if (failed) std::fprintf(stderr, "primflow: native code for a pixel program failed (%s): it runs on the interpreter\n",
+                           error.c_str());
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  {
+    std::lock_guard<std::mutex> lock(impl_->mutex);
+    entry->function = function;
+    entry->ready = true;
+    if (function) ++impl_->stats.compiled;
+    if (refused) ++impl_->stats.refused;
+    if (failed) ++impl_->stats.failed;
+    impl_->stats.milliseconds += ms;
+  }
+  impl_->compiled.notify_all();
+  return function;
+}
+
+bool nativePixelListing(const PixelProgram& program, const NativePixelVariant& variant, std::string& listing,
+                        std::string& error) {
+  llvm::LLVMContext context;
+  std::unique_ptr<llvm::Module> module;
+  if (buildModule(program, variant, "pf_pixel", context, module, error) != Built::Yes) return false;
+  listing = JitEngine::instance()->listing(*module);
+  return true;
+}
+
+}  // namespace pf

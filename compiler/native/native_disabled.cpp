@@ -1,0 +1,33 @@
+// primflow built without LLVM (PRIMFLOW_JIT=OFF): the native-code cache exists and answers
+// that there is none, so every program runs on the interpreter.
+#include <cstdio>
+
+#include "compiler/native/native_cache.h"
+
+namespace pf {
+
+bool nativeCodeWantedByEnvironment() { return false; }
+
+const char* nativeIsaName(NativeIsa isa) {
+  return isa == NativeIsa::Avx512 ? "avx512" : isa == NativeIsa::Avx2 ? "avx2" : "sse2";
+}
+
+struct NativeProgramCache::Impl {};
+NativeProgramCache::NativeProgramCache() : impl_(nullptr) {}
+NativeProgramCache::~NativeProgramCache() = default;
+
+NativeProgramCache& NativeProgramCache::instance() {
+  static NativeProgramCache* cache = new NativeProgramCache;
+  return *cache;
+}
+
+NativePixelFunction NativeProgramCache::pixelFunction(const PixelProgram&, const NativePixelVariant&) { return nullptr; }
+
+NativeCacheStats NativeProgramCache::stats() const { return {}; }
+
+bool nativePixelListing(const PixelProgram&, const NativePixelVariant&, std::string&, std::string& error) {
+  error = "primflow was built without LLVM (PRIMFLOW_JIT=OFF)";
+  return false;
+}
+
+}  // namespace pf
