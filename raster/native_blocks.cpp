@@ -22,21 +22,6 @@ NativeIsa nativeIsaOf(LaneIsa isa) {
   return NativeIsa::Sse2;
 }
 
-NativeDepthCompare depthCompareOf(const RasterState& s) {
-  if (!s.depth_test) return NativeDepthCompare::Always;
-  switch (s.depth_func) {
-    case DepthFunc::Never: return NativeDepthCompare::Never;
-    case DepthFunc::Less: return NativeDepthCompare::Less;
-    case DepthFunc::Equal: return NativeDepthCompare::Equal;
-    case DepthFunc::LessEqual: return NativeDepthCompare::LessEqual;
-    case DepthFunc::Greater: return NativeDepthCompare::Greater;
-    case DepthFunc::NotEqual: return NativeDepthCompare::NotEqual;
-    case DepthFunc::GreaterEqual: return NativeDepthCompare::GreaterEqual;
-    case DepthFunc::Always: break;
-  }
-  return NativeDepthCompare::Always;
-}
-
 bool readsState(const PixelProgram& p) {
   for (const Instr& in : p.code)
     if (in.op == Op::LoadState) return true;
@@ -51,33 +36,29 @@ void NativeBlocks::startFrame() {
   values_valid_ = false;
 }
 
-NativeBlockFunction NativeBlocks::find(const CompiledPrimitive& prim, const PixelProgram& program,
-                                       const ChannelLayout& layout, const RasterState& state, const BlockTarget& target,
-                                       NativeBlockShape shape) {
-  const NativeDepthCompare compare = depthCompareOf(state);
-  const bool has_depth = target.depth != nullptr;
-  const bool depth_commit = has_depth && state.depth_test && state.depth_write;
-  const uint8_t depth = static_cast<uint8_t>(static_cast<unsigned>(compare) | (has_depth ? 16u : 0u) | (depth_commit ? 32u : 0u));
-  const NativeIsa isa = nativeIsaOf(laneIsa());
-  auto matches = [&](const Found& f) {
-    return f.program == &program && f.code == program.code.data() && f.code_size == program.code.size() &&
-           f.layout == &layout && f.depth == depth && f.shape == shape && f.isa == isa;
-  };
-  if (last_ < found_.size() && matches(found_[last_])) return found_[last_].fn;
-  for (size_t i = 0; i < found_.size(); ++i)
-    if (matches(found_[i])) {
-      last_ = i;
-      return found_[i].fn;
-    }
+uint32_t NativeBlocks::depthPass(const RasterState& s) {
+  constexpr uint32_t kAll = kDepthPassLess | kDepthPassEqual | kDepthPassGreater | kDepthPassUnordered;
+  if (!s.depth_test) return kAll;
+  switch (s.depth_func) {
+    case DepthFunc::Never: return 0;
+    case DepthFunc::Less: return kDepthPassLess;
+    case DepthFunc::Equal: return kDepthPassEqual;
+    case DepthFunc::LessEqual: return kDepthPassLess | kDepthPassEqual;
+    case DepthFunc::Greater: return kDepthPassGreater;
+    case DepthFunc::NotEqual: return kDepthPassLess | kDepthPassGreater | kDepthPassUnordered;
+    case DepthFunc::GreaterEqual: return kDepthPassGreater | kDepthPassEqual;
+    case DepthFunc::Always: break;
+  }
+  return kAll;
+}
 
+const NativePixelVariant& NativeBlocks::variantFor(const CompiledPrimitive& prim, const ChannelLayout& layout, bool gang,
+                                                   NativeIsa isa) {
   NativePixelVariant& v = variant_;
   v.shared.clear();
   v.named_bound.clear();
   v.isa = isa;
-  v.shape = shape;
-  v.depth_compare = compare;
-  v.has_depth_buffer = has_depth;
-  v.depth_commit = depth_commit;
+  v.gang = gang;
   v.channels = layout.count;
   for (int k = 0; k < kInterpKindCount; ++k) {
     v.kind_begin[k] = layout.kind_begin[k];
@@ -99,12 +80,41 @@ NativeBlockFunction NativeBlocks::find(const CompiledPrimitive& prim, const Pixe
     v.shared.push_back(n);
   }
   for (const std::string& name : prim.named_interpolators) v.named_bound.push_back(layout.bindsInterpolator(name));
-  NativeBlockFunction fn;
-  fn.fn = NativeProgramCache::instance().pixelFunction(program, v);
-  fn.reads_state = readsState(program);
-  found_.push_back(Found{&program, program.code.data(), program.code.size(), &layout, depth, shape, isa, fn});
-  last_ = found_.size() - 1;
-  return fn;
+  return v;
+}
+
+NativeBlockFunction NativeBlocks::find(const CompiledPrimitive& prim, const PixelProgram& program,
+                                       const ChannelLayout& layout, bool gang) {
+  const NativeIsa isa = nativeIsaOf(laneIsa());
+  auto matches = [&](const Found& f) {
+    return f.program == &program && f.code == program.code.data() && f.code_size == program.code.size() &&
+           f.layout == &layout && f.gang == gang && f.isa == isa;
+  };
+  Found* found = nullptr;
+  if (last_ < found_.size() && matches(found_[last_])) {
+    found = &found_[last_];
+  } else {
+    for (size_t i = 0; i < found_.size() && !found; ++i)
+      if (matches(found_[i])) {
+        last_ = i;
+        found = &found_[i];
+      }
+    if (!found) {
+      NativeProgramCache::Entry* e = NativeProgramCache::instance().entry(program, variantFor(prim, layout, gang, isa));
+      found_.push_back(Found{&program, program.code.data(), program.code.size(), &layout, gang, isa, e, {}, false});
+      last_ = found_.size() - 1;
+      found = &found_.back();
+      found->fn.reads_state = readsState(program);
+    }
+  }
+  if (found->fn.fn || found->never) return found->fn;
+  // Not compiled yet: this block counts towards the threshold (and may compile it).
+  NativeProgramCache& cache = NativeProgramCache::instance();
+  NativePixelFunction f = found->entry->function();
+  if (!f && cache.drawn(found->entry, 1)) f = cache.compile(found->entry, program, variantFor(prim, layout, gang, isa));
+  found->fn.fn = f;
+  found->never = !f && found->entry->settled();
+  return found->fn;
 }
 
 uint64_t NativeBlocks::run(const NativeBlockFunction& fn, const CompiledPrimitive& prim, const uint32_t* record, const ChannelLayout& layout, const RasterState& state,
@@ -141,6 +151,8 @@ uint64_t NativeBlocks::run(const NativeBlockFunction& fn, const CompiledPrimitiv
   a.tile_y0 = target.tile_y0;
   a.shade_id = shade_id;
   a.iteration_cap = state.iteration_cap;
+  a.depth_pass = depthPass(state);
+  a.depth_write = target.depth && state.depth_test && state.depth_write ? 1u : 0u;
   const uint64_t alive = fn.fn(&a);
   if (a.cap_lanes) {
     cap_lanes += a.cap_lanes;

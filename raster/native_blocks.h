@@ -10,6 +10,7 @@
 
 #include "compiler/compiler.h"
 #include "compiler/native/native_abi.h"
+#include "compiler/native/native_cache.h"
 #include "raster/raster_state.h"
 
 namespace pf {
@@ -27,10 +28,12 @@ struct NativeBlockFunction {
 class NativeBlocks {
  public:
   // The function that runs `program` (prim's pixel program or its covered variant) for an
-  // instance drawn with `layout` and `state` into `target`, on blocks of `shape`; null when the
-  // interpreter must (native code is unavailable, or does not run this program).
+  // instance drawn with `layout`, for one block; null when the interpreter must (native code
+  // is unavailable or does not run this program, or the program has not yet run enough blocks
+  // to be compiled: native_cache.h). `gang`: for gang blocks (a record of kLanes words per
+  // slot).
   NativeBlockFunction find(const CompiledPrimitive& prim, const PixelProgram& program, const ChannelLayout& layout,
-                           const RasterState& state, const BlockTarget& target, NativeBlockShape shape);
+                           bool gang);
 
   // Runs `fn` over the block (aligned at (bx, by), or `packed`'s lanes) for the lanes of
   // `mask`; returns the lanes that committed. Lanes the iteration cap stopped are added to
@@ -48,11 +51,17 @@ class NativeBlocks {
     const Instr* code;
     size_t code_size;
     const ChannelLayout* layout;
-    uint8_t depth;  // depth compare, buffer, commit
-    NativeBlockShape shape;
+    bool gang;
     NativeIsa isa;
-    NativeBlockFunction fn;
+    NativeProgramCache::Entry* entry;
+    NativeBlockFunction fn;  // fn.fn set once the entry has a function
+    bool never;              // the entry settled without one
   };
+  // The variant `program` of `prim` runs in with `layout` (into variant_).
+  const NativePixelVariant& variantFor(const CompiledPrimitive& prim, const ChannelLayout& layout, bool gang,
+                                       NativeIsa isa);
+  // Where the instance's depth test passes (native_abi.h's kDepthPass* bits).
+  static uint32_t depthPass(const RasterState& state);
   std::vector<Found> found_;  // (its storage kept across frames: a frame allocates nothing)
   NativePixelVariant variant_;  // the one being looked up (its vectors' storage kept)
   size_t last_ = 0;

@@ -164,8 +164,7 @@ void PixelExecutor::runAndCommit(const CompiledPrimitive& prim, const PixelProgr
   // Native code, where there is some for the program: the block whole, commit included.
   NativeBlockFunction native;
   if (use_native)
-    native = native_.find(prim, program, layout, state, target,
-                          !packed ? NativeBlockShape::Aligned : wide_record ? NativeBlockShape::Gang : NativeBlockShape::Packed);
+    native = native_.find(prim, program, layout, wide_record);
   const uint64_t alive = native ? native_.run(native, prim, record, layout, state, shade_id, bx, by, packed, mask, target,
                                               shared_records, counters.iteration_cap_lanes, counters.cap_primitive)
                                 : execute(prim, program, record, layout, state, bx, by, packed, mask, target,

@@ -44,6 +44,7 @@ Renderer::Renderer(int threads) : pool_(threads) {
   if (const char* e = std::getenv("PF_DEPTH_CULL")) depth_culling_ = std::strcmp(e, "0") != 0;
   for (int i = 0; i < pool_.threadCount(); ++i) {
     scratch_.push_back(std::make_unique<WorkerScratch>());
+    scratch_.back()->executor.use_native = native_code_;
     batch_setups_.push_back(std::make_unique<BatchSetupExecutor>());
   }
 }
@@ -594,6 +595,11 @@ void Renderer::flush() {
     s->pixels_depth_culled = 0;
   }
   scene_.reset();
+}
+
+void Renderer::setNativeCode(bool on) {
+  native_code_ = on;
+  for (auto& s : scratch_) s->executor.use_native = on;
 }
 
 void Renderer::discardPending() {

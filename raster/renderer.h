@@ -104,6 +104,10 @@ class Renderer : private SubInstanceSink {
   // Gang blocks (raster/gang_block.h) on or off (on unless the environment says
   // PF_GANG_BLOCKS=0; images are identical either way).
   void setGangBlocks(bool on) { gang_blocks_ = on; }
+  // Pixel programs as native code (compiler/native/) where it can, or all on the interpreter
+  // (on unless the environment says PF_JIT=0; images are identical either way).
+  void setNativeCode(bool on);
+  bool nativeCode() const { return native_code_; }
   // The batched setup's counters, summed over the threads that ran batches.
   SetupBatchCounters setupBatchCounters() const;
 
@@ -164,6 +168,7 @@ class Renderer : private SubInstanceSink {
   bool pack_small_bounds_ = true;  // PF_PACKED_LANES=0: every instance on aligned blocks
   bool depth_culling_ = true;      // PF_DEPTH_CULL=0: no coarse depth culling
   bool gang_blocks_ = true;        // PF_GANG_BLOCKS=0: small instances packed one at a time
+  bool native_code_ = PixelExecutor::nativeWanted();  // PF_JIT=0: pixel programs interpreted
   uint64_t flushes_ = 0;
   uint32_t shared_offset_ = kNoShared;  // the shared records of the submission in progress
   uint64_t calls_this_submission_ = 0;  // instances its primitive calls made (submitCall)

@@ -29,10 +29,10 @@ int main(int argc, char** argv) {
                  "print a stage: ast, ir, setup (per-instance program), pixel (per-block program), native (the pixel "
                  "program as machine code), tape (fields)")
       ->check(CLI::IsMember({"none", "ast", "ir", "setup", "pixel", "native", "tape"}));
-  std::string block = "aligned", isa = "avx512";
+  std::string block = "block", isa = "avx512";
   int channels = 4;
-  app.add_option("--block", block, "--emit=native: the block shape (aligned, packed, gang)")
-      ->check(CLI::IsMember({"aligned", "packed", "gang"}));
+  app.add_option("--block", block, "--emit=native: block (aligned or packed lanes) or gang (several instances' lanes)")
+      ->check(CLI::IsMember({"block", "gang"}));
   app.add_option("--isa", isa, "--emit=native: the instruction set (sse2, avx2, avx512)")
       ->check(CLI::IsMember({"sse2", "avx2", "avx512"}));
   app.add_option("--channels", channels, "--emit=native: perspective-correct channels drawn (e.g. 4: a colour)")
@@ -72,14 +72,10 @@ int main(int argc, char** argv) {
   if (!ok) return 1;
   std::cout << listing;
   if (emit == "native") {
-    // The variant an instance with `channels` perspective-correct channels, a depth buffer and
-    // GL_LESS would draw with.
+    // The variant an instance with `channels` perspective-correct channels draws with.
     pf::NativePixelVariant v;
     v.isa = isa == "sse2" ? pf::NativeIsa::Sse2 : isa == "avx2" ? pf::NativeIsa::Avx2 : pf::NativeIsa::Avx512;
-    v.shape = block == "packed" ? pf::NativeBlockShape::Packed
-              : block == "gang" ? pf::NativeBlockShape::Gang : pf::NativeBlockShape::Aligned;
-    v.depth_compare = pf::NativeDepthCompare::Less;
-    v.has_depth_buffer = v.depth_commit = true;
+    v.gang = block == "gang";
     v.channels = channels;
     v.kind_end[0] = v.kind_end[1] = v.kind_end[2] = channels;
     v.kind_begin[1] = v.kind_begin[2] = channels;

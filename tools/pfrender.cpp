@@ -25,6 +25,7 @@
 
 // The context internals, for --stats only.
 #include "api/src/context_state.h"
+#include "compiler/native/native_cache.h"
 
 namespace {
 
@@ -56,11 +57,18 @@ void printStats(PFcontext ctx, double ms) {
               static_cast<unsigned long long>(s.pixels_depth_culled));
   std::printf("blocks ganged      %llu (packed blocks shared by several small instances)\n",
               static_cast<unsigned long long>(s.blocks_ganged));
+  std::printf("blocks native      %llu (run as machine code: %.1f%% of the blocks run; the rest interpreted)\n",
+              static_cast<unsigned long long>(s.blocks_native),
+              s.blocks_run ? 100.0 * s.blocks_native / double(s.blocks_run) : 0.0);
+  const pf::NativeCacheStats n = pf::NativeProgramCache::instance().stats();
+  std::printf("native programs    %llu compiled in %.1f ms, %llu left to the interpreter (this process)\n",
+              static_cast<unsigned long long>(n.compiled), n.milliseconds,
+              static_cast<unsigned long long>(n.refused + n.failed));
   std::printf("active lanes       %.1f%% at start, %.1f%% committed\n",
               s.blocks_run ? 100.0 * s.lanes_started / (64.0 * s.blocks_run) : 0.0,
               s.blocks_run ? 100.0 * s.lanes_committed / (64.0 * s.blocks_run) : 0.0);
   std::printf("pixels shaded      %llu\n", static_cast<unsigned long long>(s.pixels_shaded));
-  std::printf("instructions       %llu setup, %llu pixel (per 8x8 block): %.1f%% uniform setup\n",
+  std::printf("instructions       %llu setup, %llu pixel (interpreted, per 8x8 block): %.1f%% uniform setup\n",
               static_cast<unsigned long long>(s.setup_instructions), static_cast<unsigned long long>(s.pixel_instructions),
               s.setup_instructions + s.pixel_instructions
                   ? 100.0 * s.setup_instructions / double(s.setup_instructions + s.pixel_instructions) : 0.0);

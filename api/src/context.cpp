@@ -88,16 +88,19 @@ PFcontext pfCreateContextAttribs(const int* attribs) {
   int depth_bits = 0;
   int threads = 0;
   int cap = 0;
+  int native = -1;  // PF_JIT: -1 the environment's choice
   for (const int* a = attribs; a && a[0] != 0; a += 2) {
     switch (a[0]) {
       case PF_FORMAT: format = static_cast<GLenum>(a[1]); break;
       case PF_DEPTH_BITS: depth_bits = a[1]; break;
       case PF_THREADS: threads = a[1]; break;
       case PF_ITERATION_CAP: cap = a[1]; break;
+      case PF_JIT: native = a[1]; break;
       default: return nullptr;  // unknown attribute
     }
   }
-  if (format != GL_RGBA || depth_bits < 0 || threads < 0 || threads > 256 || cap < 0) return nullptr;
+  if (format != GL_RGBA || depth_bits < 0 || threads < 0 || threads > 256 || cap < 0 || native < -1 || native > 1)
+    return nullptr;
   if (threads == 0) threads = pf::defaultThreadCount();
   try {
     auto* ctx = new PFcontextRec(threads);
@@ -110,6 +113,7 @@ PFcontext pfCreateContextAttribs(const int* attribs) {
     ctx->param(ctx->normal_param) = pf::ParamValue{{0, 0, 1}, 3};
     ctx->param(ctx->texcoord_param) = pf::ParamValue{{0, 0, 0, 1}, 4};
     ctx->depth_bits = depth_bits;
+    if (native >= 0) ctx->renderer.setNativeCode(native == 1);
     ctx->iteration_cap = cap > 0 ? static_cast<unsigned>(cap) : pf::kDefaultIterationCap;
     if (!pf::registerBuiltins(*ctx)) {
       delete ctx;

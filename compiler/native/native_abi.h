@@ -26,22 +26,20 @@ enum class NativeIsa : uint8_t { Sse2, Avx2, Avx512 };
 constexpr int nativeVectorWidth(NativeIsa isa) { return isa == NativeIsa::Avx512 ? 16 : isa == NativeIsa::Avx2 ? 8 : 4; }
 const char* nativeIsaName(NativeIsa isa);
 
-// How a block's lanes map to pixels (raster/pixel_executor.h): an aligned 8x8 block at (bx, by);
-// packed lanes, each its own pixel (lane_x, lane_y); or a packed gang block, whose record holds
-// kNativeLanes words per slot, one per lane's instance.
-enum class NativeBlockShape : uint8_t { Aligned, Packed, Gang };
+// A block's lanes are an aligned 8x8 block at (bx, by) or packed lanes, each its own pixel
+// (lane_x, lane_y): one function runs both, told by NativeBlockArgs::lane_x. A gang block
+// (packed lanes of several instances) reads a record holding kNativeLanes words per slot, one
+// per lane's instance: a variant of its own.
 
-// GL's depth function as the program's ztest() applies it (Always when the depth test is off).
-enum class NativeDepthCompare : uint8_t { Never, Less, Equal, LessEqual, Greater, NotEqual, GreaterEqual, Always };
+// ztest(z): the outcomes of comparing z with the depth buffer's d that pass (GL's depth
+// function; all four when the test is off): NativeBlockArgs::depth_pass.
+constexpr uint32_t kDepthPassLess = 1, kDepthPassEqual = 2, kDepthPassGreater = 4, kDepthPassUnordered = 8;
 
 // What a native pixel program is specialised on (part of its cache key with the program's
-// content): the block's shape, the depth buffer's use, and the instance's channel layout.
+// content): the instruction set, the record's shape and the instance's channel layout.
 struct NativePixelVariant {
   NativeIsa isa = NativeIsa::Sse2;
-  NativeBlockShape shape = NativeBlockShape::Aligned;
-  NativeDepthCompare depth_compare = NativeDepthCompare::Always;
-  bool has_depth_buffer = false;  // else Z starts at 0 and nothing is written
-  bool depth_commit = false;      // ZCommit writes: a depth buffer, the depth test on, depth writes on
+  bool gang = false;  // the record holds each lane's instance's values (a gang block)
   // The channels (raster's ChannelLayout): how many, and each interpolation kind's range.
   int channels = 0;
   int kind_begin[3] = {0, 0, 0};
@@ -70,9 +68,9 @@ struct NativePixelVariant {
 struct NativeBlockArgs {
   const uint32_t* record = nullptr;          // the instance's uniform record (a gang's: wide)
   const uint32_t* shared_records = nullptr;  // the layout's shared interpolators' records
-  const int32_t* lane_x = nullptr;           // packed / gang: each lane's pixel
+  const int32_t* lane_x = nullptr;           // packed lanes: each lane's pixel; null: aligned at (bx, by)
   const int32_t* lane_y = nullptr;
-  float* depth = nullptr;  // the depth buffer (whole framebuffer), when has_depth_buffer
+  float* depth = nullptr;  // the depth buffer (whole framebuffer), or null: Z starts at 0
   const float* state_values = nullptr;  // compiler/isa.h's StateValue order (LoadState)
   uint32_t* shade_ids = nullptr;        // the tile's G-buffer: shading state per pixel
   float* const* planes = nullptr;       // per channel, its G-buffer plane (64x64 floats)
@@ -85,6 +83,8 @@ struct NativeBlockArgs {
   int32_t tile_x0 = 0, tile_y0 = 0;
   uint32_t shade_id = 0;
   uint32_t iteration_cap = 0;
+  uint32_t depth_pass = 0;   // kDepthPass* bits
+  uint32_t depth_write = 0;  // 1: ZCommit writes (a depth buffer, the depth test on, depth writes on)
 };
 
 // A compiled pixel program: returns the lanes that committed (alive at the end).

@@ -2,7 +2,6 @@
 #include "compiler/native/native_cache.h"
 
 #include <chrono>
-#include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -24,6 +23,8 @@ bool nativeCodeWantedByEnvironment() {
   const char* e = std::getenv("PF_JIT");
   return !(e && std::strcmp(e, "0") == 0);
 }
+
+bool nativeCodeAvailable() { return JitEngine::instance() != nullptr; }
 
 namespace {
 
@@ -61,10 +62,7 @@ class KeyWriter {
   }
   void variant(const NativePixelVariant& v) {
     put(v.isa);
-    put(v.shape);
-    put(v.depth_compare);
-    put(v.has_depth_buffer);
-    put(v.depth_commit);
+    put(v.gang);
     put(v.channels);
     put(v.kind_begin);
     put(v.kind_end);
@@ -112,18 +110,30 @@ Built buildModule(const PixelProgram& program, const NativePixelVariant& variant
 }  // namespace
 
 struct NativeProgramCache::Impl {
-  struct Entry {
-    bool ready = false;
-    NativePixelFunction function = nullptr;
-  };
   mutable std::mutex mutex;
-  std::condition_variable compiled;
-  std::unordered_map<std::string, std::shared_ptr<Entry>> entries;
+  std::unordered_map<std::string, std::unique_ptr<Entry>> entries;
   NativeCacheStats stats;
   uint64_t serial = 0;  // names the functions: pf_pixel_<serial>
 };
 
-NativeProgramCache::NativeProgramCache() : impl_(new Impl) {}
+namespace {
+
+uint64_t thresholdFromEnvironment() {
+  const char* e = std::getenv("PF_JIT_THRESHOLD");
+  if (!e || !*e) return kDefaultNativeThreshold;
+  char* end = nullptr;
+  const unsigned long long v = std::strtoull(e, &end, 10);
+  if (*end != '\0') {
+    std::fprintf(stderr, "primflow: PF_JIT_THRESHOLD=%s is not a number of blocks: %llu used\n", e,
+                 static_cast<unsigned long long>(kDefaultNativeThreshold));
+    return kDefaultNativeThreshold;
+  }
+  return v;
+}
+
+}  // namespace
+
+NativeProgramCache::NativeProgramCache() : impl_(new Impl), threshold_(thresholdFromEnvironment()) {}
 NativeProgramCache::~NativeProgramCache() { delete impl_; }
 
 NativeProgramCache& NativeProgramCache::instance() {
@@ -136,60 +146,64 @@ NativeCacheStats NativeProgramCache::stats() const {
   return impl_->stats;
 }
 
-NativePixelFunction NativeProgramCache::pixelFunction(const PixelProgram& program, const NativePixelVariant& variant) {
+NativeProgramCache::Entry* NativeProgramCache::entry(const PixelProgram& program, const NativePixelVariant& variant) {
   thread_local std::string key;
   KeyWriter w(key);
   w.program(program);
   w.variant(variant);
-  std::shared_ptr<Impl::Entry> entry;
-  uint64_t serial = 0;
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  auto it = impl_->entries.find(key);
+  if (it != impl_->entries.end()) return it->second.get();
+  return impl_->entries.emplace(key, std::make_unique<Entry>()).first->second.get();
+}
+
+bool NativeProgramCache::drawn(Entry* entry, uint64_t blocks) {
+  if (entry->status_.load(std::memory_order_acquire) != Entry::kCold) return false;
+  if (entry->blocks_.fetch_add(blocks, std::memory_order_relaxed) + blocks <= threshold()) return false;
+  // One thread compiles (the others interpret meanwhile).
+  uint8_t cold = Entry::kCold;
+  return entry->status_.compare_exchange_strong(cold, Entry::kCompiling, std::memory_order_acq_rel);
+}
+
+NativePixelFunction NativeProgramCache::compile(Entry* entry, const PixelProgram& program,
+                                                const NativePixelVariant& variant) {
+  uint64_t serial;
   {
-    std::unique_lock<std::mutex> lock(impl_->mutex);
-    auto it = impl_->entries.find(key);
-    if (it != impl_->entries.end()) {
-      entry = it->second;
-      impl_->compiled.wait(lock, [&] { return entry->ready; });
-      return entry->function;
-    }
-    entry = std::make_shared<Impl::Entry>();
-    impl_->entries.emplace(key, entry);
+    std::lock_guard<std::mutex> lock(impl_->mutex);
     serial = impl_->serial++;
   }
-  // This thread compiles it.
   const auto start = std::chrono::steady_clock::now();
   NativePixelFunction function = nullptr;
   bool refused = false, failed = false;
   std::string error;
-  {
-    auto context = std::make_unique<llvm::LLVMContext>();
-    std::unique_ptr<llvm::Module> module;
-    const std::string name = "pf_pixel_" + std::to_string(serial);
-    std::vector<void*> addresses;
-    switch (buildModule(program, variant, name, *context, module, error)) {
-      case Built::Yes:
-        if (JitEngine::instance()->add(std::move(module), std::move(context), {name}, addresses, error))
-          function = reinterpret_cast<NativePixelFunction>(addresses[0]);
-        else
-          failed = true;
-        break;
-      case Built::Unsupported: refused = true; break;  // (a field search, here or in an interpolator)
-      case Built::Unavailable: break;                   // (said once by JitEngine)
-      case Built::Broken: failed = true; break;
-    }
+  auto context = std::make_unique<llvm::LLVMContext>();
+  std::unique_ptr<llvm::Module> module;
+  const std::string name = "pf_pixel_" + std::to_string(serial);
+  std::vector<void*> addresses;
+  switch (buildModule(program, variant, name, *context, module, error)) {
+    case Built::Yes:
+      if (JitEngine::instance()->add(std::move(module), std::move(context), {name}, addresses, error))
+        function = reinterpret_cast<NativePixelFunction>(addresses[0]);
+      else
+        failed = true;
+      break;
+    case Built::Unsupported: refused = true; break;  // (a field search, here or in an interpolator)
+    case Built::Unavailable: break;                   // (said once by JitEngine)
+    case Built::Broken: failed = true; break;
   }
-  if (failed) std::fprintf(stderr, "primflow: native code for a pixel program failed (%s): it runs on the interpreter\n",
-                           error.c_str());
+  if (failed)
+    std::fprintf(stderr, "primflow: native code for a pixel program failed (%s): it runs on the interpreter\n",
+                 error.c_str());
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   {
     std::lock_guard<std::mutex> lock(impl_->mutex);
-    entry->function = function;
-    entry->ready = true;
     if (function) ++impl_->stats.compiled;
     if (refused) ++impl_->stats.refused;
     if (failed) ++impl_->stats.failed;
     impl_->stats.milliseconds += ms;
   }
-  impl_->compiled.notify_all();
+  entry->function_.store(function, std::memory_order_release);
+  entry->status_.store(function ? Entry::kReady : Entry::kNone, std::memory_order_release);
   return function;
 }
 

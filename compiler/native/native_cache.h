@@ -3,11 +3,17 @@
 // contexts drawing the same primitive compile it once; a primitive recompiled under the same
 // name is new content, so new draws get a new function while draws of the old one still
 // pending run the old (nothing compiled is ever freed: functions are small, and a pointer to
-// one may be held by any thread). Compiled lazily, on the first block that needs it, in the
-// thread that asks; others asking for the same key meanwhile wait for it. Programs native
-// code does not run (pixel_codegen.h) are remembered as such, and the interpreter runs them.
+// one may be held by any thread).
+//
+// Compiled lazily: a key is compiled once the blocks drawn with it pass the compile threshold
+// (PF_JIT_THRESHOLD, default kDefaultNativeThreshold; 0: on its first block). Until then, and
+// for programs native code does not run (pixel_codegen.h), the interpreter runs them -- the same
+// bits either way. Compiling costs about as much as interpreting a few thousand blocks
+// (docs/performance.md), so a program drawn over a few blocks never pays for it. The thread
+// that passes the threshold compiles, in its own LLVMContext; the others interpret meanwhile.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <string>
 
@@ -18,6 +24,9 @@ namespace pf {
 
 // Whether the environment leaves native code on: PF_JIT unset or not "0".
 bool nativeCodeWantedByEnvironment();
+// Whether native code runs in this process: primflow was built with LLVM and it initialised
+// for this machine (the first call initialises it).
+bool nativeCodeAvailable();
 
 struct NativeCacheStats {
   uint64_t compiled = 0;      // functions compiled (each key once)
@@ -26,13 +35,42 @@ struct NativeCacheStats {
   double milliseconds = 0;    // spent building, optimizing and compiling them
 };
 
+// Blocks a key runs on the interpreter before it is compiled, unless PF_JIT_THRESHOLD says.
+constexpr uint64_t kDefaultNativeThreshold = 1024;
+
 class NativeProgramCache {
  public:
   static NativeProgramCache& instance();
 
-  // The function for `program` under `variant`; null when native code is unavailable or does
-  // not run this program (the interpreter runs it then).
-  NativePixelFunction pixelFunction(const PixelProgram& program, const NativePixelVariant& variant);
+  // One key's state; found or made by entry(), never freed.
+  class Entry {
+   public:
+    // The compiled function, or null (not yet, or never: settled()).
+    NativePixelFunction function() const { return function_.load(std::memory_order_acquire); }
+    // Whether function() is what it will stay: compiled, or never to be (native code does not
+    // run the program, or LLVM failed on it).
+    bool settled() const { return status_.load(std::memory_order_acquire) >= kReady; }
+
+   private:
+    friend class NativeProgramCache;
+    enum : uint8_t { kCold, kCompiling, kReady, kNone };
+    std::atomic<NativePixelFunction> function_{nullptr};
+    std::atomic<uint8_t> status_{kCold};
+    std::atomic<uint64_t> blocks_{0};
+  };
+
+  // The entry of `program` under `variant`.
+  Entry* entry(const PixelProgram& program, const NativePixelVariant& variant);
+  // Counts `blocks` more blocks drawn with the entry's key on the interpreter; true when they
+  // passed the threshold and the caller is the one to compile() it.
+  bool drawn(Entry* entry, uint64_t blocks);
+  // Compiles the entry (`program` and `variant` must be its key's) and returns its function,
+  // or null if native code does not run it.
+  NativePixelFunction compile(Entry* entry, const PixelProgram& program, const NativePixelVariant& variant);
+
+  // The threshold (kDefaultNativeThreshold or PF_JIT_THRESHOLD at start-up); tests set 0.
+  uint64_t threshold() const { return threshold_.load(std::memory_order_relaxed); }
+  void setThreshold(uint64_t blocks) { threshold_.store(blocks, std::memory_order_relaxed); }
 
   NativeCacheStats stats() const;
 
@@ -44,6 +82,7 @@ class NativeProgramCache {
   ~NativeProgramCache();
   struct Impl;
   Impl* impl_;
+  std::atomic<uint64_t> threshold_;
 };
 
 // What `pfc --emit=native` prints for `program` under `variant`: the optimized LLVM IR and the

@@ -7,13 +7,14 @@
 namespace pf {
 
 bool nativeCodeWantedByEnvironment() { return false; }
+bool nativeCodeAvailable() { return false; }
 
 const char* nativeIsaName(NativeIsa isa) {
   return isa == NativeIsa::Avx512 ? "avx512" : isa == NativeIsa::Avx2 ? "avx2" : "sse2";
 }
 
 struct NativeProgramCache::Impl {};
-NativeProgramCache::NativeProgramCache() : impl_(nullptr) {}
+NativeProgramCache::NativeProgramCache() : impl_(nullptr), threshold_(kDefaultNativeThreshold) {}
 NativeProgramCache::~NativeProgramCache() = default;
 
 NativeProgramCache& NativeProgramCache::instance() {
@@ -21,7 +22,14 @@ NativeProgramCache& NativeProgramCache::instance() {
   return *cache;
 }
 
-NativePixelFunction NativeProgramCache::pixelFunction(const PixelProgram&, const NativePixelVariant&) { return nullptr; }
+NativeProgramCache::Entry* NativeProgramCache::entry(const PixelProgram&, const NativePixelVariant&) {
+  static Entry none;  // never compiled
+  return &none;
+}
+
+bool NativeProgramCache::drawn(Entry*, uint64_t) { return false; }
+
+NativePixelFunction NativeProgramCache::compile(Entry*, const PixelProgram&, const NativePixelVariant&) { return nullptr; }
 
 NativeCacheStats NativeProgramCache::stats() const { return {}; }
 

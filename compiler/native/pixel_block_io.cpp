@@ -45,27 +45,73 @@ llvm::Value* PixelCodegen::concat(const std::vector<llvm::Value*>& pieces) {
   return level[0];
 }
 
+PixelCodegen::Values PixelCodegen::byShape(const std::function<Values()>& aligned, const std::function<Values()>& packed,
+                                           llvm::Value* when, const Values& otherwise) {
+  llvm::BasicBlock* from = b_.GetInsertBlock();
+  llvm::BasicBlock* join = llvm::BasicBlock::Create(ctx_, "shape.join", fn_);
+  std::vector<std::pair<llvm::BasicBlock*, Values>> arms;
+  if (when) {
+    llvm::BasicBlock* run = llvm::BasicBlock::Create(ctx_, "shape.when", fn_);
+    b_.CreateCondBr(when, run, join);
+    arms.emplace_back(from, otherwise);
+    b_.SetInsertPoint(run);
+  }
+  if (variant_.gang) {
+    Values v = packed();
+    b_.CreateBr(join);
+    arms.emplace_back(b_.GetInsertBlock(), v);
+  } else {
+    llvm::BasicBlock* a = llvm::BasicBlock::Create(ctx_, "shape.aligned", fn_);
+    llvm::BasicBlock* p = llvm::BasicBlock::Create(ctx_, "shape.packed", fn_);
+    b_.CreateCondBr(packed_, p, a);
+    b_.SetInsertPoint(a);
+    Values va = aligned();
+    b_.CreateBr(join);
+    arms.emplace_back(b_.GetInsertBlock(), va);
+    b_.SetInsertPoint(p);
+    Values vp = packed();
+    b_.CreateBr(join);
+    arms.emplace_back(b_.GetInsertBlock(), vp);
+  }
+  b_.SetInsertPoint(join);
+  Values out;
+  const size_t n = arms.back().second.size();
+  for (size_t k = 0; k < n; ++k) {
+    llvm::PHINode* phi = b_.CreatePHI(arms.back().second[k]->getType(), static_cast<unsigned>(arms.size()));
+    for (auto& [block, values] : arms) phi->addIncoming(values[k], block);
+    out.push_back(phi);
+  }
+  return out;
+}
+
 // Lane i's pixel: (bx + (first_lane + i) % 8, by + (first_lane + i) / 8) in an aligned block,
 // (lane_x[i], lane_y[i]) in packed ones; X and Y are its centre, computed as the interpreter
 // does (the column's offset plus float(bx); float(x) + 0.5).
 void PixelCodegen::pixelCoordinates(llvm::Value*& x, llvm::Value*& y) {
   llvm::Value* half = splatF(0.5f);
-  if (variant_.shape == NativeBlockShape::Aligned) {
-    std::vector<llvm::Constant*> index;
-    for (unsigned i = 0; i < width_; ++i) index.push_back(b_.getInt32(i));
-    llvm::Value* lane = b_.CreateAdd(b_.CreateVectorSplat(width_, first_lane_), llvm::ConstantVector::get(index));
-    llvm::Value* column = b_.CreateAnd(lane, splatI(kNativeBlockSize - 1));
-    llvm::Value* row = b_.CreateLShr(lane, splatI(3));
-    llvm::Value* fx = b_.CreateVectorSplat(width_, b_.CreateSIToFP(bx_, b_.getFloatTy()));
-    llvm::Value* fy = b_.CreateVectorSplat(width_, b_.CreateSIToFP(by_, b_.getFloatTy()));
-    x = b_.CreateBitCast(b_.CreateFAdd(b_.CreateFAdd(b_.CreateSIToFP(column, fv_), half), fx), iv_, "X");
-    y = b_.CreateBitCast(b_.CreateFAdd(b_.CreateFAdd(b_.CreateSIToFP(row, fv_), half), fy), iv_, "Y");
-    return;
-  }
-  lane_px_ = b_.CreateAlignedLoad(iv_, b_.CreateInBoundsGEP(b_.getInt32Ty(), lane_x_, first_lane_), llvm::Align(4), "px");
-  lane_py_ = b_.CreateAlignedLoad(iv_, b_.CreateInBoundsGEP(b_.getInt32Ty(), lane_y_, first_lane_), llvm::Align(4), "py");
-  x = b_.CreateBitCast(b_.CreateFAdd(b_.CreateSIToFP(lane_px_, fv_), half), iv_, "X");
-  y = b_.CreateBitCast(b_.CreateFAdd(b_.CreateSIToFP(lane_py_, fv_), half), iv_, "Y");
+  Values v = byShape(
+      [&]() -> Values {
+        std::vector<llvm::Constant*> index;
+        for (unsigned i = 0; i < width_; ++i) index.push_back(b_.getInt32(i));
+        llvm::Value* lane = b_.CreateAdd(b_.CreateVectorSplat(width_, first_lane_), llvm::ConstantVector::get(index));
+        llvm::Value* column = b_.CreateAnd(lane, splatI(kNativeBlockSize - 1));
+        llvm::Value* row = b_.CreateLShr(lane, splatI(3));
+        llvm::Value* fx = b_.CreateVectorSplat(width_, b_.CreateSIToFP(bx_, b_.getFloatTy()));
+        llvm::Value* fy = b_.CreateVectorSplat(width_, b_.CreateSIToFP(by_, b_.getFloatTy()));
+        return {b_.CreateBitCast(b_.CreateFAdd(b_.CreateFAdd(b_.CreateSIToFP(column, fv_), half), fx), iv_),
+                b_.CreateBitCast(b_.CreateFAdd(b_.CreateFAdd(b_.CreateSIToFP(row, fv_), half), fy), iv_), splatI(0),
+                splatI(0)};
+      },
+      [&]() -> Values {
+        llvm::Value* px = b_.CreateAlignedLoad(iv_, b_.CreateInBoundsGEP(b_.getInt32Ty(), lane_x_, first_lane_), llvm::Align(4));
+        llvm::Value* py = b_.CreateAlignedLoad(iv_, b_.CreateInBoundsGEP(b_.getInt32Ty(), lane_y_, first_lane_), llvm::Align(4));
+        return {b_.CreateBitCast(b_.CreateFAdd(b_.CreateSIToFP(px, fv_), half), iv_),
+                b_.CreateBitCast(b_.CreateFAdd(b_.CreateSIToFP(py, fv_), half), iv_), px, py};
+      });
+  x = v[0];
+  y = v[1];
+  lane_px_ = v[2];
+  lane_py_ = v[3];
 }
 
 // Packed lanes' depth entries: depth + (y * stride + x), the offset in 32-bit arithmetic as
@@ -75,39 +121,51 @@ llvm::Value* PixelCodegen::depthAddress(llvm::Value* x, llvm::Value* y) {
   return b_.CreateInBoundsGEP(b_.getFloatTy(), depth_, b_.CreateSExt(offset, llvm::FixedVectorType::get(b_.getInt64Ty(), width_)));
 }
 
-// The depth under the lanes of `in_mask` (others read nothing -- they may lie past the
-// framebuffer -- and get 0).
-llvm::Value* PixelCodegen::loadDepth(llvm::Value* in_mask) {
-  if (variant_.shape != NativeBlockShape::Aligned) {
-    llvm::Value* z = b_.CreateMaskedGather(fv_, depthAddress(lane_px_, lane_py_), llvm::Align(4), in_mask,
-                                           llvm::Constant::getNullValue(fv_));
-    return b_.CreateBitCast(z, iv_, "Z");
-  }
-  std::vector<llvm::Value*> rows;
-  for (const RowPiece& p : rowPieces()) {
-    auto* type = llvm::FixedVectorType::get(b_.getFloatTy(), p.count);
-    llvm::Value* at = b_.CreateAdd(b_.CreateMul(b_.CreateSExt(p.y, b_.getInt64Ty()), b_.CreateSExt(depth_stride_, b_.getInt64Ty())),
-                                   b_.CreateSExt(p.x, b_.getInt64Ty()));
-    rows.push_back(b_.CreateMaskedLoad(type, b_.CreateInBoundsGEP(b_.getFloatTy(), depth_, at), llvm::Align(4),
-                                       slice(in_mask, p.first, p.count), llvm::Constant::getNullValue(type)));
-  }
-  return b_.CreateBitCast(concat(rows), iv_, "Z");
+// An aligned row piece's first depth entry.
+static llvm::Value* rowAddress(llvm::IRBuilder<>& b, llvm::Value* depth, llvm::Value* stride, llvm::Value* x, llvm::Value* y) {
+  llvm::Value* at = b.CreateAdd(b.CreateMul(b.CreateSExt(y, b.getInt64Ty()), b.CreateSExt(stride, b.getInt64Ty())),
+                                b.CreateSExt(x, b.getInt64Ty()));
+  return b.CreateInBoundsGEP(b.getFloatTy(), depth, at);
 }
 
-// ZCommit: the lanes of `mask` write z (the depth buffer's other entries are not touched --
-// they may be another thread's or past the framebuffer).
+// The depth under the lanes of `in_mask` (others read nothing -- they may lie past the
+// framebuffer -- and get 0); 0 everywhere without a depth buffer.
+llvm::Value* PixelCodegen::loadDepth(llvm::Value* in_mask) {
+  Values z = byShape(
+      [&]() -> Values {
+        std::vector<llvm::Value*> rows;
+        for (const RowPiece& p : rowPieces()) {
+          auto* type = llvm::FixedVectorType::get(b_.getFloatTy(), p.count);
+          rows.push_back(b_.CreateMaskedLoad(type, rowAddress(b_, depth_, depth_stride_, p.x, p.y), llvm::Align(4),
+                                             slice(in_mask, p.first, p.count), llvm::Constant::getNullValue(type)));
+        }
+        return {b_.CreateBitCast(concat(rows), iv_)};
+      },
+      [&]() -> Values {
+        llvm::Value* g = b_.CreateMaskedGather(fv_, depthAddress(lane_px_, lane_py_), llvm::Align(4), in_mask,
+                                               llvm::Constant::getNullValue(fv_));
+        return {b_.CreateBitCast(g, iv_)};
+      },
+      has_depth_, {splatI(0)});
+  return z[0];
+}
+
+// ZCommit: the lanes of `mask` write z, where the state writes depth (the depth buffer's other
+// entries are not touched -- they may be another thread's or past the framebuffer).
 void PixelCodegen::storeDepth(llvm::Value* z, llvm::Value* mask) {
   llvm::Value* zf = b_.CreateBitCast(z, fv_);
-  if (variant_.shape != NativeBlockShape::Aligned) {
-    b_.CreateMaskedScatter(zf, depthAddress(lane_px_, lane_py_), llvm::Align(4), mask);
-    return;
-  }
-  for (const RowPiece& p : rowPieces()) {
-    llvm::Value* at = b_.CreateAdd(b_.CreateMul(b_.CreateSExt(p.y, b_.getInt64Ty()), b_.CreateSExt(depth_stride_, b_.getInt64Ty())),
-                                   b_.CreateSExt(p.x, b_.getInt64Ty()));
-    storeLanes(slice(zf, p.first, p.count), b_.CreateInBoundsGEP(b_.getFloatTy(), depth_, at),
-               slice(mask, p.first, p.count), false);
-  }
+  byShape(
+      [&]() -> Values {
+        for (const RowPiece& p : rowPieces())
+          storeLanes(slice(zf, p.first, p.count), rowAddress(b_, depth_, depth_stride_, p.x, p.y),
+                     slice(mask, p.first, p.count), false);
+        return {};
+      },
+      [&]() -> Values {
+        b_.CreateMaskedScatter(zf, depthAddress(lane_px_, lane_py_), llvm::Align(4), mask);
+        return {};
+      },
+      b_.CreateAnd(depth_write_, any(mask)));
 }
 
 // The lanes of `mask` store `value` at consecutive addresses from `address`. `owned`: the
@@ -137,42 +195,48 @@ void PixelCodegen::commit(llvm::Value* alive) {
     }
     for (int k = 0; k < 3; ++k) surface.push_back(has ? value(4 + k) : splatF(0.0f));
   }
+  std::vector<llvm::Value*> channels;
+  for (int ch = 0; ch < variant_.channels; ++ch) channels.push_back(b_.CreateLoad(iv_, staging_[static_cast<size_t>(ch)]));
   auto plane = [&](llvm::Value* table, int index) {
     return invariantLoad(b_.getPtrTy(), b_.CreateConstInBoundsGEP1_32(b_.getPtrTy(), table, static_cast<unsigned>(index)));
   };
   const int surface_first = variant_.surface_eye ? 0 : 3;
   llvm::Value* ids = b_.CreateVectorSplat(width_, shade_id_);
-  if (variant_.shape != NativeBlockShape::Aligned) {
-    // Each lane to its own entry: (y - tile_y0) * 64 + (x - tile_x0).
-    llvm::Value* t = b_.CreateAdd(
-        b_.CreateMul(b_.CreateSub(lane_py_, b_.CreateVectorSplat(width_, tile_y0_)), splatI(kNativeTileSize)),
-        b_.CreateSub(lane_px_, b_.CreateVectorSplat(width_, tile_x0_)));
-    auto* i64v = llvm::FixedVectorType::get(b_.getInt64Ty(), width_);
-    llvm::Value* offset = b_.CreateSExt(t, i64v);
-    b_.CreateMaskedScatter(ids, b_.CreateInBoundsGEP(b_.getInt32Ty(), shade_ids_, offset), llvm::Align(4), alive);
-    for (int ch = 0; ch < variant_.channels; ++ch)
-      b_.CreateMaskedScatter(b_.CreateLoad(iv_, staging_[static_cast<size_t>(ch)]),
-                             b_.CreateInBoundsGEP(b_.getInt32Ty(), plane(planes_, ch), offset), llvm::Align(4), alive);
-    for (size_t k = 0; k < surface.size(); ++k)
-      b_.CreateMaskedScatter(surface[k],
-                             b_.CreateInBoundsGEP(b_.getFloatTy(), plane(surface_planes_, surface_first + static_cast<int>(k)), offset),
-                             llvm::Align(4), alive);
-    return;
-  }
-  for (const RowPiece& p : rowPieces()) {
-    llvm::Value* t = b_.CreateAdd(b_.CreateMul(b_.CreateSub(p.y, tile_y0_), b_.getInt32(kNativeTileSize)),
-                                  b_.CreateSub(p.x, tile_x0_));
-    llvm::Value* offset = b_.CreateSExt(t, b_.getInt64Ty());
-    llvm::Value* m = slice(alive, p.first, p.count);
-    storeLanes(slice(ids, p.first, p.count), b_.CreateInBoundsGEP(b_.getInt32Ty(), shade_ids_, offset), m, true);
-    for (int ch = 0; ch < variant_.channels; ++ch)
-      storeLanes(slice(b_.CreateLoad(iv_, staging_[static_cast<size_t>(ch)]), p.first, p.count),
-                 b_.CreateInBoundsGEP(b_.getInt32Ty(), plane(planes_, ch), offset), m, true);
-    for (size_t k = 0; k < surface.size(); ++k)
-      storeLanes(slice(surface[k], p.first, p.count),
-                 b_.CreateInBoundsGEP(b_.getFloatTy(), plane(surface_planes_, surface_first + static_cast<int>(k)), offset),
-                 m, true);
-  }
+  byShape(
+      [&]() -> Values {
+        for (const RowPiece& p : rowPieces()) {
+          llvm::Value* t = b_.CreateAdd(b_.CreateMul(b_.CreateSub(p.y, tile_y0_), b_.getInt32(kNativeTileSize)),
+                                        b_.CreateSub(p.x, tile_x0_));
+          llvm::Value* offset = b_.CreateSExt(t, b_.getInt64Ty());
+          llvm::Value* m = slice(alive, p.first, p.count);
+          storeLanes(slice(ids, p.first, p.count), b_.CreateInBoundsGEP(b_.getInt32Ty(), shade_ids_, offset), m, true);
+          for (int ch = 0; ch < variant_.channels; ++ch)
+            storeLanes(slice(channels[static_cast<size_t>(ch)], p.first, p.count),
+                       b_.CreateInBoundsGEP(b_.getInt32Ty(), plane(planes_, ch), offset), m, true);
+          for (size_t k = 0; k < surface.size(); ++k)
+            storeLanes(slice(surface[k], p.first, p.count),
+                       b_.CreateInBoundsGEP(b_.getFloatTy(), plane(surface_planes_, surface_first + static_cast<int>(k)),
+                                            offset),
+                       m, true);
+        }
+        return {};
+      },
+      [&]() -> Values {
+        // Each lane to its own entry: (y - tile_y0) * 64 + (x - tile_x0).
+        llvm::Value* t = b_.CreateAdd(
+            b_.CreateMul(b_.CreateSub(lane_py_, b_.CreateVectorSplat(width_, tile_y0_)), splatI(kNativeTileSize)),
+            b_.CreateSub(lane_px_, b_.CreateVectorSplat(width_, tile_x0_)));
+        llvm::Value* offset = b_.CreateSExt(t, llvm::FixedVectorType::get(b_.getInt64Ty(), width_));
+        b_.CreateMaskedScatter(ids, b_.CreateInBoundsGEP(b_.getInt32Ty(), shade_ids_, offset), llvm::Align(4), alive);
+        for (int ch = 0; ch < variant_.channels; ++ch)
+          b_.CreateMaskedScatter(channels[static_cast<size_t>(ch)],
+                                 b_.CreateInBoundsGEP(b_.getInt32Ty(), plane(planes_, ch), offset), llvm::Align(4), alive);
+        for (size_t k = 0; k < surface.size(); ++k)
+          b_.CreateMaskedScatter(
+              surface[k], b_.CreateInBoundsGEP(b_.getFloatTy(), plane(surface_planes_, surface_first + static_cast<int>(k)), offset),
+              llvm::Align(4), alive);
+        return {};
+      });
 }
 
 }  // namespace pf

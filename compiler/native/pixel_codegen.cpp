@@ -76,7 +76,7 @@ llvm::Function* PixelCodegen::build(const std::string& name, const PixelProgram&
   Env prim;
   prim.program = &program;
   prim.channels = variant_.channels;
-  prim.wide_record = variant_.shape == NativeBlockShape::Gang;
+  prim.wide_record = variant_.gang;
   if (!prepare(prim, error)) return nullptr;
 
   llvm::Type* ptr = b_.getPtrTy();
@@ -98,6 +98,10 @@ llvm::Function* PixelCodegen::build(const std::string& name, const PixelProgram&
   tile_y0_ = argField(offsetof(NativeBlockArgs, tile_y0), i32, "tile_y0");
   shade_id_ = argField(offsetof(NativeBlockArgs, shade_id), i32, "shade_id");
   iteration_cap_ = argField(offsetof(NativeBlockArgs, iteration_cap), i32, "iteration_cap");
+  depth_pass_ = argField(offsetof(NativeBlockArgs, depth_pass), i32, "depth_pass");
+  depth_write_ = b_.CreateICmpNE(argField(offsetof(NativeBlockArgs, depth_write), i32, "depth_write"), b_.getInt32(0));
+  has_depth_ = b_.CreateICmpNE(depth_, llvm::ConstantPointerNull::get(b_.getPtrTy()), "has_depth");
+  packed_ = variant_.gang ? b_.getTrue() : b_.CreateICmpNE(lane_x_, llvm::ConstantPointerNull::get(b_.getPtrTy()), "packed");
   prim.record = record_;
 
   for (int ch = 0; ch < variant_.channels; ++ch) staging_.push_back(entryAlloca(iv_, "staging"));
@@ -184,7 +188,7 @@ void PixelCodegen::startProgram(Env& env, llvm::Value* in_mask, llvm::Value* con
   set(kRegX, x_);
   set(kRegY, y_);
   // Z: the depth under each lane, for a primitive drawn with a depth buffer; else 0.
-  set(kRegZ, !env.interpolator && variant_.has_depth_buffer ? loadDepth(in_mask) : splatI(0));
+  set(kRegZ, env.interpolator ? splatI(0) : loadDepth(in_mask));
   if (env.program->reads_surface || p_in)
     for (int k = 0; k < 4; ++k)
       set(kRegP + static_cast<uint32_t>(k),
@@ -446,25 +450,23 @@ void PixelCodegen::emitInstruction(Env& env, size_t pc, const Instr& in, std::ma
       return;
     }
     case Op::ZTest: {
-      // The depth function as a comparison of (Z, the depth the block started with).
-      llvm::Value* z = operand(env, in.a);
-      llvm::Value* zb = operand(env, makeOperand(OperandKind::Reg, kRegZ));
-      llvm::Value* r = nullptr;
-      switch (variant_.depth_compare) {
-        case NativeDepthCompare::Never: r = splatI(0); break;
-        case NativeDepthCompare::Always: r = splatI(1); break;
-        case NativeDepthCompare::Less: r = emitLaneOp(b_, module_, Op::FLt, z, zb, nullptr, nullptr, 0); break;
-        case NativeDepthCompare::LessEqual: r = emitLaneOp(b_, module_, Op::FLe, z, zb, nullptr, nullptr, 0); break;
-        case NativeDepthCompare::Greater: r = emitLaneOp(b_, module_, Op::FLt, zb, z, nullptr, nullptr, 0); break;
-        case NativeDepthCompare::GreaterEqual: r = emitLaneOp(b_, module_, Op::FLe, zb, z, nullptr, nullptr, 0); break;
-        case NativeDepthCompare::Equal: r = emitLaneOp(b_, module_, Op::FEq, z, zb, nullptr, nullptr, 0); break;
-        case NativeDepthCompare::NotEqual: r = emitLaneOp(b_, module_, Op::FNe, z, zb, nullptr, nullptr, 0); break;
-      }
-      setReg(env, in.dst, r, true);
+      // The depth function as a comparison of (Z, the depth the block started with): its
+      // passing outcomes (less, equal, greater, unordered) from the context's state.
+      llvm::Value* z = b_.CreateBitCast(operand(env, in.a), fv_);
+      llvm::Value* zb = b_.CreateBitCast(operand(env, makeOperand(OperandKind::Reg, kRegZ)), fv_);
+      auto passes = [&](uint32_t bit) {
+        return b_.CreateVectorSplat(width_, b_.CreateICmpNE(b_.CreateAnd(depth_pass_, b_.getInt32(bit)), b_.getInt32(0)));
+      };
+      llvm::Value* r = b_.CreateOr(
+          b_.CreateOr(b_.CreateAnd(passes(kDepthPassLess), b_.CreateFCmpOLT(z, zb)),
+                      b_.CreateAnd(passes(kDepthPassEqual), b_.CreateFCmpOEQ(z, zb))),
+          b_.CreateOr(b_.CreateAnd(passes(kDepthPassGreater), b_.CreateFCmpOLT(zb, z)),
+                      b_.CreateAnd(passes(kDepthPassUnordered), b_.CreateFCmpUNO(z, zb))));
+      setReg(env, in.dst, b_.CreateZExt(r, iv_), true);
       return;
     }
     case Op::ZCommit:
-      if (!env.interpolator && variant_.depth_commit) storeDepth(operand(env, in.a), exec(env));
+      if (!env.interpolator) storeDepth(operand(env, in.a), exec(env));
       return;
     case Op::InterpReturn: {
       if (env.interpolator) return;

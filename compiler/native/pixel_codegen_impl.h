@@ -3,6 +3,7 @@
 // the depth under each lane, depth writes, the commit to the G-buffer).
 #pragma once
 
+#include <functional>
 #include <map>
 #include <string>
 #include <utility>
@@ -77,6 +78,12 @@ class PixelCodegen {
   llvm::Value* slice(llvm::Value* v, unsigned first, unsigned count);
   llvm::Value* concat(const std::vector<llvm::Value*>& pieces);
   void storeLanes(llvm::Value* value, llvm::Value* address, llvm::Value* mask, bool owned);
+  // Emits `aligned` and `packed` on the two sides of a branch on packed_ and merges the
+  // values they return (each side the same number, of the same types); a gang variant emits
+  // `packed` alone. `when`: a further condition for either to run; else `otherwise`'s values.
+  using Values = std::vector<llvm::Value*>;
+  Values byShape(const std::function<Values()>& aligned, const std::function<Values()>& packed,
+                 llvm::Value* when = nullptr, const Values& otherwise = {});
 
   // --- shared --------------------------------------------------------------------------------
   llvm::Value* argField(size_t offset, llvm::Type* type, const char* name);
@@ -113,11 +120,15 @@ class PixelCodegen {
   llvm::Value* tile_y0_ = nullptr;
   llvm::Value* shade_id_ = nullptr;
   llvm::Value* iteration_cap_ = nullptr;
+  llvm::Value* depth_pass_ = nullptr;   // i32: kDepthPass* bits
+  llvm::Value* depth_write_ = nullptr;  // i1
+  llvm::Value* has_depth_ = nullptr;    // i1: a depth buffer
+  llvm::Value* packed_ = nullptr;       // i1: packed lanes (always, in a gang variant)
   // The chunk being run: its index and first lane (i32), and what the primitive leaves for the
   // commit: the staging channels and the surface (P, N).
   llvm::Value* chunk_ = nullptr;
   llvm::Value* first_lane_ = nullptr;
-  llvm::Value* lane_px_ = nullptr;  // packed: the lanes' pixel x, y (vectors of i32)
+  llvm::Value* lane_px_ = nullptr;  // packed: the lanes' pixel x, y (vectors of i32; zeros for aligned blocks)
   llvm::Value* lane_py_ = nullptr;
   llvm::Value* x_ = nullptr;  // the built-in X, Y of the chunk's lanes (i32 bits)
   llvm::Value* y_ = nullptr;

@@ -65,7 +65,8 @@ const std::vector<GlCase>& glCases();
 
 // Renders GL case `name` (glCases()) through each implementation at width x height.
 Rendering renderOsmesa(const std::string& name, int width, int height);
-Rendering renderPrimflow(const std::string& name, int width, int height, int threads);
+// `native`: the context's PF_JIT attribute (1 native code, 0 the interpreter; -1 the default).
+Rendering renderPrimflow(const std::string& name, int width, int height, int threads, int native = -1);
 
 // The verdict on one case.
 struct Result {

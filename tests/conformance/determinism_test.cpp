@@ -1,14 +1,22 @@
 // primflow's output is byte-identical for any number of rasterizer threads: every GL case of the
 // conformance suite rendered with 1, 2, 3 and 8 threads, colour and depth compared bytewise;
-// and for any instruction set the pixel kernels are compiled for.
+// for any instruction set the pixel kernels are compiled for; and with pixel programs as
+// native code or on the interpreter. Here programs compile on their first block (the default
+// waits for a program to have run a thousand), so native code draws these small cases.
 #include <gtest/gtest.h>
 
 #include <string>
 
+#include "compiler/native/native_cache.h"
 #include "conformance.h"
 #include "raster/lane_kernels.h"
 
 namespace {
+
+struct NativeOnFirstBlock : ::testing::Environment {
+  void SetUp() override { pf::NativeProgramCache::instance().setThreshold(0); }
+};
+const auto* const kNativeOnFirstBlock = ::testing::AddGlobalTestEnvironment(new NativeOnFirstBlock);
 
 class Determinism : public ::testing::TestWithParam<std::string> {};
 
@@ -47,6 +55,28 @@ TEST_P(Determinism, ByteIdenticalForEveryLaneInstructionSet) {
     ASSERT_TRUE(other.image.ok);
     EXPECT_TRUE(base.image.rgba == other.image.rgba) << pf::laneIsaName(isa) << ": colour differs from sse2";
     EXPECT_TRUE(base.image.depth == other.image.depth) << pf::laneIsaName(isa) << ": depth differs from sse2";
+  }
+}
+
+// Native code against the interpreter: the interpreter's image with 1 thread, and native code's
+// for every instruction set, with 1 thread (every block native) and 2 (some blocks interpreted
+// while another thread compiles).
+TEST_P(Determinism, ByteIdenticalWithNativeCodeAndInterpreter) {
+  const LaneIsaSaved saved;
+  const int w = 256, h = 256;
+  pfconf::Rendering interpreted = pfconf::renderPrimflow(GetParam(), w, h, 1, 0);
+  ASSERT_TRUE(interpreted.image.ok);
+  for (pf::LaneIsa isa : pf::availableLaneIsas()) {
+    ASSERT_TRUE(pf::setLaneIsa(isa));
+    for (int threads : {1, 2}) {
+      pfconf::Rendering native = pfconf::renderPrimflow(GetParam(), w, h, threads, 1);
+      ASSERT_TRUE(native.image.ok);
+      EXPECT_TRUE(interpreted.image.rgba == native.image.rgba)
+          << pf::laneIsaName(isa) << ", " << threads << " threads: native code's colour differs from the interpreter's";
+      EXPECT_TRUE(interpreted.image.depth == native.image.depth)
+          << pf::laneIsaName(isa) << ", " << threads << " threads: native code's depth differs from the interpreter's";
+      EXPECT_TRUE(interpreted.output.errors == native.output.errors && interpreted.output.numbers == native.output.numbers);
+    }
   }
 }
 

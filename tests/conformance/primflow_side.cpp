@@ -18,12 +18,12 @@ const std::vector<GlCase>& glCases() {
   return cases;
 }
 
-Rendering renderPrimflow(const std::string& name, int width, int height, int threads) {
+Rendering renderPrimflow(const std::string& name, int width, int height, int threads, int native) {
   Rendering r;
   const GlCase* c = findCase(name);
   if (!c) return r;
   std::vector<uint8_t> buffer(static_cast<size_t>(width) * height * 4);
-  const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_THREADS, threads, 0};
+  const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_THREADS, threads, native >= 0 ? PF_JIT : 0, native, 0};
   PFcontext ctx = pfCreateContextAttribs(attribs);
   if (!ctx) return r;
   if (pfMakeCurrent(ctx, buffer.data(), GL_UNSIGNED_BYTE, width, height)) drawAndRead(*c, width, height, r);

@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "compiler/compiler.h"
+#include "compiler/native/native_cache.h"
+#include "compiler/native/pixel_codegen.h"
 #include "raster/pixel_executor.h"
 #include "raster/setup_executor.h"
 #include "reference_interpreter.h"
@@ -84,8 +86,40 @@ inline BlockRun runBlockIn(const CompiledPrimitive& prim, const std::vector<floa
   t.shade_ids = r.shade_ids.data();
   t.slots = planes.data();
   PixelExecutor ex;
+  ex.use_native = false;
   ex.runBlock(prim, record.data(), layout, st, 1, 0, 0, ~0ull, t);
   r.counters = ex.counters;
+  // The block again as native code (compiler/native/), compiled on its first block: the
+  // same depth, shading ids and channels to the bit, the same lanes stopped by the cap.
+  {
+    NativeProgramCache::instance().setThreshold(0);
+    std::vector<float> depth(64, initial_depth);
+    std::vector<uint32_t> ids(64 * 64, 0);
+    std::vector<float> channels(r.channels.size(), 0.0f);
+    std::vector<float*> native_planes;
+    for (int i = 0; i < std::max(nch, 1); ++i) native_planes.push_back(channels.data() + static_cast<size_t>(i) * 4096);
+    BlockTarget nt = t;
+    nt.depth = depth.data();
+    nt.shade_ids = ids.data();
+    nt.slots = native_planes.data();
+    PixelExecutor nx;
+    nx.use_native = true;
+    nx.runBlock(prim, record.data(), layout, st, 1, 0, 0, ~0ull, nt);
+    bool compiles = nativeCodeAvailable() && nativePixelSupports(prim.pixel);
+    for (const ChannelLayout::SharedInterpolator& s : layout.shared)
+      compiles = compiles && nativePixelSupports(s.program->pixel);
+    if (compiles) EXPECT_EQ(nx.counters.blocks_native, nx.counters.blocks_run) << "the block did not run as native code";
+    EXPECT_EQ(nx.counters.lanes_committed, ex.counters.lanes_committed);
+    EXPECT_EQ(nx.counters.iteration_cap_lanes, ex.counters.iteration_cap_lanes);
+    for (int i = 0; i < 64; ++i)
+      EXPECT_EQ(std::bit_cast<uint32_t>(depth[i]), std::bit_cast<uint32_t>(r.depth[i]))
+          << "native code and interpreter disagree on depth at lane " << i;
+    EXPECT_TRUE(ids == r.shade_ids) << "native code and interpreter disagree on the pixels drawn";
+    size_t differing = 0;
+    for (size_t i = 0; i < channels.size(); ++i)
+      differing += std::bit_cast<uint32_t>(channels[i]) != std::bit_cast<uint32_t>(r.channels[i]);
+    EXPECT_EQ(differing, 0u) << "native code and interpreter disagree on G-buffer channel values";
+  }
   // The second execution mode: every lane again through the scalar reference interpreter of
   // the IR, which must agree exactly with setup + SIMD pixel program.
   if (prim.ir) {

@@ -32,6 +32,7 @@ Frame drawThroughRenderer(bool batching, int threads) {
   f.color.assign(static_cast<size_t>(kSize) * kSize * 4, 0);
   f.depth.assign(static_cast<size_t>(kSize) * kSize, 1.0f);
   Renderer r(threads);
+  r.setNativeCode(false);  // pixel_instructions counts the interpreter's instructions
   r.setSetupBatching(batching);
   r.setTarget(f.color.data(), f.depth.data(), kSize, kSize);
   const float black[4] = {0, 0, 0, 1};

@@ -18,6 +18,9 @@ typedef struct PFcontextRec *PFcontext;
 #define PF_THREADS     0x31102 /* rasterizer threads; 0 = PF_NUM_THREADS env var, else all cores */
 #define PF_ITERATION_CAP 0x31103 /* iterations one loop of a primitive may run per pixel (and per
                                     instance in setup); 0 = the default, 65536 */
+#define PF_JIT         0x31104 /* 1: pixel programs as native code where it can (the default, unless
+                                  the PF_JIT env var is 0); 0: all on the interpreter. Images are
+                                  identical either way. */
 
 /* A context rendering GL_RGBA with a depth buffer when depthBits > 0; NULL on a bad format. */
 PFcontext pfCreateContext(GLenum format, GLint depthBits);
