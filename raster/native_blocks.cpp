@@ -33,6 +33,8 @@ bool readsState(const PixelProgram& p) {
 void NativeBlocks::startFrame() {
   found_.clear();
   last_ = 0;
+  walks_.clear();
+  last_walk_ = 0;
   values_valid_ = false;
 }
 
@@ -100,7 +102,7 @@ NativeBlockFunction NativeBlocks::find(const CompiledPrimitive& prim, const Pixe
         found = &found_[i];
       }
     if (!found) {
-      NativeProgramCache::Entry* e = NativeProgramCache::instance().entry(program, variantFor(prim, layout, gang, isa));
+      NativeProgramCache::Entry* e = NativeProgramCache::instance().pixelEntry(program, variantFor(prim, layout, gang, isa));
       found_.push_back(Found{&program, program.code.data(), program.code.size(), &layout, gang, isa, e, {}, false});
       last_ = found_.size() - 1;
       found = &found_.back();
@@ -110,11 +112,56 @@ NativeBlockFunction NativeBlocks::find(const CompiledPrimitive& prim, const Pixe
   if (found->fn.fn || found->never) return found->fn;
   // Not compiled yet: this block counts towards the threshold (and may compile it).
   NativeProgramCache& cache = NativeProgramCache::instance();
-  NativePixelFunction f = found->entry->function();
-  if (!f && cache.drawn(found->entry, 1)) f = cache.compile(found->entry, program, variantFor(prim, layout, gang, isa));
+  auto f = reinterpret_cast<NativePixelFunction>(found->entry->function());
+  if (!f && cache.drawn(found->entry, 1))
+    f = reinterpret_cast<NativePixelFunction>(cache.compile(found->entry, program, &variantFor(prim, layout, gang, isa)));
   found->fn.fn = f;
   found->never = !f && found->entry->settled();
   return found->fn;
+}
+
+const float* NativeBlocks::stateValues(const RasterState& state) {
+  if (!values_valid_ || !(values_state_ == state)) {
+    for (int k = 0; k < kStateValueCount; ++k) state_values_[k] = stateValue(state, static_cast<uint16_t>(k));
+    values_state_ = state;
+    values_valid_ = true;
+  }
+  return state_values_;
+}
+
+bool NativeBlocks::verdict(const PixelProgram& program, const uint32_t* record, const RasterState& state,
+                           const double region[4], uint32_t& out) {
+  auto matches = [&](const FoundWalk& f) {
+    return f.program == &program && f.code == program.code.data() && f.code_size == program.code.size();
+  };
+  FoundWalk* found = nullptr;
+  if (last_walk_ < walks_.size() && matches(walks_[last_walk_])) {
+    found = &walks_[last_walk_];
+  } else {
+    for (size_t i = 0; i < walks_.size() && !found; ++i)
+      if (matches(walks_[i])) {
+        last_walk_ = i;
+        found = &walks_[i];
+      }
+    if (!found) {
+      NativeProgramCache::Entry* e = NativeProgramCache::instance().verdictEntry(program);
+      walks_.push_back(FoundWalk{&program, program.code.data(), program.code.size(), e, nullptr, false, readsState(program)});
+      last_walk_ = walks_.size() - 1;
+      found = &walks_.back();
+    }
+  }
+  if (!found->fn && !found->never) {
+    // A region's verdict answers for up to 16 blocks: counted as such towards the threshold.
+    NativeProgramCache& cache = NativeProgramCache::instance();
+    auto f = reinterpret_cast<NativeVerdictFunction>(found->entry->function());
+    if (!f && cache.drawn(found->entry, 16))
+      f = reinterpret_cast<NativeVerdictFunction>(cache.compile(found->entry, program, nullptr));
+    found->fn = f;
+    found->never = !f && found->entry->settled();
+  }
+  if (!found->fn) return false;
+  out = found->fn(record, found->reads_state ? stateValues(state) : nullptr, region);
+  return true;
 }
 
 uint64_t NativeBlocks::run(const NativeBlockFunction& fn, const CompiledPrimitive& prim, const uint32_t* record, const ChannelLayout& layout, const RasterState& state,
@@ -130,14 +177,7 @@ uint64_t NativeBlocks::run(const NativeBlockFunction& fn, const CompiledPrimitiv
   }
   a.depth = target.depth;
   a.depth_stride = target.depth_stride;
-  if (fn.reads_state) {
-    if (!values_valid_ || !(values_state_ == state)) {
-      for (int k = 0; k < kStateValueCount; ++k) state_values_[k] = stateValue(state, static_cast<uint16_t>(k));
-      values_state_ = state;
-      values_valid_ = true;
-    }
-    a.state_values = state_values_;
-  }
+  if (fn.reads_state) a.state_values = stateValues(state);
   a.shade_ids = target.shade_ids;
   float* planes[kMaxChannels];
   const int channels = std::min(layout.count, kMaxChannels);

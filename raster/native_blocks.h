@@ -42,6 +42,12 @@ class NativeBlocks {
                int bx, int by, const PackedLanes* packed, uint64_t mask, const BlockTarget& target,
                const uint32_t* shared_records, uint64_t& cap_lanes, const CompiledPrimitive*& cap_primitive);
 
+  // Block rejection's verdict for `program` over the region of pixel centres
+  // [x_lo, x_hi] x [y_lo, y_hi] by native code (compiler/native/interval_codegen.h): the
+  // interpreter's verdict, or false when native code does not (yet) walk this program.
+  bool verdict(const PixelProgram& program, const uint32_t* record, const RasterState& state, const double region[4],
+               uint32_t& out);
+
   // Forgets what it found (keyed by addresses a later frame may reuse).
   void startFrame();
 
@@ -57,6 +63,17 @@ class NativeBlocks {
     NativeBlockFunction fn;  // fn.fn set once the entry has a function
     bool never;              // the entry settled without one
   };
+  struct FoundWalk {
+    const PixelProgram* program;
+    const Instr* code;
+    size_t code_size;
+    NativeProgramCache::Entry* entry;
+    NativeVerdictFunction fn;
+    bool never, reads_state;
+  };
+  std::vector<FoundWalk> walks_;
+  size_t last_walk_ = 0;
+  const float* stateValues(const RasterState& state);
   // The variant `program` of `prim` runs in with `layout` (into variant_).
   const NativePixelVariant& variantFor(const CompiledPrimitive& prim, const ChannelLayout& layout, bool gang,
                                        NativeIsa isa);

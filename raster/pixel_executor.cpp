@@ -45,18 +45,27 @@ RegionVerdict PixelExecutor::regionVerdict(const PixelProgram& program, const ui
   constexpr int kPerRow = kTileSize / kRejectionRegion;
   RegionMemo& v = region_memos_[(rx / kRejectionRegion) % kPerRow + (ry / kRejectionRegion) % kPerRow * kPerRow];
   const size_t words = program.num_uniform_slots;
+  // The same record (by address: records do not change while a frame runs, and startFrame
+  // forgets the memos), else the same values.
+  if (v.program == &program && v.x == rx && v.y == ry && v.record_address == record) return v.verdict;
   if (v.program != &program || v.x != rx || v.y != ry || v.record.size() != words ||
       !std::equal(v.record.begin(), v.record.end(), record)) {
     // The verdict before the key: if evaluating fails (std::bad_alloc), no key names a stale one.
     v.program = nullptr;
+    // Native code's walk where there is some (the same verdict), else the interpreter's.
+    const double region[4] = {rx + 0.5, rx + kRejectionRegion - 0.5, ry + 0.5, ry + kRejectionRegion - 0.5};
+    uint32_t native = 0;
     const RegionVerdict verdict =
-        rejection_.verdict(program, record, state, rx, ry, rx + kRejectionRegion, ry + kRejectionRegion);
+        use_native && native_.verdict(program, record, state, region, native)
+            ? static_cast<RegionVerdict>(native)
+            : rejection_.verdict(program, record, state, rx, ry, rx + kRejectionRegion, ry + kRejectionRegion);
     v.record.assign(record, record + words);
     v.x = rx;
     v.y = ry;
     v.verdict = verdict;
     v.program = &program;
   }
+  v.record_address = record;
   return v.verdict;
 }
 

@@ -162,6 +162,7 @@ class PixelExecutor {
     const PixelProgram* program = nullptr;
     int x = -1, y = -1;
     std::vector<uint32_t> record;
+    const uint32_t* record_address = nullptr;  // the record last found to hold those values
     RegionVerdict verdict = RegionVerdict::Unknown;
   };
   RegionMemo region_memos_[(kTileSize / kRejectionRegion) * (kTileSize / kRejectionRegion)];

@@ -86,8 +86,9 @@ class KeyWriter {
 
 enum class Built { Yes, Unsupported, Unavailable, Broken };
 
-// A module holding the pixel function for `program`, named `name`, with its target set.
-Built buildModule(const PixelProgram& program, const NativePixelVariant& variant, const std::string& name,
+// A module holding the pixel function for `program` under `variant` -- or, without a variant,
+// its block-rejection walk -- named `name`, with its target set.
+Built buildModule(const PixelProgram& program, const NativePixelVariant* variant, const std::string& name,
                   llvm::LLVMContext& context, std::unique_ptr<llvm::Module>& module, std::string& error) {
   JitEngine* engine = JitEngine::instance();
   if (!engine) {
@@ -95,9 +96,11 @@ Built buildModule(const PixelProgram& program, const NativePixelVariant& variant
     return Built::Unavailable;
   }
   module = std::make_unique<llvm::Module>("primflow." + name, context);
-  llvm::Function* fn = buildPixelFunction(*module, name, program, variant, error);
+  llvm::Function* fn = variant ? buildPixelFunction(*module, name, program, *variant, error)
+                               : buildVerdictFunction(*module, name, program, error);
   if (!fn) return Built::Unsupported;
-  engine->setTarget(*fn, variant.isa);
+  // (The walk is scalar code: the baseline instruction set computes it as well as any.)
+  engine->setTarget(*fn, variant ? variant->isa : NativeIsa::Sse2);
   std::string problems;
   llvm::raw_string_ostream os(problems);
   if (llvm::verifyModule(*module, &os)) {
@@ -146,15 +149,32 @@ NativeCacheStats NativeProgramCache::stats() const {
   return impl_->stats;
 }
 
-NativeProgramCache::Entry* NativeProgramCache::entry(const PixelProgram& program, const NativePixelVariant& variant) {
+NativeProgramCache::Entry* NativeProgramCache::pixelEntry(const PixelProgram& program, const NativePixelVariant& variant) {
   thread_local std::string key;
   KeyWriter w(key);
+  w.put('p');
   w.program(program);
   w.variant(variant);
   std::lock_guard<std::mutex> lock(impl_->mutex);
   auto it = impl_->entries.find(key);
   if (it != impl_->entries.end()) return it->second.get();
   return impl_->entries.emplace(key, std::make_unique<Entry>()).first->second.get();
+}
+
+NativeProgramCache::Entry* NativeProgramCache::verdictEntry(const PixelProgram& program) {
+  thread_local std::string key;
+  KeyWriter w(key);
+  w.put('v');
+  w.program(program);
+  w.put(program.last_early_retire);
+  w.put(program.last_coverage_retire);
+  w.put(program.covered != nullptr);
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  auto it = impl_->entries.find(key);
+  if (it != impl_->entries.end()) return it->second.get();
+  Entry* e = impl_->entries.emplace(key, std::make_unique<Entry>()).first->second.get();
+  e->verdict_ = true;
+  return e;
 }
 
 bool NativeProgramCache::drawn(Entry* entry, uint64_t blocks) {
@@ -165,25 +185,24 @@ bool NativeProgramCache::drawn(Entry* entry, uint64_t blocks) {
   return entry->status_.compare_exchange_strong(cold, Entry::kCompiling, std::memory_order_acq_rel);
 }
 
-NativePixelFunction NativeProgramCache::compile(Entry* entry, const PixelProgram& program,
-                                                const NativePixelVariant& variant) {
+void* NativeProgramCache::compile(Entry* entry, const PixelProgram& program, const NativePixelVariant* variant) {
   uint64_t serial;
   {
     std::lock_guard<std::mutex> lock(impl_->mutex);
     serial = impl_->serial++;
   }
   const auto start = std::chrono::steady_clock::now();
-  NativePixelFunction function = nullptr;
+  void* function = nullptr;
   bool refused = false, failed = false;
   std::string error;
   auto context = std::make_unique<llvm::LLVMContext>();
   std::unique_ptr<llvm::Module> module;
-  const std::string name = "pf_pixel_" + std::to_string(serial);
+  const std::string name = (entry->verdict_ ? "pf_verdict_" : "pf_pixel_") + std::to_string(serial);
   std::vector<void*> addresses;
-  switch (buildModule(program, variant, name, *context, module, error)) {
+  switch (buildModule(program, entry->verdict_ ? nullptr : variant, name, *context, module, error)) {
     case Built::Yes:
       if (JitEngine::instance()->add(std::move(module), std::move(context), {name}, addresses, error))
-        function = reinterpret_cast<NativePixelFunction>(addresses[0]);
+        function = addresses[0];
       else
         failed = true;
       break;
@@ -192,8 +211,8 @@ NativePixelFunction NativeProgramCache::compile(Entry* entry, const PixelProgram
     case Built::Broken: failed = true; break;
   }
   if (failed)
-    std::fprintf(stderr, "primflow: native code for a pixel program failed (%s): it runs on the interpreter\n",
-                 error.c_str());
+    std::fprintf(stderr, "primflow: native code for a %s failed (%s): it runs on the interpreter\n",
+                 entry->verdict_ ? "block-rejection walk" : "pixel program", error.c_str());
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   {
     std::lock_guard<std::mutex> lock(impl_->mutex);
@@ -211,7 +230,7 @@ bool nativePixelListing(const PixelProgram& program, const NativePixelVariant& v
                         std::string& error) {
   llvm::LLVMContext context;
   std::unique_ptr<llvm::Module> module;
-  if (buildModule(program, variant, "pf_pixel", context, module, error) != Built::Yes) return false;
+  if (buildModule(program, &variant, "pf_pixel", context, module, error) != Built::Yes) return false;
   listing = JitEngine::instance()->listing(*module);
   return true;
 }

@@ -18,6 +18,7 @@
 #include <string>
 
 #include "compiler/isa.h"
+#include "compiler/native/interval_codegen.h"
 #include "compiler/native/native_abi.h"
 
 namespace pf {
@@ -45,8 +46,9 @@ class NativeProgramCache {
   // One key's state; found or made by entry(), never freed.
   class Entry {
    public:
-    // The compiled function, or null (not yet, or never: settled()).
-    NativePixelFunction function() const { return function_.load(std::memory_order_acquire); }
+    // The compiled function (a NativePixelFunction or a NativeVerdictFunction, as the entry
+    // was made), or null (not yet, or never: settled()).
+    void* function() const { return function_.load(std::memory_order_acquire); }
     // Whether function() is what it will stay: compiled, or never to be (native code does not
     // run the program, or LLVM failed on it).
     bool settled() const { return status_.load(std::memory_order_acquire) >= kReady; }
@@ -54,19 +56,21 @@ class NativeProgramCache {
    private:
     friend class NativeProgramCache;
     enum : uint8_t { kCold, kCompiling, kReady, kNone };
-    std::atomic<NativePixelFunction> function_{nullptr};
+    bool verdict_ = false;  // block rejection's walk (interval_codegen.h), not a pixel program
+    std::atomic<void*> function_{nullptr};
     std::atomic<uint8_t> status_{kCold};
     std::atomic<uint64_t> blocks_{0};
   };
 
-  // The entry of `program` under `variant`.
-  Entry* entry(const PixelProgram& program, const NativePixelVariant& variant);
+  // The entry of `program` under `variant`; of its block-rejection walk (interval_codegen.h).
+  Entry* pixelEntry(const PixelProgram& program, const NativePixelVariant& variant);
+  Entry* verdictEntry(const PixelProgram& program);
   // Counts `blocks` more blocks drawn with the entry's key on the interpreter; true when they
   // passed the threshold and the caller is the one to compile() it.
   bool drawn(Entry* entry, uint64_t blocks);
-  // Compiles the entry (`program` and `variant` must be its key's) and returns its function,
-  // or null if native code does not run it.
-  NativePixelFunction compile(Entry* entry, const PixelProgram& program, const NativePixelVariant& variant);
+  // Compiles the entry (`program` and `variant` must be its key's; no variant for a verdict
+  // entry) and returns its function, or null if native code does not run it.
+  void* compile(Entry* entry, const PixelProgram& program, const NativePixelVariant* variant);
 
   // The threshold (kDefaultNativeThreshold or PF_JIT_THRESHOLD at start-up); tests set 0.
   uint64_t threshold() const { return threshold_.load(std::memory_order_relaxed); }

@@ -22,14 +22,19 @@ NativeProgramCache& NativeProgramCache::instance() {
   return *cache;
 }
 
-NativeProgramCache::Entry* NativeProgramCache::entry(const PixelProgram&, const NativePixelVariant&) {
+NativeProgramCache::Entry* NativeProgramCache::pixelEntry(const PixelProgram&, const NativePixelVariant&) {
   static Entry none;  // never compiled
+  return &none;
+}
+
+NativeProgramCache::Entry* NativeProgramCache::verdictEntry(const PixelProgram&) {
+  static Entry none;
   return &none;
 }
 
 bool NativeProgramCache::drawn(Entry*, uint64_t) { return false; }
 
-NativePixelFunction NativeProgramCache::compile(Entry*, const PixelProgram&, const NativePixelVariant&) { return nullptr; }
+void* NativeProgramCache::compile(Entry*, const PixelProgram&, const NativePixelVariant*) { return nullptr; }
 
 NativeCacheStats NativeProgramCache::stats() const { return {}; }
 
