@@ -100,6 +100,11 @@ bool JitEngine::initialise(std::string& error) {
   error = "native code is generated for x86-64 only";
   return false;
 #else
+  // For the test of this fallback (tests/CMakeLists.txt: pfrender.native_code_unavailable).
+  if (const char* e = std::getenv("PF_JIT_TEST_INIT_FAILURE"); e && *e && std::strcmp(e, "0") != 0) {
+    error = "PF_JIT_TEST_INIT_FAILURE is set";
+    return false;
+  }
   if (llvm::InitializeNativeTarget() || llvm::InitializeNativeTargetAsmPrinter()) {
     error = "LLVM has no target for this host";
     return false;

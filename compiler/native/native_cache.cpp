@@ -153,6 +153,7 @@ NativeProgramCache::Entry* NativeProgramCache::pixelEntry(const PixelProgram& pr
   thread_local std::string key;
   KeyWriter w(key);
   w.put('p');
+  w.put(nativeFaultForTesting());
   w.program(program);
   w.variant(variant);
   std::lock_guard<std::mutex> lock(impl_->mutex);

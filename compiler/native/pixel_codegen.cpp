@@ -4,6 +4,7 @@
 #include "compiler/native/pixel_codegen.h"
 
 #include <cstddef>
+#include <atomic>
 #include <functional>
 
 #include <llvm/IR/Function.h>
@@ -13,6 +14,13 @@
 #include "compiler/native/pixel_codegen_impl.h"
 
 namespace pf {
+
+namespace {
+std::atomic<NativeFault> fault_for_testing{NativeFault::None};
+}  // namespace
+
+void setNativeFaultForTesting(NativeFault fault) { fault_for_testing.store(fault); }
+NativeFault nativeFaultForTesting() { return fault_for_testing.load(); }
 
 bool nativePixelSupports(const PixelProgram& program, std::string* why) {
   for (const Instr& in : program.code)
@@ -31,12 +39,13 @@ llvm::Function* buildPixelFunction(llvm::Module& module, const std::string& name
       if (!s.pixel) error = "a shared interpolator without a program";
       return nullptr;
     }
-  PixelCodegen g(module, variant);
+  PixelCodegen g(module, variant, nativeFaultForTesting());
   return g.build(name, program, error);
 }
 
-PixelCodegen::PixelCodegen(llvm::Module& module, const NativePixelVariant& variant)
-    : module_(module),
+PixelCodegen::PixelCodegen(llvm::Module& module, const NativePixelVariant& variant, NativeFault fault)
+    : fault_(fault),
+      module_(module),
       ctx_(module.getContext()),
       b_(module.getContext()),
       variant_(variant),
@@ -142,7 +151,7 @@ llvm::Function* PixelCodegen::build(const std::string& name, const PixelProgram&
 
   b_.SetInsertPoint(commit_block);
   llvm::Value* alive = b_.CreateLoad(mv_, prim.alive, "alive");
-  commit(alive);
+  commit(fault_ == NativeFault::CommitWithoutMask ? allLanes(true) : alive);
   llvm::Value* alive_bits = b_.CreateZExt(b_.CreateBitCast(alive, b_.getIntNTy(width_)), b_.getInt64Ty());
   llvm::Value* shifted = b_.CreateShl(alive_bits, b_.CreateZExt(first_lane_, b_.getInt64Ty()));
   b_.CreateStore(b_.CreateOr(b_.CreateLoad(b_.getInt64Ty(), result_slot), shifted), result_slot);
@@ -259,7 +268,7 @@ void PixelCodegen::setReg(Env& env, uint32_t dst, llvm::Value* v, bool masked) {
   if (dst == kNoOperand || operandKind(dst) != OperandKind::Reg) return;
   const uint32_t i = operandIndex(dst);
   if (i >= env.regs.size()) return;
-  if (masked)
+  if (masked && fault_ != NativeFault::MergeWithoutMask)
     maskedAssign(env.regs[i], v, exec(env));
   else
     b_.CreateStore(v, env.regs[i]);

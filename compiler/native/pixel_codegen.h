@@ -21,6 +21,13 @@ class Module;
 
 namespace pf {
 
+// Deliberate miscompiles, for the test that checks the suite catches one (a mask dropped):
+// merge values written in every lane, or every lane committed. Part of the cache key, so a
+// faulty function never runs for a key compiled without the fault.
+enum class NativeFault : uint8_t { None, MergeWithoutMask, CommitWithoutMask };
+void setNativeFaultForTesting(NativeFault fault);
+NativeFault nativeFaultForTesting();
+
 // Whether native code can run `program`; if not, `why` says what stops it.
 bool nativePixelSupports(const PixelProgram& program, std::string* why = nullptr);
 

@@ -15,12 +15,13 @@
 #include "compiler/isa.h"
 #include "compiler/native/mask_frames.h"
 #include "compiler/native/native_abi.h"
+#include "compiler/native/pixel_codegen.h"
 
 namespace pf {
 
 class PixelCodegen {
  public:
-  PixelCodegen(llvm::Module& module, const NativePixelVariant& variant);
+  PixelCodegen(llvm::Module& module, const NativePixelVariant& variant, NativeFault fault);
   llvm::Function* build(const std::string& name, const PixelProgram& program, std::string& error);
 
  private:
@@ -84,6 +85,8 @@ class PixelCodegen {
   using Values = std::vector<llvm::Value*>;
   Values byShape(const std::function<Values()>& aligned, const std::function<Values()>& packed,
                  llvm::Value* when = nullptr, const Values& otherwise = {});
+
+  const NativeFault fault_;  // (tests only: pixel_codegen.h)
 
   // --- shared --------------------------------------------------------------------------------
   llvm::Value* argField(size_t offset, llvm::Type* type, const char* name);

@@ -1,0 +1,205 @@
+// Native pixel programs (compiler/native/) as the rasterizer uses them: the comparison with the
+// interpreter catches a planted miscompile; the process-wide cache compiles a program once for
+// any number of contexts; a primitive recompiled under the same name draws its new code in new
+// draws while draws recorded before still draw the old.
+#include <gtest/gtest.h>
+
+#include <primflow/gl.h>
+
+#include <bit>
+#include <vector>
+
+#include "api/src/context_state.h"
+#include "compile_helpers.h"
+#include "compiler/native/native_cache.h"
+#include "compiler/native/pixel_codegen.h"
+
+using namespace pf;
+using namespace pf::test;
+
+namespace {
+
+// A disc whose pixels take one value or another by a varying if (a merge value), drawn
+// perspective-correctly into 2 channels.
+const char* kShadedDisc = R"(
+primitive shaded_disc(float k[1][3]; interpolator_data d[1]; varying float X, Y; inout varying float Z) {
+    float dx = X - k[0][0];
+    float dy = Y - k[0][1];
+    if (dx * dx + dy * dy > k[0][2]) return;
+    float shade = 0.25;
+    if (dx > 0) shade = 0.75;
+    if (!ztest(shade)) return;
+    Z = shade;
+    interpolation {
+    perspective_linear: interpolator_return(d[0] * shade);
+    default: interpolator_return;
+    }
+}
+)";
+
+struct Drawn {
+  std::vector<float> depth, channels;
+  std::vector<uint32_t> ids;
+  uint64_t native_blocks = 0;
+};
+
+// One 8x8 block of the disc at (3.5, 4.5), radius^2 9, through the interpreter or native code.
+Drawn drawDisc(const CompiledPrimitive& prim, bool native) {
+  const ChannelLayout layout = ChannelLayout::ofKind(2, InterpKind::PerspectiveLinear);
+  RasterState st;
+  st.vp_scale_x = st.vp_offset_x = st.vp_scale_y = st.vp_offset_y = 4;
+  st.vp_x1 = st.vp_y1 = 8;
+  st.depth_test = true;
+  const std::vector<float> k = {3.5f, 4.5f, 9.0f};
+  std::vector<uint32_t> params;
+  for (float v : k) params.push_back(std::bit_cast<uint32_t>(v));
+  const std::vector<float> channels = {2.0f, 4.0f};
+  std::vector<uint32_t> record(SetupExecutor::recordWords(prim, 2) + 1);
+  SetupExecutor setup;
+  EXPECT_FALSE(setup.run(prim, SetupInput{params.data(), channels.data(), &layout, &st, 1}, record.data()).killed);
+  Drawn d;
+  d.depth.assign(64, 1.0f);
+  d.ids.assign(64 * 64, 0u);
+  d.channels.assign(2 * 4096, 0.0f);
+  std::vector<float*> planes = {d.channels.data(), d.channels.data() + 4096};
+  BlockTarget t;
+  t.depth = d.depth.data();
+  t.depth_stride = 8;
+  t.shade_ids = d.ids.data();
+  t.slots = planes.data();
+  PixelExecutor ex;
+  ex.use_native = native;
+  ex.runBlock(prim, record.data(), layout, st, 1, 0, 0, ~0ull, t);
+  d.native_blocks = ex.counters.blocks_native;
+  return d;
+}
+
+// Depth entries, shading ids and channel values that differ.
+size_t differences(const Drawn& a, const Drawn& b) {
+  size_t n = 0;
+  for (size_t i = 0; i < a.depth.size(); ++i) n += std::bit_cast<uint32_t>(a.depth[i]) != std::bit_cast<uint32_t>(b.depth[i]);
+  for (size_t i = 0; i < a.ids.size(); ++i) n += a.ids[i] != b.ids[i];
+  for (size_t i = 0; i < a.channels.size(); ++i)
+    n += std::bit_cast<uint32_t>(a.channels[i]) != std::bit_cast<uint32_t>(b.channels[i]);
+  return n;
+}
+
+struct FaultPlanted {
+  explicit FaultPlanted(NativeFault f) { setNativeFaultForTesting(f); }
+  ~FaultPlanted() { setNativeFaultForTesting(NativeFault::None); }
+};
+
+}  // namespace
+
+TEST(NativeCode, APlantedMiscompileIsCaught) {
+  if (!nativeCodeAvailable()) GTEST_SKIP() << "native code is unavailable here";
+  NativeProgramCache::instance().setThreshold(0);
+  Compiled c = compile(kShadedDisc);
+  ASSERT_TRUE(c.ok) << c.diagnostics;
+  const CompiledPrimitive& prim = *c.find("shaded_disc");
+  const Drawn interpreted = drawDisc(prim, false);
+  const Drawn native = drawDisc(prim, true);
+  EXPECT_EQ(native.native_blocks, 1u);
+  EXPECT_EQ(differences(interpreted, native), 0u);
+  for (NativeFault fault : {NativeFault::MergeWithoutMask, NativeFault::CommitWithoutMask}) {
+    const FaultPlanted planted(fault);
+    const Drawn wrong = drawDisc(prim, true);
+    EXPECT_EQ(wrong.native_blocks, 1u);
+    EXPECT_GT(differences(interpreted, wrong), 0u) << "fault " << static_cast<int>(fault) << " went unnoticed";
+  }
+  // The faulty functions were keyed apart: the correct one is still what runs.
+  EXPECT_EQ(differences(interpreted, drawDisc(prim, true)), 0u);
+}
+
+namespace {
+
+struct Context {
+  std::vector<unsigned char> pixels = std::vector<unsigned char>(64 * 64 * 4);
+  PFcontext ctx;
+  explicit Context(int native) {
+    const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_THREADS, 1, PF_JIT, native, 0};
+    ctx = pfCreateContextAttribs(attribs);
+    EXPECT_TRUE(ctx && pfMakeCurrent(ctx, pixels.data(), GL_UNSIGNED_BYTE, 64, 64));
+    pfglMatrixMode(GL_PROJECTION);
+    pfglOrtho(0, 64, 0, 64, -1, 1);
+    pfglEnable(GL_DEPTH_TEST);
+    pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  }
+  ~Context() {
+    pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
+    pfDestroyContext(ctx);
+  }
+};
+
+void drawTriangles() {
+  pfglBegin(GL_TRIANGLES);
+  for (int i = 0; i < 6; ++i) {
+    pfglColor3f(0.1f * i, 0.5f, 1.0f - 0.1f * i);
+    pfglVertex2f(2.0f + 9 * i, 3.0f);
+    pfglVertex2f(60.0f - 5 * i, 10.0f + 7 * i);
+    pfglVertex2f(5.0f + 3 * i, 61.0f - 2 * i);
+  }
+  pfglEnd();
+}
+
+}  // namespace
+
+TEST(NativeCode, TwoContextsCompileOnce) {
+  if (!nativeCodeAvailable()) GTEST_SKIP() << "native code is unavailable here";
+  NativeProgramCache::instance().setThreshold(0);
+  uint64_t first_compiles = 0;
+  std::vector<unsigned char> first_image;
+  for (int round = 0; round < 2; ++round) {
+    const uint64_t before = NativeProgramCache::instance().stats().compiled;
+    Context c(1);
+    drawTriangles();
+    pfglFinish();
+    EXPECT_GT(c.ctx->renderer.stats().blocks_native, 0u);
+    const uint64_t compiled = NativeProgramCache::instance().stats().compiled - before;
+    if (round == 0) {
+      first_compiles = compiled;
+      first_image = c.pixels;
+      EXPECT_GT(compiled, 0u) << "the first context compiled nothing";
+    } else {
+      EXPECT_EQ(compiled, 0u) << "the second context compiled again what the first had (" << first_compiles << ")";
+      EXPECT_EQ(c.pixels, first_image);
+    }
+  }
+}
+
+TEST(NativeCode, ARecompiledPrimitiveDrawsItsNewCodeAfterPendingDrawsOfTheOld) {
+  NativeProgramCache::instance().setThreshold(0);
+  // Version 1 writes depth 0.25 left of its vertex, version 2 depth 0.75: both are drawn in one
+  // frame, the first instance before the recompile, the second after.
+  auto version = [](float z) {
+    return "primitive strip(point vertex[1]; inout varying float Z) {\n"
+           "  if (X > screen(vertex[0]).x) return;\n"
+           "  if (!ztest(" + std::to_string(z) + ")) return;\n"
+           "  Z = " + std::to_string(z) + ";\n"
+           "}\n";
+  };
+  std::vector<std::vector<float>> depths;
+  for (int native : {0, 1}) {
+    Context c(native);
+    pfglDepthFunc(GL_ALWAYS);
+    ASSERT_NE(pfglCompilePrimitivesEXT(version(0.25f).c_str()), 0u);
+    pfglBegin(pfglGetPrimitiveEXT("strip"));
+    pfglVertex2f(40.0f, 1.0f);
+    pfglEnd();
+    ASSERT_NE(pfglCompilePrimitivesEXT(version(0.75f).c_str()), 0u);
+    pfglBegin(pfglGetPrimitiveEXT("strip"));
+    pfglVertex2f(20.0f, 1.0f);
+    pfglEnd();
+    GLint w, h, b;
+    void* d;
+    ASSERT_TRUE(pfGetDepthBuffer(c.ctx, &w, &h, &b, &d));
+    const float* depth = static_cast<const float*>(d);
+    depths.emplace_back(depth, depth + 64 * 64);
+    if (native && nativeCodeAvailable()) EXPECT_GT(c.ctx->renderer.stats().blocks_native, 0u);
+    EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  }
+  for (const std::vector<float>& depth : depths)
+    for (int x = 0; x < 64; ++x)  // the new version over the old where both draw
+      EXPECT_EQ(depth[5 * 64 + x], x + 0.5f <= 20.0f ? 0.75f : x + 0.5f <= 40.0f ? 0.25f : 1.0f) << x;
+  EXPECT_TRUE(depths[0] == depths[1]);
+}
