@@ -35,6 +35,11 @@ std::vector<double> timePrimflow(const SceneData& s, int warmup, int frames, int
   work->pixels_shaded = st.pixels_shaded / f;
   work->setup_instructions = st.setup_instructions / f;
   work->pixel_instructions = st.pixel_instructions / f;
+  work->blocks_run = st.blocks_run / f;
+  work->blocks_native = st.blocks_native / f;
+  work->blocks_rejected = st.blocks_rejected / f;
+  work->blocks_accepted = st.blocks_accepted / f;
+  work->blocks_packed = st.blocks_packed / f;
   if (image) *image = readFrame(s);
   pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
   pfDestroyContext(ctx);

@@ -30,7 +30,8 @@ struct FrameWork {
   uint64_t pixels_run = 0;          // pixel-program runs (lanes started)
   uint64_t pixels_shaded = 0;
   uint64_t setup_instructions = 0;  // executed by setup programs
-  uint64_t pixel_instructions = 0;  // executed by pixel programs, once per 8x8 block
+  uint64_t pixel_instructions = 0;  // executed by interpreted pixel programs, once per 8x8 block
+  uint64_t blocks_run = 0, blocks_native = 0, blocks_rejected = 0, blocks_accepted = 0, blocks_packed = 0;
 };
 
 std::vector<double> timePrimflow(const SceneData& s, int warmup, int frames, int threads, FrameWork* work,

@@ -97,6 +97,14 @@ bool PixelExecutor::blockRejectionWanted() { return std::getenv("PF_NO_BLOCK_REJ
 
 bool PixelExecutor::nativeWanted() { return nativeCodeWantedByEnvironment(); }
 
+bool PixelExecutor::rejectsRegion(const CompiledPrimitive& prim, const uint32_t* record, const RasterState& state, int x,
+                                  int y, uint64_t blocks) {
+  if (prim.pixel.last_early_retire < 0 || !use_block_rejection) return false;
+  if (regionVerdict(prim.pixel, record, state, x, y) != RegionVerdict::Rejected) return false;
+  counters.blocks_rejected += blocks;
+  return true;
+}
+
 void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* record,
                              const ChannelLayout& layout, const RasterState& state,
                              uint32_t shade_id, int bx, int by, uint64_t mask,

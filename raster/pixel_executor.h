@@ -100,6 +100,11 @@ class PixelExecutor {
                     const ChannelLayout& layout, const RasterState& state, uint32_t shade_id,
                     const PackedLanes& lanes, uint64_t mask, const BlockTarget& target,
                     const uint32_t* shared_records = nullptr);
+  // Whether block rejection proves that `prim` draws no pixel of the kRejectionRegion square
+  // region holding (x, y) (block_rejection.h; the verdict is remembered for the region's
+  // blocks): the renderer then skips the region's blocks at once. Counts them as rejected.
+  bool rejectsRegion(const CompiledPrimitive& prim, const uint32_t* record, const RasterState& state, int x, int y,
+                     uint64_t blocks);
   // Whether `prim` drawn with `layout` may run on packed lanes: none of its programs casts the
   // rays of an aligned block (FieldHit).
   static bool packs(const CompiledPrimitive& prim, const ChannelLayout& layout);

@@ -518,9 +518,23 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
         s.executor.runPackedBlock(*inst.prim, record, layout, state, inst.shade_id, lanes, (1ull << n) - 1, target,
                                   shared);
     } else {
-      // Blocks are aligned to the tile; lanes outside the instance's pixels start retired.
-      for (int by = y0 + cby0 * kBlockSize; by < iy1; by += kBlockSize) {
-        for (int bx = x0 + cbx0 * kBlockSize; bx < ix1; bx += kBlockSize) {
+      // Blocks are aligned to the tile; lanes outside the instance's pixels start retired. A
+      // bound larger than a rejection region is walked a region at a time, and a region block
+      // rejection rejects is skipped whole (its verdict holds for partly covered blocks too).
+      const bool by_regions = iy1 - iy0 >= kRejectionRegion && ix1 - ix0 >= kRejectionRegion;
+      const int step = by_regions ? kRejectionRegion : kTileSize;
+      const int rx0 = (ix0 - x0) / step * step + x0, ry0 = (iy0 - y0) / step * step + y0;
+      for (int ry = ry0; ry < iy1; ry += step)
+        for (int rx = rx0; rx < ix1; rx += step) {
+          const int rbx0 = std::max(x0 + cbx0 * kBlockSize, rx), rby0 = std::max(y0 + cby0 * kBlockSize, ry);
+          const int rbx1 = std::min(ix1, rx + step), rby1 = std::min(iy1, ry + step);
+          if (by_regions) {
+            const uint64_t blocks = static_cast<uint64_t>((rbx1 - rbx0 + kBlockSize - 1) / kBlockSize) *
+                                    static_cast<uint64_t>((rby1 - rby0 + kBlockSize - 1) / kBlockSize);
+            if (s.executor.rejectsRegion(*inst.prim, record, state, rx, ry, blocks)) continue;
+          }
+      for (int by = rby0; by < rby1; by += kBlockSize) {
+        for (int bx = rbx0; bx < rbx1; bx += kBlockSize) {
           if (cull && depthFails((bx - x0) / kBlockSize, (by - y0) / kBlockSize)) continue;
           // The columns [ix0, ix1) of a row, then that row in every row of [iy0, iy1).
           const int c0 = std::max(ix0 - bx, 0), c1 = std::min(ix1 - bx, kBlockSize);
@@ -537,6 +551,7 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
           if (mask) s.executor.runBlock(*inst.prim, record, layout, state, inst.shade_id, bx, by, mask, target, shared);
         }
       }
+        }
     }
     // What it wrote to the depth buffer: those blocks' ranges are stale.
     if (depth_ && state.depth_test && state.depth_write && s.executor.counters.lanes_committed != committed_before)
