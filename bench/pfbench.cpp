@@ -21,6 +21,7 @@
 #include <sstream>
 
 #include "bench/scene_data.h"
+#include "compiler/native/native_cache.h"
 #include "raster/lane_kernels.h"
 
 namespace pfbench {
@@ -108,6 +109,8 @@ int main(int argc, char** argv) {
                  "comma-separated instruction sets of the pixel kernels to time primflow with (sse2, avx2, avx512, "
                  "or all the machine runs; default: the one chosen at start-up)");
   CLI11_PARSE(app, argc, argv);
+  // Native code unless PF_JIT=0 (bench/run times both, interleaved).
+  const bool native = pf::nativeCodeWantedByEnvironment();
   std::vector<pf::LaneIsa> lane_isas;
   {
     std::stringstream names(lanes);
@@ -174,7 +177,8 @@ int main(int argc, char** argv) {
                     static_cast<unsigned long long>(w.blocks_rejected));
       rows << name << "," << threads << "," << ref << "," << ours << "," << (ref > 0 ? ours / ref : 0) << ","
            << w.pixels_run << "," << w.pixels_shaded << "," << w.setup_instructions << "," << w.pixel_instructions << ","
-           << pf::laneIsaName(isa) << "," << diff.pixels_beyond << "," << diff.max_channel << "\n";
+           << pf::laneIsaName(isa) << "," << diff.pixels_beyond << "," << diff.max_channel << "," << (native ? 1 : 0) << ","
+           << share << "\n";
     }
   }
   if (!csv.empty()) {
@@ -182,7 +186,7 @@ int main(int argc, char** argv) {
     std::ofstream out(csv, std::ios::app);
     if (fresh)
       out << "scene,threads,llvmpipe_ms,primflow_ms,ratio,pixels_run,pixels_shaded,setup_instructions,pixel_instructions,"
-             "lanes,pixels_beyond_tolerance,max_channel_difference\n";
+             "lanes,pixels_beyond_tolerance,max_channel_difference,native,native_blocks_percent\n";
     out << rows.str();
   }
   return check && !all_match ? 1 : 0;

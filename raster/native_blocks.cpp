@@ -114,7 +114,8 @@ NativeBlockFunction NativeBlocks::find(const CompiledPrimitive& prim, const Pixe
   NativeProgramCache& cache = NativeProgramCache::instance();
   auto f = reinterpret_cast<NativePixelFunction>(found->entry->function());
   if (!f && cache.drawn(found->entry, 1))
-    f = reinterpret_cast<NativePixelFunction>(cache.compile(found->entry, program, &variantFor(prim, layout, gang, isa)));
+    f = reinterpret_cast<NativePixelFunction>(
+        cache.compile(found->entry, program, &variantFor(prim, layout, gang, isa)));
   found->fn.fn = f;
   found->never = !f && found->entry->settled();
   return found->fn;
@@ -151,10 +152,11 @@ bool NativeBlocks::verdict(const PixelProgram& program, const uint32_t* record, 
     }
   }
   if (!found->fn && !found->never) {
-    // A region's verdict answers for up to 16 blocks: counted as such towards the threshold.
+    // (A walk costs about what a block does, and compiles slower than a pixel program: each
+    // counts as one block towards the threshold.)
     NativeProgramCache& cache = NativeProgramCache::instance();
     auto f = reinterpret_cast<NativeVerdictFunction>(found->entry->function());
-    if (!f && cache.drawn(found->entry, 16))
+    if (!f && cache.drawn(found->entry, 1))
       f = reinterpret_cast<NativeVerdictFunction>(cache.compile(found->entry, program, nullptr));
     found->fn = f;
     found->never = !f && found->entry->settled();

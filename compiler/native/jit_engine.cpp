@@ -247,27 +247,43 @@ bool JitEngine::add(std::unique_ptr<llvm::Module> module, std::unique_ptr<llvm::
                     const std::vector<std::string>& symbols, std::vector<void*>& addresses, std::string& error) {
   module->setDataLayout(state_->jit->getDataLayout());
   module->setTargetTriple(state_->jit->getTargetTriple().str());
-  auto t0 = std::chrono::steady_clock::now();
-  size_t before = 0; for (auto& f : *module) for (auto& bb : f) before += bb.size();
+  // PF_JIT_LOG=1: a line per module on stderr -- its functions, IR instructions before and
+  // after optimisation, the milliseconds each stage took.
+  static const bool log = [] {
+    const char* e = std::getenv("PF_JIT_LOG");
+    return e && *e && std::strcmp(e, "0") != 0;
+  }();
+  auto instructions = [&] {
+    size_t n = 0;
+    for (const llvm::Function& f : *module)
+      for (const llvm::BasicBlock& b : f) n += b.size();
+    return n;
+  };
+  const auto t0 = std::chrono::steady_clock::now();
+  const size_t before = log ? instructions() : 0;
   optimize(*module);
-  size_t after = 0; for (auto& f : *module) for (auto& bb : f) after += bb.size();
-  auto t1 = std::chrono::steady_clock::now();
+  const size_t after = log ? instructions() : 0;
+  const auto t1 = std::chrono::steady_clock::now();
   if (auto err = state_->jit->addIRModule(llvm::orc::ThreadSafeModule(std::move(module), std::move(context)))) {
     error = llvm::toString(std::move(err));
     return false;
   }
   addresses.clear();
   for (const std::string& s : symbols) {
-    auto address = state_->jit->lookup(s);
+    auto address = state_->jit->lookup(s);  // (compiles and links the module)
     if (!address) {
       error = llvm::toString(address.takeError());
       return false;
     }
     addresses.push_back(address->toPtr<void*>());
   }
-  auto t2 = std::chrono::steady_clock::now();
-  if (std::getenv("PF_JIT_TIMES")) std::fprintf(stderr, "jit: %zu -> %zu instructions, opt %.1f ms, codegen %.1f ms\n", before, after,
-      std::chrono::duration<double, std::milli>(t1 - t0).count(), std::chrono::duration<double, std::milli>(t2 - t1).count());
+  if (log) {
+    const auto t2 = std::chrono::steady_clock::now();
+    std::fprintf(stderr, "primflow: native %s: %zu -> %zu IR instructions, optimised in %.1f ms, compiled in %.1f ms\n",
+                 symbols.empty() ? "?" : symbols[0].c_str(), before, after,
+                 std::chrono::duration<double, std::milli>(t1 - t0).count(),
+                 std::chrono::duration<double, std::milli>(t2 - t1).count());
+  }
   return true;
 }
 

@@ -121,22 +121,25 @@ struct NativeProgramCache::Impl {
 
 namespace {
 
-uint64_t thresholdFromEnvironment() {
-  const char* e = std::getenv("PF_JIT_THRESHOLD");
-  if (!e || !*e) return kDefaultNativeThreshold;
+uint64_t thresholdFromEnvironment(const char* name, uint64_t fallback) {
+  const char* e = std::getenv(name);
+  if (!e || !*e) return fallback;
   char* end = nullptr;
   const unsigned long long v = std::strtoull(e, &end, 10);
   if (*end != '\0') {
-    std::fprintf(stderr, "primflow: PF_JIT_THRESHOLD=%s is not a number of blocks: %llu used\n", e,
-                 static_cast<unsigned long long>(kDefaultNativeThreshold));
-    return kDefaultNativeThreshold;
+    std::fprintf(stderr, "primflow: %s=%s is not a number: %llu used\n", name, e,
+                 static_cast<unsigned long long>(fallback));
+    return fallback;
   }
   return v;
 }
 
 }  // namespace
 
-NativeProgramCache::NativeProgramCache() : impl_(new Impl), threshold_(thresholdFromEnvironment()) {}
+NativeProgramCache::NativeProgramCache()
+    : impl_(new Impl),
+      threshold_(thresholdFromEnvironment("PF_JIT_THRESHOLD", kDefaultNativeThreshold)),
+      walk_threshold_(thresholdFromEnvironment("PF_JIT_WALK_THRESHOLD", kDefaultWalkThreshold)) {}
 NativeProgramCache::~NativeProgramCache() { delete impl_; }
 
 NativeProgramCache& NativeProgramCache::instance() {
@@ -180,7 +183,8 @@ NativeProgramCache::Entry* NativeProgramCache::verdictEntry(const PixelProgram& 
 
 bool NativeProgramCache::drawn(Entry* entry, uint64_t blocks) {
   if (entry->status_.load(std::memory_order_acquire) != Entry::kCold) return false;
-  if (entry->blocks_.fetch_add(blocks, std::memory_order_relaxed) + blocks <= threshold()) return false;
+  const uint64_t threshold = entry->verdict_ ? walkThreshold() : this->threshold();
+  if (entry->blocks_.fetch_add(blocks, std::memory_order_relaxed) + blocks <= threshold) return false;
   // One thread compiles (the others interpret meanwhile).
   uint8_t cold = Entry::kCold;
   return entry->status_.compare_exchange_strong(cold, Entry::kCompiling, std::memory_order_acq_rel);

@@ -10,7 +10,9 @@
 // for programs native code does not run (pixel_codegen.h), the interpreter runs them -- the same
 // bits either way. Compiling costs about as much as interpreting a few thousand blocks
 // (docs/performance.md), so a program drawn over a few blocks never pays for it. The thread
-// that passes the threshold compiles, in its own LLVMContext; the others interpret meanwhile.
+// that passes the threshold compiles, in its own LLVMContext, while the others go on
+// interpreting the program. (Not on a background thread of its own: a compile still running
+// when the process exits would run inside LLVM while its static objects are destroyed.)
 #pragma once
 
 #include <atomic>
@@ -36,8 +38,11 @@ struct NativeCacheStats {
   double milliseconds = 0;    // spent building, optimizing and compiling them
 };
 
-// Blocks a key runs on the interpreter before it is compiled, unless PF_JIT_THRESHOLD says.
+// Blocks a key runs on the interpreter before it is compiled, unless PF_JIT_THRESHOLD says;
+// for a block-rejection walk, the regions walked (PF_JIT_WALK_THRESHOLD): a walk compiles
+// several times slower than a pixel program and saves less per call (docs/performance.md).
 constexpr uint64_t kDefaultNativeThreshold = 1024;
+constexpr uint64_t kDefaultWalkThreshold = 4096;
 
 class NativeProgramCache {
  public:
@@ -65,16 +70,19 @@ class NativeProgramCache {
   // The entry of `program` under `variant`; of its block-rejection walk (interval_codegen.h).
   Entry* pixelEntry(const PixelProgram& program, const NativePixelVariant& variant);
   Entry* verdictEntry(const PixelProgram& program);
-  // Counts `blocks` more blocks drawn with the entry's key on the interpreter; true when they
-  // passed the threshold and the caller is the one to compile() it.
+  // Counts `blocks` more blocks (regions, for a walk) drawn with the entry's key on the
+  // interpreter; true when they passed the threshold and the caller is the one to compile() it.
   bool drawn(Entry* entry, uint64_t blocks);
   // Compiles the entry (`program` and `variant` must be its key's; no variant for a verdict
   // entry) and returns its function, or null if native code does not run it.
   void* compile(Entry* entry, const PixelProgram& program, const NativePixelVariant* variant);
 
-  // The threshold (kDefaultNativeThreshold or PF_JIT_THRESHOLD at start-up); tests set 0.
+
+  // The thresholds (kDefault*Threshold, or the environment's at start-up); tests set 0.
   uint64_t threshold() const { return threshold_.load(std::memory_order_relaxed); }
   void setThreshold(uint64_t blocks) { threshold_.store(blocks, std::memory_order_relaxed); }
+  uint64_t walkThreshold() const { return walk_threshold_.load(std::memory_order_relaxed); }
+  void setWalkThreshold(uint64_t regions) { walk_threshold_.store(regions, std::memory_order_relaxed); }
 
   NativeCacheStats stats() const;
 
@@ -87,6 +95,7 @@ class NativeProgramCache {
   struct Impl;
   Impl* impl_;
   std::atomic<uint64_t> threshold_;
+  std::atomic<uint64_t> walk_threshold_;
 };
 
 // What `pfc --emit=native` prints for `program` under `variant`: the optimized LLVM IR and the

@@ -14,7 +14,8 @@ const char* nativeIsaName(NativeIsa isa) {
 }
 
 struct NativeProgramCache::Impl {};
-NativeProgramCache::NativeProgramCache() : impl_(nullptr), threshold_(kDefaultNativeThreshold) {}
+NativeProgramCache::NativeProgramCache()
+    : impl_(nullptr), threshold_(kDefaultNativeThreshold), walk_threshold_(kDefaultWalkThreshold) {}
 NativeProgramCache::~NativeProgramCache() = default;
 
 NativeProgramCache& NativeProgramCache::instance() {

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "compiler/field/field_tape.h"
+#include "compiler/native/native_cache.h"
 #include "raster/field/gradient_evaluator.h"
 #include "raster/field/polynomial_roots.h"
 
@@ -76,6 +77,9 @@ void drawFrame(bool one_begin_per_triangle, int triangles) {
 }  // namespace
 
 TEST(Allocation, NoHeapAllocationPerTriangleInTheSteadyState) {
+  // Native code compiled on a program's first block: in the warm-up (a compile allocates).
+  pf::NativeProgramCache::instance().setThreshold(0);
+  pf::NativeProgramCache::instance().setWalkThreshold(0);
   std::vector<unsigned char> px(256 * 256 * 4);
   const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_THREADS, 2, 0};
   PFcontext ctx = pfCreateContextAttribs(attribs);
@@ -141,6 +145,8 @@ void drawAnalyticFrame(GLuint field, int instances) {
 // Frames of one and of three CSG surfaces (the analytic method: each ray's leaf polynomials and
 // their roots, CsgTree::firstHit) make the same few allocations after a warm-up: none per ray.
 TEST(Allocation, NoHeapAllocationPerRayOfTheAnalyticMethod) {
+  pf::NativeProgramCache::instance().setThreshold(0);
+  pf::NativeProgramCache::instance().setWalkThreshold(0);  // native code made in the warm-up
   std::vector<unsigned char> px(192 * 64 * 4);
   const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_THREADS, 2, 0};
   PFcontext ctx = pfCreateContextAttribs(attribs);

@@ -106,7 +106,7 @@ Agreed compareWalks(const PixelProgram& program, const std::string& what, int tr
 
 TEST(NativeRejection, TheProbesVerdictsAreTheInterpreters) {
   if (!nativeCodeAvailable()) GTEST_SKIP() << "native code is unavailable here";
-  NativeProgramCache::instance().setThreshold(0);
+  NativeProgramCache::instance().setWalkThreshold(0);
   Compiled c = compile(kProbe);
   ASSERT_TRUE(c.ok) << c.diagnostics;
   const Agreed a = compareWalks(c.find("probe")->pixel, "probe", 4000, 7, c.find("probe"));
@@ -120,7 +120,7 @@ TEST(NativeRejection, TheProbesVerdictsAreTheInterpreters) {
 
 TEST(NativeRejection, EveryBuiltinPrimitivesVerdictsAreTheInterpreters) {
   if (!nativeCodeAvailable()) GTEST_SKIP() << "native code is unavailable here";
-  NativeProgramCache::instance().setThreshold(0);
+  NativeProgramCache::instance().setWalkThreshold(0);
   int walked = 0;
   for (const auto& prim : builtinPrimitives().in_order) {
     if (nativeVerdictSupports(prim->pixel)) {
