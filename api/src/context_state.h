@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <optional>
 #include <vector>
 
 #include <primflow/context.h>
@@ -175,6 +176,9 @@ struct PFcontextRec {
   // modelview, the normal matrix (rescaled as GL_RESCALE_NORMAL asks), and the channels of a
   // row's colour: 4, or 8 with two-sided lighting (front, then back).
   bool begin_lit = false;
+  // The lights' equation for begin_lit (lights cannot change inside glBegin / glEnd; the
+  // material can, and is read per row).
+  std::optional<pf::LightingEquation> begin_equation;
   bool begin_lit_per_pixel = false;  // GL lighting per pixel in the shading pass: a primitive
                                      // that sets N, or vertices under GL_PER_PIXEL_LIGHTING_EXT
   // GL_PER_PIXEL_LIGHTING_EXT on a vertex primitive: each row carries its eye-space position

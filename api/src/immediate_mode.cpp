@@ -263,8 +263,9 @@ void rowChannels(PFcontextRec& ctx) {
     if (ctx.lighting.normalize && glm::length(n) > 0.0f) n = glm::normalize(n);
   }
   if (ctx.begin_lit) {
-    lit[0] = pf::litColor(ctx.lighting, eye, n, 0);
-    if (ctx.back_color_channel >= 0) lit[1] = pf::litColor(ctx.lighting, eye, n, 1);
+    // litColor(ctx.lighting, eye, n, face), with the equation prepared at glBegin.
+    lit[0] = ctx.begin_equation->shade(ctx.lighting.material[0], eye, n);
+    if (ctx.back_color_channel >= 0) lit[1] = ctx.begin_equation->shade(ctx.lighting.material[1], eye, -n);
   }
   for (const pf::ShadingChannel& s : ctx.shading) {
     float* dst = out + s.first;
@@ -391,6 +392,7 @@ static void startBegin(PFcontextRec& context, GLenum mode, const pf::CompiledPri
   const bool vertices = ctx->lighting.enabled && ctx->begin_primitive->findParam("vertex") != nullptr;
   ctx->begin_vertices_per_pixel = vertices && ctx->lighting.per_pixel_vertices;
   ctx->begin_lit = vertices && !ctx->begin_vertices_per_pixel;
+  if (ctx->begin_lit) ctx->begin_equation.emplace(ctx->lighting);
   ctx->begin_modelview = ctx->modelview.top;
   if (vertices) {
     // Normals go by the inverse transpose of the modelview's upper 3x3; GL_RESCALE_NORMAL
