@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "compiler/native/native_cache.h"
+#include "compiler/record_reads.h"
 #include "compiler/scalar_ops.h"
 #include "raster/lane_kernels.h"
 #include "raster/setup_executor.h"
@@ -74,6 +75,7 @@ void PixelExecutor::startFrame() {
   decoded_live_ = 0;
   decoded_last_[0] = decoded_last_[1] = 0;
   native_.startFrame();
+  gang_runs_live_ = 0;
   if (shared_) shared_->startFrame();  // the shared interpolators' programs, decoded by it
 }
 
@@ -147,21 +149,46 @@ void PixelExecutor::runGangBlock(const CompiledPrimitive& prim, const GangMember
     runPackedBlock(prim, members[0].record, layout, state, shade_id, lanes, mask, target, shared_records);
     return;
   }
-  // Each record word spread over its instance's lanes (the last member's to the block's end:
-  // lanes outside `mask` compute too, on some instance's values).
+  // Each record word the program reads on the members' paths spread over its instance's lanes
+  // (the last member's to the block's end: lanes outside `mask` compute too, on some instance's
+  // values). The members agree on the slots the program branches on, so the words their
+  // branches read are known before the block runs (compiler/record_reads.h).
   const size_t words = SetupExecutor::recordWords(prim, layout.count);
   if (gang_record_.size() < words * kLanes) gang_record_.resize(words * kLanes);
+  const std::vector<RecordWordRun>& runs = gangWordRuns(prim.pixel, layout.count, members[0].record);
   const uint32_t* records[kLanes];
   int first[kLanes];
-  for (int m = 0; m < member_count; ++m) {
-    records[m] = members[m].record;
-    first[m] = members[m].first_lane;
+  for (int m = 0; m < member_count; ++m) first[m] = members[m].first_lane;
+  const LaneMaskOps& masks = laneIsaTables().masks;
+  for (const RecordWordRun& run : runs) {
+    for (int m = 0; m < member_count; ++m) records[m] = members[m].record + run.first;
+    masks.spread(gang_record_.data() + static_cast<size_t>(run.first) * kLanes, records, first, member_count, run.count);
   }
-  laneIsaTables().masks.spread(gang_record_.data(), records, first, member_count, words);
   ++counters.blocks_packed;
   ++counters.blocks_ganged;
   runAndCommit(prim, prim.pixel, gang_record_.data(), layout, state, shade_id, 0, 0, &lanes, mask, target,
                shared_records, true);
+}
+
+const std::vector<RecordWordRun>& PixelExecutor::gangWordRuns(const PixelProgram& program, int channels,
+                                                              const uint32_t* record) {
+  for (size_t i = 0; i < gang_runs_live_; ++i) {
+    GangWordRuns& g = gang_runs_[i];
+    if (g.program != &program || g.code != program.code.data() || g.channels != channels) continue;
+    bool same = true;
+    for (size_t k = 0; k < program.branch_slots.size() && same; ++k)
+      same = g.branch_values[k] == record[program.branch_slots[k]];
+    if (same) return g.runs;
+  }
+  if (gang_runs_live_ == gang_runs_.size()) gang_runs_.emplace_back();
+  GangWordRuns& g = gang_runs_[gang_runs_live_++];
+  g.program = &program;
+  g.code = program.code.data();
+  g.channels = channels;
+  g.branch_values.clear();
+  for (uint32_t slot : program.branch_slots) g.branch_values.push_back(record[slot]);
+  recordWordsRead(program, channels, record, g.runs, g.visited);
+  return g.runs;
 }
 
 bool PixelExecutor::packs(const CompiledPrimitive& prim, const ChannelLayout& layout) {

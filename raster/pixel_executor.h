@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "compiler/compiler.h"
+#include "compiler/record_reads.h"
 #include "raster/block_rejection.h"
 #include "raster/decoded_program.h"
 #include "raster/field/gradient_evaluator.h"
@@ -203,6 +204,19 @@ class PixelExecutor {
   std::vector<uint32_t> xregs_;    // num_interp_regs x channels x kLanes
   std::vector<uint32_t> staging_;  // channels x kLanes: interpolator_return results
   std::vector<uint32_t> gang_record_;  // a gang block's uniforms: kLanes per record word
+  // The record words a gang's program reads, per program and values of its branch slots, for
+  // the frame (startFrame forgets them; their storage is kept).
+  struct GangWordRuns {
+    const PixelProgram* program = nullptr;
+    const Instr* code = nullptr;
+    int channels = 0;
+    std::vector<uint32_t> branch_values;
+    std::vector<RecordWordRun> runs;
+    std::vector<uint8_t> visited;
+  };
+  std::vector<GangWordRuns> gang_runs_;
+  size_t gang_runs_live_ = 0;
+  const std::vector<RecordWordRun>& gangWordRuns(const PixelProgram& program, int channels, const uint32_t* record);
 };
 
 }  // namespace pf
