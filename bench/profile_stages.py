@@ -7,6 +7,7 @@ Only primflow's samples count: llvmpipe's (libOSMesa, its JIT code, libLLVM outs
 the benchmark's own scene building and the kernel's are left out, and each stage's share is a
 percentage of the rest. Used by bench/run_profile.
 """
+import csv
 import re
 import sys
 
@@ -44,9 +45,10 @@ def main():
         stage = next((name for name, test in STAGES if test(dso, sym)), "other")
         shares[stage] = shares.get(stage, 0.0) + pct
     total = sum(shares.values())
+    out = csv.writer(sys.stdout, lineterminator="\n")
     for name, _ in STAGES + [("other", None)]:
         if name in shares and total > 0:
-            print(f"{scene},{name},{100.0 * shares[name] / total:.1f}")
+            out.writerow([scene, name, f"{100.0 * shares[name] / total:.1f}"])
 
 
 if __name__ == "__main__":

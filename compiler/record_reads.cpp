@@ -20,12 +20,14 @@ bool interpOperand(Op op, int k) {
 }  // namespace
 
 void recordWordsRead(const PixelProgram& program, int channels, const uint32_t* record,
-                     std::vector<RecordWordRun>& runs, std::vector<uint8_t>& visited) {
+                     std::vector<RecordWordRun>& runs, RecordReadsScratch& scratch) {
+  std::vector<uint8_t>& visited = scratch.visited;
+  std::vector<uint32_t>& work = scratch.work;
   const size_t n = program.code.size();
   const uint32_t words = program.num_uniform_slots + program.num_interp_uniform_slots * static_cast<uint32_t>(channels);
   visited.assign(n + words, 0);  // [0, n): instructions reached; then the words read
   uint8_t* read = visited.data() + n;
-  std::vector<uint32_t> work = {0};
+  work.assign(1, 0u);
   auto reach = [&](uint32_t pc) {
     if (pc < n && !visited[pc]) {
       visited[pc] = 1;

@@ -18,9 +18,15 @@ struct RecordWordRun {
   uint32_t first, count;
 };
 
+// The walk's storage, kept by the caller so that a frame's walks allocate nothing.
+struct RecordReadsScratch {
+  std::vector<uint8_t> visited;
+  std::vector<uint32_t> work;
+};
+
 // The runs of words `program`, drawn with `channels` interpolator_data channels, reads when its
-// record is `record`, in increasing order; `visited` is scratch.
+// record is `record`, in increasing order.
 void recordWordsRead(const PixelProgram& program, int channels, const uint32_t* record,
-                     std::vector<RecordWordRun>& runs, std::vector<uint8_t>& visited);
+                     std::vector<RecordWordRun>& runs, RecordReadsScratch& scratch);
 
 }  // namespace pf

@@ -187,7 +187,7 @@ const std::vector<RecordWordRun>& PixelExecutor::gangWordRuns(const PixelProgram
   g.channels = channels;
   g.branch_values.clear();
   for (uint32_t slot : program.branch_slots) g.branch_values.push_back(record[slot]);
-  recordWordsRead(program, channels, record, g.runs, g.visited);
+  recordWordsRead(program, channels, record, g.runs, record_reads_scratch_);
   return g.runs;
 }
 

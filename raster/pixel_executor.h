@@ -212,8 +212,8 @@ class PixelExecutor {
     int channels = 0;
     std::vector<uint32_t> branch_values;
     std::vector<RecordWordRun> runs;
-    std::vector<uint8_t> visited;
   };
+  RecordReadsScratch record_reads_scratch_;
   std::vector<GangWordRuns> gang_runs_;
   size_t gang_runs_live_ = 0;
   const std::vector<RecordWordRun>& gangWordRuns(const PixelProgram& program, int channels, const uint32_t* record);

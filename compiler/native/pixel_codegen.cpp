@@ -208,79 +208,6 @@ void PixelCodegen::startProgram(Env& env, llvm::Value* in_mask, llvm::Value* con
   b_.CreateStore(allLanes(true), env.cur);
 }
 
-llvm::Value* PixelCodegen::exec(Env& env) {
-  return b_.CreateAnd(b_.CreateLoad(mv_, env.alive), b_.CreateLoad(mv_, env.cur), "exec");
-}
-
-llvm::Value* PixelCodegen::any(llvm::Value* mask) {
-  return b_.CreateICmpNE(b_.CreateBitCast(mask, b_.getIntNTy(width_)), b_.getIntN(width_, 0));
-}
-
-void PixelCodegen::maskedAssign(llvm::AllocaInst* slot, llvm::Value* v, llvm::Value* mask) {
-  b_.CreateStore(b_.CreateSelect(mask, v, b_.CreateLoad(iv_, slot)), slot);
-}
-
-llvm::Value* PixelCodegen::operand(Env& env, uint32_t o) {
-  if (o == kNoOperand) return splatI(0);
-  const uint32_t i = operandIndex(o);
-  switch (operandKind(o)) {
-    case OperandKind::Reg:
-      if (i >= env.regs.size()) return splatI(0);
-      return b_.CreateLoad(iv_, env.regs[i]);
-    case OperandKind::Uniform: {
-      if (env.wide_record) {  // a gang's: kLanes words per slot, the chunk's lanes
-        llvm::Value* at = b_.CreateAdd(b_.getInt32(i * kNativeLanes), first_lane_);
-        return invariantLoad(iv_, b_.CreateInBoundsGEP(b_.getInt32Ty(), env.record, at));
-      }
-      llvm::Value* word = invariantLoad(b_.getInt32Ty(), b_.CreateConstInBoundsGEP1_32(b_.getInt32Ty(), env.record, i));
-      return b_.CreateVectorSplat(width_, word);
-    }
-    case OperandKind::Const:
-      return splatI(i < env.program->constants.size() ? env.program->constants[i] : 0u);
-    case OperandKind::Param: break;
-  }
-  return splatI(0);
-}
-
-// Interp operand `o`, channel `ch`: a register's channel, or the uniform record's (after the
-// scalar slots, num_interp_uniform_slots x channels).
-llvm::Value* PixelCodegen::interpOperand(Env& env, uint32_t o, int ch) {
-  const uint32_t i = operandIndex(o);
-  if (operandKind(o) == OperandKind::Reg) return b_.CreateLoad(iv_, xreg(env, i, ch));
-  const uint32_t word = env.program->num_uniform_slots + i * static_cast<uint32_t>(env.channels) + static_cast<uint32_t>(ch);
-  if (env.wide_record) {
-    llvm::Value* at = b_.CreateAdd(b_.getInt32(word * kNativeLanes), first_lane_);
-    return invariantLoad(iv_, b_.CreateInBoundsGEP(b_.getInt32Ty(), env.record, at));
-  }
-  return b_.CreateVectorSplat(width_, invariantLoad(b_.getInt32Ty(), b_.CreateConstInBoundsGEP1_32(b_.getInt32Ty(), env.record, word)));
-}
-
-llvm::AllocaInst* PixelCodegen::xreg(Env& env, uint32_t reg, int ch) {
-  auto it = env.xregs.find({reg, ch});
-  if (it != env.xregs.end()) return it->second;
-  // A register past num_interp_regs (never in codegen's output): a variable of its own.
-  llvm::AllocaInst* slot = entryAlloca(iv_, "x");
-  env.xregs[{reg, ch}] = slot;
-  return slot;
-}
-
-void PixelCodegen::setReg(Env& env, uint32_t dst, llvm::Value* v, bool masked) {
-  if (dst == kNoOperand || operandKind(dst) != OperandKind::Reg) return;
-  const uint32_t i = operandIndex(dst);
-  if (i >= env.regs.size()) return;
-  if (masked && fault_ != NativeFault::MergeWithoutMask)
-    maskedAssign(env.regs[i], v, exec(env));
-  else
-    b_.CreateStore(v, env.regs[i]);
-}
-
-void PixelCodegen::forChannels(const Env& env, uint16_t kinds, const std::function<void(int)>& fn) const {
-  if (env.interpolator) return;  // its layout has no channels
-  for (int kind = 0; kind < 3; ++kind)
-    if (kinds & (1u << kind))
-      for (int ch = variant_.kind_begin[kind]; ch < variant_.kind_end[kind]; ++ch) fn(ch);
-}
-
 void PixelCodegen::emitProgram(Env& env) {
   const std::vector<Instr>& code = env.program->code;
   // A block starts at every jump target and after every jump.
@@ -334,10 +261,7 @@ void PixelCodegen::emitProgram(Env& env) {
 void PixelCodegen::emitInstruction(Env& env, size_t pc, const Instr& in, std::map<size_t, llvm::BasicBlock*>& blocks) {
   const std::vector<MaskFrameKind>& frames = env.frames.at[pc];
   const int depth = static_cast<int>(frames.size());
-  auto continueIn = [&](const char* name) {
-    llvm::BasicBlock* b = llvm::BasicBlock::Create(ctx_, name, fn_);
-    return b;
-  };
+  auto continueIn = [&](const char* name) { return llvm::BasicBlock::Create(ctx_, name, fn_); };
   auto mask = [&](llvm::AllocaInst* slot) { return b_.CreateLoad(mv_, slot); };
   auto nonzero = [&](llvm::Value* v) { return b_.CreateICmpNE(v, splatI(0)); };
 

@@ -1,6 +1,7 @@
-// The pixel code generator's class, shared by its two files: pixel_codegen.cpp (the program:
-// control flow, masks, values, effects) and pixel_block_io.cpp (the block's memory: X, Y and
-// the depth under each lane, depth writes, the commit to the G-buffer).
+// The pixel code generator's class, shared by its three files: pixel_codegen.cpp (the program:
+// control flow, masks, values, effects), pixel_operands.cpp (registers and operands) and
+// pixel_block_io.cpp (the block's memory: X, Y and the depth under each lane, depth writes, the
+// commit to the G-buffer).
 #pragma once
 
 #include <functional>
@@ -51,6 +52,9 @@ class PixelCodegen {
   void emitProgram(Env& env);
   void emitInstruction(Env& env, size_t pc, const Instr& in, std::map<size_t, llvm::BasicBlock*>& blocks);
   void emitShared(Env& env, const Instr& in);
+  llvm::AllocaInst* entryAlloca(llvm::Type* t, const char* name);
+
+  // --- pixel_operands.cpp: registers and operands -------------------------------------------
   llvm::Value* operand(Env& env, uint32_t o);
   llvm::Value* interpOperand(Env& env, uint32_t o, int ch);
   void setReg(Env& env, uint32_t dst, llvm::Value* v, bool masked);
@@ -59,7 +63,6 @@ class PixelCodegen {
   llvm::Value* any(llvm::Value* mask);
   void forChannels(const Env& env, uint16_t kinds, const std::function<void(int)>& fn) const;
   void maskedAssign(llvm::AllocaInst* slot, llvm::Value* v, llvm::Value* mask);
-  llvm::AllocaInst* entryAlloca(llvm::Type* t, const char* name);
 
   // --- pixel_block_io.cpp: the block's memory ----------------------------------------------
   // The chunk's lanes' pixels (lane index vector, packed x / y) and their X, Y.

@@ -46,7 +46,7 @@ TEST(RecordReads, TheTrianglesUntakenCoverageBranchIsNotRead) {
   ASSERT_EQ(p.code[else_at - 1].op, Op::Jmp);  // the then-part ends jumping past the else part
   std::vector<uint32_t> record(p.num_uniform_slots + p.num_interp_uniform_slots * 4 + 1, 0u);
   std::vector<RecordWordRun> runs;
-  std::vector<uint8_t> scratch;
+  RecordReadsScratch scratch;
   record[slot] = 1;  // every vertex in front: the then-part
   recordWordsRead(p, 4, record.data(), runs, scratch);
   const std::set<uint32_t> in_front = wordsOf(runs);
