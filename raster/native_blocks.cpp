@@ -22,6 +22,18 @@ NativeIsa nativeIsaOf(LaneIsa isa) {
   return NativeIsa::Sse2;
 }
 
+// The entry of `items` that `matches` -- the last one found first -- or null.
+template <class T, class Matches>
+T* findRemembered(std::vector<T>& items, size_t& last, const Matches& matches) {
+  if (last < items.size() && matches(items[last])) return &items[last];
+  for (size_t i = 0; i < items.size(); ++i)
+    if (matches(items[i])) {
+      last = i;
+      return &items[i];
+    }
+  return nullptr;
+}
+
 bool readsState(const PixelProgram& p) {
   for (const Instr& in : p.code)
     if (in.op == Op::LoadState) return true;
@@ -92,22 +104,13 @@ NativeBlockFunction NativeBlocks::find(const CompiledPrimitive& prim, const Pixe
     return f.program == &program && f.code == program.code.data() && f.code_size == program.code.size() &&
            f.layout == &layout && f.gang == gang && f.isa == isa;
   };
-  Found* found = nullptr;
-  if (last_ < found_.size() && matches(found_[last_])) {
-    found = &found_[last_];
-  } else {
-    for (size_t i = 0; i < found_.size() && !found; ++i)
-      if (matches(found_[i])) {
-        last_ = i;
-        found = &found_[i];
-      }
-    if (!found) {
-      NativeProgramCache::Entry* e = NativeProgramCache::instance().pixelEntry(program, variantFor(prim, layout, gang, isa));
-      found_.push_back(Found{&program, program.code.data(), program.code.size(), &layout, gang, isa, e, {}, false});
-      last_ = found_.size() - 1;
-      found = &found_.back();
-      found->fn.reads_state = readsState(program);
-    }
+  Found* found = findRemembered(found_, last_, matches);
+  if (!found) {
+    NativeProgramCache::Entry* e = NativeProgramCache::instance().pixelEntry(program, variantFor(prim, layout, gang, isa));
+    found_.push_back(Found{&program, program.code.data(), program.code.size(), &layout, gang, isa, e, {}, false});
+    last_ = found_.size() - 1;
+    found = &found_.back();
+    found->fn.reads_state = readsState(program);
   }
   if (found->fn.fn || found->never) return found->fn;
   // Not compiled yet: this block counts towards the threshold (and may compile it).
@@ -135,21 +138,12 @@ bool NativeBlocks::verdict(const PixelProgram& program, const uint32_t* record, 
   auto matches = [&](const FoundWalk& f) {
     return f.program == &program && f.code == program.code.data() && f.code_size == program.code.size();
   };
-  FoundWalk* found = nullptr;
-  if (last_walk_ < walks_.size() && matches(walks_[last_walk_])) {
-    found = &walks_[last_walk_];
-  } else {
-    for (size_t i = 0; i < walks_.size() && !found; ++i)
-      if (matches(walks_[i])) {
-        last_walk_ = i;
-        found = &walks_[i];
-      }
-    if (!found) {
-      NativeProgramCache::Entry* e = NativeProgramCache::instance().verdictEntry(program);
-      walks_.push_back(FoundWalk{&program, program.code.data(), program.code.size(), e, nullptr, false, readsState(program)});
-      last_walk_ = walks_.size() - 1;
-      found = &walks_.back();
-    }
+  FoundWalk* found = findRemembered(walks_, last_walk_, matches);
+  if (!found) {
+    NativeProgramCache::Entry* e = NativeProgramCache::instance().verdictEntry(program);
+    walks_.push_back(FoundWalk{&program, program.code.data(), program.code.size(), e, nullptr, false, readsState(program)});
+    last_walk_ = walks_.size() - 1;
+    found = &walks_.back();
   }
   if (!found->fn && !found->never) {
     // (A walk costs about what a block does, and compiles slower than a pixel program: each

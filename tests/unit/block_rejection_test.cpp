@@ -16,6 +16,7 @@
 
 #include "compile_helpers.h"
 #include "gl_context.h"
+#include "rejection_probe.h"
 #include "setup_batch_helpers.h"
 #include "raster/block_rejection.h"
 
@@ -24,21 +25,7 @@ using namespace pf::test;
 
 namespace {
 
-// Conditions of the kinds primitives use before their first loop: an affine edge, a circle's
-// discriminant, a ratio, and a condition on a NaN-prone square root.
-const char* kProbe = R"(
-primitive probe(float k[1][8]; varying float X, Y; inout varying float Z) {
-    float e = k[0][0] * X + k[0][1] * Y + k[0][2];
-    if (e < 0 || (e == 0 && k[0][7] > 0)) return;
-    float dx = X - k[0][3];
-    float dy = Y - k[0][4];
-    float disc = k[0][5] * k[0][5] - dx * dx - dy * dy;
-    if (disc < 0) return;
-    float r = sqrt(disc) / (k[0][6] - X);
-    if (!(r < 2.5)) return;
-    Z = 0.5;
-}
-)";
+const char* const kProbe = kRejectionProbe;
 
 float pick(std::mt19937& rng) {
   std::uniform_int_distribution<int> special(0, 19);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "compile_helpers.h"
+#include "rejection_probe.h"
 #include "compiler/builtin_primitives.h"
 #include "compiler/native/native_cache.h"
 #include "raster/block_rejection.h"
@@ -21,18 +22,8 @@ using namespace pf::test;
 
 namespace {
 
-const char* kProbe = R"(
-primitive probe(float k[1][8]; varying float X, Y; inout varying float Z) {
-    float e = k[0][0] * X + k[0][1] * Y + k[0][2];
-    if (e < 0 || (e == 0 && k[0][7] > 0)) return;
-    float dx = X - k[0][3];
-    float dy = Y - k[0][4];
-    float disc = k[0][5] * k[0][5] - dx * dx - dy * dy;
-    if (disc < 0) return;
-    float r = sqrt(disc) / (k[0][6] - X);
-    if (!(r < 2.5)) return;
-    Z = 0.5;
-}
+// The shared probe, and one of abs, min, max, floor and an int conversion.
+const std::string kProbe = std::string(kRejectionProbe) + R"(
 primitive probe2(float k[1][4]; varying float X, Y; inout varying float Z) {
     float dx = X - k[0][0];
     float dy = Y - k[0][1];
