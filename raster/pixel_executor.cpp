@@ -107,16 +107,30 @@ bool PixelExecutor::rejectsRegion(const CompiledPrimitive& prim, const uint32_t*
   return true;
 }
 
+RegionVerdict PixelExecutor::boundVerdict(const CompiledPrimitive& prim, const uint32_t* record,
+                                          const RasterState& state, int x0, int y0, int x1, int y1) {
+  const PixelProgram& program = prim.pixel;
+  if (program.last_early_retire < 0 || !use_block_rejection) return RegionVerdict::Unknown;
+  const double region[4] = {x0 + 0.5, x1 - 0.5, y0 + 0.5, y1 - 0.5};
+  uint32_t native = 0;
+  return use_native && native_.verdict(program, record, state, region, native)
+             ? static_cast<RegionVerdict>(native)
+             : rejection_.verdict(program, record, state, x0, y0, x1, y1);
+}
+
 void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* record,
                              const ChannelLayout& layout, const RasterState& state,
                              uint32_t shade_id, int bx, int by, uint64_t mask,
-                             const BlockTarget& target, const uint32_t* shared_records) {
+                             const BlockTarget& target, const uint32_t* shared_records, RegionVerdict known) {
   // Only blocks that start full are tested: an instance whose bound cuts every block it touches
   // (a small triangle) would pay for the test and rarely gain (measured: docs/performance.md).
   // A region certainly retired is skipped; one where no coverage test can fail runs the program
   // without them.
   const PixelProgram* program = &prim.pixel;
-  if (mask == ~0ull && prim.pixel.last_early_retire >= 0 && use_block_rejection) {
+  if (known == RegionVerdict::Accepted && prim.pixel.covered) {
+    program = prim.pixel.covered.get();
+    ++counters.blocks_accepted;
+  } else if (mask == ~0ull && prim.pixel.last_early_retire >= 0 && use_block_rejection) {
     const RegionVerdict v = regionVerdict(prim.pixel, record, state, bx, by);
     if (v == RegionVerdict::Rejected) {
       ++counters.blocks_rejected;

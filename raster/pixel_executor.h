@@ -82,9 +82,12 @@ class PixelExecutor {
   // Runs the block whose lower-left pixel is (bx, by) for the lanes set in `mask` (bit i is
   // lane i = (bx + i % 8, by + i / 8)). `shared_records`: the uniform records of the layout's
   // shared interpolators (ChannelLayout::shared), if it has any.
+  // `known`: a verdict already made for a rectangle holding the block's lanes (boundVerdict):
+  // Accepted runs the covered program whatever the mask, with no region verdict looked up.
   void runBlock(const CompiledPrimitive& prim, const uint32_t* record, const ChannelLayout& layout,
                 const RasterState& state, uint32_t shade_id, int bx, int by, uint64_t mask,
-                const BlockTarget& target, const uint32_t* shared_records = nullptr);
+                const BlockTarget& target, const uint32_t* shared_records = nullptr,
+                RegionVerdict known = RegionVerdict::Unknown);
   // Runs the pixels `lanes` names, for the lanes set in `mask`, as runBlock runs an aligned
   // block (without block rejection, which answers for aligned regions). Only for a primitive,
   // and shared interpolators, that packs (packs()).
@@ -106,6 +109,11 @@ class PixelExecutor {
   // blocks): the renderer then skips the region's blocks at once. Counts them as rejected.
   bool rejectsRegion(const CompiledPrimitive& prim, const uint32_t* record, const RasterState& state, int x, int y,
                      uint64_t blocks);
+  // Block rejection's verdict for the pixels [x0, x1) x [y0, y1) -- an instance's bound within
+  // a tile -- in one walk, not remembered (an instance meets a tile once); Unknown where block
+  // rejection does not apply. A decisive verdict answers for every region of the rectangle.
+  RegionVerdict boundVerdict(const CompiledPrimitive& prim, const uint32_t* record, const RasterState& state, int x0,
+                             int y0, int x1, int y1);
   // Whether `prim` drawn with `layout` may run on packed lanes: none of its programs casts the
   // rays of an aligned block (FieldHit).
   static bool packs(const CompiledPrimitive& prim, const ChannelLayout& layout);

@@ -524,11 +524,23 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
       const bool by_regions = iy1 - iy0 >= kRejectionRegion && ix1 - ix0 >= kRejectionRegion;
       const int step = by_regions ? kRejectionRegion : kTileSize;
       const int rx0 = (ix0 - x0) / step * step + x0, ry0 = (iy0 - y0) / step * step + y0;
+      // A bound over 2x2 regions or more is first judged whole, in one walk: a large triangle
+      // is rejected or accepted over most tiles it touches, where a walk per region would
+      // cost four (the walk costs about what a block does). Undecided, its regions are judged
+      // one by one.
+      RegionVerdict whole = RegionVerdict::Unknown;
+      if (by_regions && (ix1 - 1 - rx0) / kRejectionRegion >= 1 && (iy1 - 1 - ry0) / kRejectionRegion >= 1) {
+        whole = s.executor.boundVerdict(*inst.prim, record, state, ix0, iy0, ix1, iy1);
+        if (whole == RegionVerdict::Rejected) {
+          s.executor.counters.blocks_rejected += static_cast<uint64_t>(cbx1 - cbx0 + 1) * (cby1 - cby0 + 1);
+          continue;
+        }
+      }
       for (int ry = ry0; ry < iy1; ry += step)
         for (int rx = rx0; rx < ix1; rx += step) {
           const int rbx0 = std::max(x0 + cbx0 * kBlockSize, rx), rby0 = std::max(y0 + cby0 * kBlockSize, ry);
           const int rbx1 = std::min(ix1, rx + step), rby1 = std::min(iy1, ry + step);
-          if (by_regions) {
+          if (by_regions && whole != RegionVerdict::Accepted) {
             const uint64_t blocks = static_cast<uint64_t>((rbx1 - rbx0 + kBlockSize - 1) / kBlockSize) *
                                     static_cast<uint64_t>((rby1 - rby0 + kBlockSize - 1) / kBlockSize);
             if (s.executor.rejectsRegion(*inst.prim, record, state, rx, ry, blocks)) continue;
@@ -548,7 +560,8 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
             ++s.blocks_depth_culled;
             continue;
           }
-          if (mask) s.executor.runBlock(*inst.prim, record, layout, state, inst.shade_id, bx, by, mask, target, shared);
+          if (mask)
+            s.executor.runBlock(*inst.prim, record, layout, state, inst.shade_id, bx, by, mask, target, shared, whole);
         }
       }
         }

@@ -74,3 +74,21 @@ TEST(BlockCounters, CoveredBlocksAreThoseEveryLaneOfWhichIsDrawn) {
     EXPECT_LE(t.lanes_committed, 3u) << threads;
   }
 }
+
+TEST(BlockCounters, ABoundInsideTheTriangleRunsEveryBlockCovered) {
+  // A right triangle whose legs lie on the pixel lines x = 3 and y = 3 and whose hypotenuse
+  // passes far outside the framebuffer: its bound within each tile is inside all three edges,
+  // and the blocks the bound cuts (columns and rows 0-2 missing) run the covered program too --
+  // judged with the bound as a whole, not as 32x32 regions of which pixels 0-2 are outside.
+  const float at = 3.0f / (kSize / 2.0f) - 1.0f, far = at + 6.0f;
+  const float corner[6] = {at, at, far, at, at, far};
+  const uint64_t blocks = static_cast<uint64_t>(kSize / 8) * (kSize / 8);
+  for (int threads : {1, 2}) {
+    const FrameStats s = drawTriangle(corner, threads);
+    EXPECT_EQ(s.blocks_run, blocks) << threads;
+    EXPECT_EQ(s.blocks_rejected, 0u) << threads;
+    EXPECT_EQ(s.blocks_accepted, s.blocks_run) << threads;
+    EXPECT_EQ(s.blocks_covered, static_cast<uint64_t>(kSize / 8 - 1) * (kSize / 8 - 1)) << threads;
+    EXPECT_EQ(s.lanes_committed, static_cast<uint64_t>(kSize - 3) * (kSize - 3)) << threads;
+  }
+}

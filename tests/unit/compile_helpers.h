@@ -108,7 +108,9 @@ inline BlockRun runBlockIn(const CompiledPrimitive& prim, const std::vector<floa
     bool compiles = nativeCodeAvailable() && nativePixelSupports(prim.pixel);
     for (const ChannelLayout::SharedInterpolator& s : layout.shared)
       compiles = compiles && nativePixelSupports(s.program->pixel);
-    if (compiles) EXPECT_EQ(nx.counters.blocks_native, nx.counters.blocks_run) << "the block did not run as native code";
+    if (compiles) {
+      EXPECT_EQ(nx.counters.blocks_native, nx.counters.blocks_run) << "the block did not run as native code";
+    }
     EXPECT_EQ(nx.counters.lanes_committed, ex.counters.lanes_committed);
     EXPECT_EQ(nx.counters.iteration_cap_lanes, ex.counters.iteration_cap_lanes);
     for (int i = 0; i < 64; ++i)
