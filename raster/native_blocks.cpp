@@ -160,11 +160,11 @@ bool NativeBlocks::verdict(const PixelProgram& program, const uint32_t* record, 
   return true;
 }
 
-uint64_t NativeBlocks::run(const NativeBlockFunction& fn, const CompiledPrimitive& prim, const uint32_t* record, const ChannelLayout& layout, const RasterState& state,
-                           uint32_t shade_id, int bx, int by, const PackedLanes* packed, uint64_t mask,
-                           const BlockTarget& target, const uint32_t* shared_records, uint64_t& cap_lanes,
-                           const CompiledPrimitive*& cap_primitive) {
-  NativeBlockArgs a;
+void NativeBlocks::prepare(PreparedCall& call, const CompiledPrimitive& prim, const uint32_t* record,
+                           const ChannelLayout& layout, const RasterState& state, uint32_t shade_id,
+                           const PackedLanes* packed, const BlockTarget& target, const uint32_t* shared_records) {
+  NativeBlockArgs& a = call.args;
+  a = NativeBlockArgs{};
   a.record = record;
   a.shared_records = shared_records;
   if (packed) {
@@ -173,28 +173,46 @@ uint64_t NativeBlocks::run(const NativeBlockFunction& fn, const CompiledPrimitiv
   }
   a.depth = target.depth;
   a.depth_stride = target.depth_stride;
-  if (fn.reads_state) a.state_values = stateValues(state);
   a.shade_ids = target.shade_ids;
-  float* planes[kMaxChannels];
   const int channels = std::min(layout.count, kMaxChannels);
-  for (int ch = 0; ch < channels; ++ch) planes[ch] = target.slots[layout.gbuffer_slot[static_cast<size_t>(ch)]];
-  a.planes = planes;
+  for (int ch = 0; ch < channels; ++ch) call.planes[ch] = target.slots[layout.gbuffer_slot[static_cast<size_t>(ch)]];
+  a.planes = call.planes;
   if (layout.surface_slot >= 0 && !layout.surface_interpolated) a.surface_planes = target.slots + layout.surface_slot;
-  a.mask = mask;
-  a.bx = bx;
-  a.by = by;
   a.tile_x0 = target.tile_x0;
   a.tile_y0 = target.tile_y0;
   a.shade_id = shade_id;
   a.iteration_cap = state.iteration_cap;
   a.depth_pass = depthPass(state);
   a.depth_write = target.depth && state.depth_test && state.depth_write ? 1u : 0u;
+  call.state = &state;
+  call.prim = &prim;
+  call.layout = &layout;
+}
+
+uint64_t NativeBlocks::call(const NativeBlockFunction& fn, PreparedCall& call, int bx, int by, uint64_t mask,
+                            uint64_t& cap_lanes, const CompiledPrimitive*& cap_primitive) {
+  NativeBlockArgs& a = call.args;
+  if (fn.reads_state && !a.state_values) a.state_values = stateValues(*call.state);
+  a.mask = mask;
+  a.bx = bx;
+  a.by = by;
+  a.cap_lanes = 0;
+  a.cap_source = -1;
   const uint64_t alive = fn.fn(&a);
   if (a.cap_lanes) {
     cap_lanes += a.cap_lanes;
-    cap_primitive = a.cap_source < 0 ? &prim : layout.shared[static_cast<size_t>(a.cap_source)].program;
+    cap_primitive = a.cap_source < 0 ? call.prim : call.layout->shared[static_cast<size_t>(a.cap_source)].program;
   }
   return alive;
+}
+
+uint64_t NativeBlocks::run(const NativeBlockFunction& fn, const CompiledPrimitive& prim, const uint32_t* record,
+                           const ChannelLayout& layout, const RasterState& state, uint32_t shade_id, int bx, int by,
+                           const PackedLanes* packed, uint64_t mask, const BlockTarget& target,
+                           const uint32_t* shared_records, uint64_t& cap_lanes,
+                           const CompiledPrimitive*& cap_primitive) {
+  prepare(single_, prim, record, layout, state, shade_id, packed, target, shared_records);
+  return call(fn, single_, bx, by, mask, cap_lanes, cap_primitive);
 }
 
 }  // namespace pf

@@ -11,6 +11,7 @@
 #include "compiler/compiler.h"
 #include "compiler/native/native_abi.h"
 #include "compiler/native/native_cache.h"
+#include "raster/limits.h"
 #include "raster/raster_state.h"
 
 namespace pf {
@@ -41,6 +42,21 @@ class NativeBlocks {
   uint64_t run(const NativeBlockFunction& fn, const CompiledPrimitive& prim, const uint32_t* record, const ChannelLayout& layout, const RasterState& state, uint32_t shade_id,
                int bx, int by, const PackedLanes* packed, uint64_t mask, const BlockTarget& target,
                const uint32_t* shared_records, uint64_t& cap_lanes, const CompiledPrimitive*& cap_primitive);
+
+  // run() in two steps, for several blocks of one instance: the arguments but the block's set
+  // up once (prepare), then each block (call).
+  struct PreparedCall {
+    NativeBlockArgs args;
+    float* planes[kMaxChannels];
+    const RasterState* state = nullptr;
+    const CompiledPrimitive* prim = nullptr;
+    const ChannelLayout* layout = nullptr;
+  };
+  void prepare(PreparedCall& call, const CompiledPrimitive& prim, const uint32_t* record, const ChannelLayout& layout,
+               const RasterState& state, uint32_t shade_id, const PackedLanes* packed, const BlockTarget& target,
+               const uint32_t* shared_records);
+  uint64_t call(const NativeBlockFunction& fn, PreparedCall& call, int bx, int by, uint64_t mask, uint64_t& cap_lanes,
+                const CompiledPrimitive*& cap_primitive);
 
   // Block rejection's verdict for `program` over the region of pixel centres
   // [x_lo, x_hi] x [y_lo, y_hi] by native code (compiler/native/interval_codegen.h): the
@@ -79,6 +95,7 @@ class NativeBlocks {
                                        NativeIsa isa);
   // Where the instance's depth test passes (native_abi.h's kDepthPass* bits).
   static uint32_t depthPass(const RasterState& state);
+  PreparedCall single_;  // run()'s
   std::vector<Found> found_;  // (its storage kept across frames: a frame allocates nothing)
   NativePixelVariant variant_;  // the one being looked up (its vectors' storage kept)
   size_t last_ = 0;

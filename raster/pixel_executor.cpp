@@ -118,30 +118,88 @@ RegionVerdict PixelExecutor::boundVerdict(const CompiledPrimitive& prim, const u
              : rejection_.verdict(program, record, state, x0, y0, x1, y1);
 }
 
-void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* record,
-                             const ChannelLayout& layout, const RasterState& state,
-                             uint32_t shade_id, int bx, int by, uint64_t mask,
-                             const BlockTarget& target, const uint32_t* shared_records, RegionVerdict known) {
+const PixelProgram* PixelExecutor::blockProgram(const CompiledPrimitive& prim, const uint32_t* record,
+                                                const RasterState& state, int bx, int by, uint64_t mask,
+                                                RegionVerdict known) {
   // Only blocks that start full are tested: an instance whose bound cuts every block it touches
   // (a small triangle) would pay for the test and rarely gain (measured: docs/performance.md).
   // A region certainly retired is skipped; one where no coverage test can fail runs the program
   // without them.
-  const PixelProgram* program = &prim.pixel;
   if (known == RegionVerdict::Accepted && prim.pixel.covered) {
-    program = prim.pixel.covered.get();
     ++counters.blocks_accepted;
-  } else if (mask == ~0ull && prim.pixel.last_early_retire >= 0 && use_block_rejection) {
+    return prim.pixel.covered.get();
+  }
+  if (mask == ~0ull && prim.pixel.last_early_retire >= 0 && use_block_rejection) {
     const RegionVerdict v = regionVerdict(prim.pixel, record, state, bx, by);
     if (v == RegionVerdict::Rejected) {
       ++counters.blocks_rejected;
-      return;
+      return nullptr;
     }
     if (v == RegionVerdict::Accepted && prim.pixel.covered) {
-      program = prim.pixel.covered.get();
       ++counters.blocks_accepted;
+      return prim.pixel.covered.get();
     }
   }
-  runAndCommit(prim, *program, record, layout, state, shade_id, bx, by, nullptr, mask, target, shared_records);
+  return &prim.pixel;
+}
+
+void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* record,
+                             const ChannelLayout& layout, const RasterState& state,
+                             uint32_t shade_id, int bx, int by, uint64_t mask,
+                             const BlockTarget& target, const uint32_t* shared_records, RegionVerdict known) {
+  if (const PixelProgram* program = blockProgram(prim, record, state, bx, by, mask, known))
+    runAndCommit(prim, *program, record, layout, state, shade_id, bx, by, nullptr, mask, target, shared_records);
+}
+
+void PixelExecutor::runBlocks(const CompiledPrimitive& prim, const uint32_t* record, const ChannelLayout& layout,
+                              const RasterState& state, uint32_t shade_id, const AlignedBlocks& blocks,
+                              const BlockTarget& target, const uint32_t* shared_records, RegionVerdict known) {
+  // As runBlock each, but native code's function (one per program: prim.pixel and its covered
+  // variant) is looked up, and its arguments set up, once for the run rather than per block.
+  NativeBlockFunction fns[2];
+  bool prepared = false;
+  for (int i = 0; i < blocks.count; ++i) {
+    const int bx = blocks.bx[i], by = blocks.by[i];
+    const uint64_t mask = blocks.mask[i];
+    const PixelProgram* program = blockProgram(prim, record, state, bx, by, mask, known);
+    if (!program) continue;
+    const int which = program == &prim.pixel ? 0 : 1;
+    // (Looked up again while null: each block counts towards the compile threshold.)
+    if (use_native && !fns[which]) fns[which] = native_.find(prim, *program, layout, false);
+    if (!fns[which]) {
+      runAndCommit(prim, *program, record, layout, state, shade_id, bx, by, nullptr, mask, target, shared_records);
+      continue;
+    }
+    if (!prepared) {
+      native_.prepare(native_call_, prim, record, layout, state, shade_id, nullptr, target, shared_records);
+      prepared = true;
+    }
+    ++counters.blocks_run;
+    counters.lanes_started += static_cast<uint64_t>(__builtin_popcountll(mask));
+    const uint64_t alive = native_.call(fns[which], native_call_, bx, by, mask, counters.iteration_cap_lanes,
+                                        counters.cap_primitive);
+    noteCommitted(nullptr, bx, by, alive, target);
+    ++counters.blocks_native;
+  }
+}
+
+void PixelExecutor::noteCommitted(const PackedLanes* packed, int bx, int by, uint64_t alive, const BlockTarget& target) {
+  counters.lanes_committed += static_cast<uint64_t>(__builtin_popcountll(alive));
+  if (target.committed_pixels && alive) {
+    constexpr int kBlocksPerRow = kTileSize / kBlockSize;
+    if (packed) {
+      for (uint64_t m = alive; m; m &= m - 1) {
+        const int i = __builtin_ctzll(m);
+        const int x = packed->x[i] - target.tile_x0, y = packed->y[i] - target.tile_y0;
+        target.committed_pixels[(y / kBlockSize) * kBlocksPerRow + x / kBlockSize] |=
+            1ull << ((y % kBlockSize) * kBlockSize + x % kBlockSize);
+      }
+    } else {
+      target.committed_pixels[((by - target.tile_y0) / kBlockSize) * kBlocksPerRow + (bx - target.tile_x0) / kBlockSize] |=
+          alive;
+    }
+  }
+  if (alive == ~0ull) ++counters.blocks_covered;
 }
 
 void PixelExecutor::runPackedBlock(const CompiledPrimitive& prim, const uint32_t* record,
@@ -229,22 +287,7 @@ void PixelExecutor::runAndCommit(const CompiledPrimitive& prim, const PixelProgr
                                           shared_records, nullptr, wide_record);
 
   // Commit: the lanes still alive are this instance's pixels.
-  counters.lanes_committed += static_cast<uint64_t>(__builtin_popcountll(alive));
-  if (target.committed_pixels && alive) {
-    constexpr int kBlocksPerRow = kTileSize / kBlockSize;
-    if (packed) {
-      for (uint64_t m = alive; m; m &= m - 1) {
-        const int i = __builtin_ctzll(m);
-        const int x = packed->x[i] - target.tile_x0, y = packed->y[i] - target.tile_y0;
-        target.committed_pixels[(y / kBlockSize) * kBlocksPerRow + x / kBlockSize] |=
-            1ull << ((y % kBlockSize) * kBlockSize + x % kBlockSize);
-      }
-    } else {
-      target.committed_pixels[((by - target.tile_y0) / kBlockSize) * kBlocksPerRow + (bx - target.tile_x0) / kBlockSize] |=
-          alive;
-    }
-  }
-  if (alive == ~0ull) ++counters.blocks_covered;
+  noteCommitted(packed, bx, by, alive, target);
   if (native) {
     ++counters.blocks_native;
     return;

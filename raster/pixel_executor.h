@@ -88,6 +88,22 @@ class PixelExecutor {
                 const RasterState& state, uint32_t shade_id, int bx, int by, uint64_t mask,
                 const BlockTarget& target, const uint32_t* shared_records = nullptr,
                 RegionVerdict known = RegionVerdict::Unknown);
+  // Aligned blocks of one instance within a tile, in the order they run (at most the tile's).
+  struct AlignedBlocks {
+    static constexpr int kBlocksPerTile = (kTileSize / kBlockSize) * (kTileSize / kBlockSize);
+    int count = 0;
+    int bx[kBlocksPerTile], by[kBlocksPerTile];
+    uint64_t mask[kBlocksPerTile];
+    void add(int x, int y, uint64_t m) {
+      bx[count] = x;
+      by[count] = y;
+      mask[count++] = m;
+    }
+  };
+  // runBlock for each of `blocks` (the same pixels, counters and images), set up once.
+  void runBlocks(const CompiledPrimitive& prim, const uint32_t* record, const ChannelLayout& layout,
+                 const RasterState& state, uint32_t shade_id, const AlignedBlocks& blocks, const BlockTarget& target,
+                 const uint32_t* shared_records = nullptr, RegionVerdict known = RegionVerdict::Unknown);
   // Runs the pixels `lanes` names, for the lanes set in `mask`, as runBlock runs an aligned
   // block (without block rejection, which answers for aligned regions). Only for a primitive,
   // and shared interpolators, that packs (packs()).
@@ -142,6 +158,12 @@ class PixelExecutor {
                    const ChannelLayout& layout, const RasterState& state, int bx, int by, const PackedLanes* packed,
                    uint64_t mask, const BlockTarget& target, const uint32_t* shared_records, const uint32_t* p_in,
                    bool wide_record = false);
+  // The program runBlock runs for the block: prim.pixel, its covered variant, or null where
+  // block rejection rejects it (counted).
+  const PixelProgram* blockProgram(const CompiledPrimitive& prim, const uint32_t* record, const RasterState& state,
+                                   int bx, int by, uint64_t mask, RegionVerdict known);
+  // The counters and the coarse depth's committed pixels for the lanes `alive` of a block.
+  void noteCommitted(const PackedLanes* packed, int bx, int by, uint64_t alive, const BlockTarget& target);
   // Runs `program` over the lanes and commits the lanes still alive to the target.
   void runAndCommit(const CompiledPrimitive& prim, const PixelProgram& program, const uint32_t* record,
                     const ChannelLayout& layout, const RasterState& state, uint32_t shade_id, int bx, int by,
@@ -169,6 +191,7 @@ class PixelExecutor {
   size_t decoded_last_[2] = {0, 0};  // the last found, per decoding (scalar, wide uniforms)
 
   NativeBlocks native_;
+  NativeBlocks::PreparedCall native_call_;  // runBlocks' arguments
   field::FieldRayCaster caster_;
   BlockRejection rejection_;
   // The verdicts of a tile's regions (regionVerdict) and what each was computed for.

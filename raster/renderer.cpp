@@ -528,6 +528,8 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
       // is rejected or accepted over most tiles it touches, where a walk per region would
       // cost four (the walk costs about what a block does). Undecided, its regions are judged
       // one by one.
+      PixelExecutor::AlignedBlocks& blocks = s.aligned_blocks;
+      blocks.count = 0;
       RegionVerdict whole = RegionVerdict::Unknown;
       if (by_regions && (ix1 - 1 - rx0) / kRejectionRegion >= 1 && (iy1 - 1 - ry0) / kRejectionRegion >= 1) {
         whole = s.executor.boundVerdict(*inst.prim, record, state, ix0, iy0, ix1, iy1);
@@ -560,11 +562,11 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
             ++s.blocks_depth_culled;
             continue;
           }
-          if (mask)
-            s.executor.runBlock(*inst.prim, record, layout, state, inst.shade_id, bx, by, mask, target, shared, whole);
+          if (mask) blocks.add(bx, by, mask);
         }
       }
         }
+      s.executor.runBlocks(*inst.prim, record, layout, state, inst.shade_id, blocks, target, shared, whole);
     }
     // What it wrote to the depth buffer: those blocks' ranges are stale.
     if (depth_ && state.depth_test && state.depth_write && s.executor.counters.lanes_committed != committed_before)

@@ -132,6 +132,7 @@ class Renderer : private SubInstanceSink {
   struct WorkerScratch {
     PixelExecutor executor;
     PackedLanes packed_lanes;
+    PixelExecutor::AlignedBlocks aligned_blocks;  // an instance's blocks in a tile, run together
     CoarseDepth coarse_depth;
     GangBlock gang;
     uint64_t blocks_depth_culled = 0;
