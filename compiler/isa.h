@@ -1,7 +1,7 @@
 // The instruction set that compiled primitives run on: one bytecode for both programs a
 // primitive compiles to. The setup program runs it scalar, once per instance; the pixel program
 // runs it over wide registers (one value per lane of a pixel block) under an execution mask.
-// The executors are in raster/ (setup_executor.cpp, pixel_executor.cpp).
+// The executors are in raster/ (setup_executor.cpp; pixel_executor.cpp, whose interpreter is pixel_interpreter.cpp).
 #pragma once
 
 #include <cstdint>

@@ -1,5 +1,5 @@
 // The mask frames of a pixel program, found statically. The interpreter keeps a run-time stack
-// of frames (one per open varying if or loop: raster/pixel_executor.cpp); the code generator
+// of frames (one per open varying if or loop: raster/pixel_interpreter.cpp); the code generator
 // needs the same stack at every instruction at compile time, to give each level its own
 // variables. codegen.cpp emits structured code -- MaskIf .. MaskEnd and LoopBegin .. LoopEnd
 // nest, jumps stay within their frame -- so every instruction has one stack, whichever path

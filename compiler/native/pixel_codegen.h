@@ -1,5 +1,5 @@
 // Pixel programs to LLVM IR: one function per program and variant (native_abi.h) that runs an
-// 8x8 block the way raster/pixel_executor.cpp does, but in machine code. The block is walked a
+// 8x8 block the way raster/pixel_interpreter.cpp does, but in machine code. The block is walked a
 // vector at a time (4, 8 or 16 lanes: a chunk), each chunk running the whole program with its
 // registers in vector registers and the execution mask as a vector of booleans; the
 // interpreter's run-time mask stack becomes variables per nesting level (mask_frames.h). Every
