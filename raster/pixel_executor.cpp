@@ -128,8 +128,8 @@ const PixelProgram* PixelExecutor::blockProgram(const CompiledPrimitive& prim, c
 void PixelExecutor::runBlock(const CompiledPrimitive& prim, const uint32_t* record,
                              const ChannelLayout& layout, const RasterState& state,
                              uint32_t shade_id, int bx, int by, uint64_t mask,
-                             const BlockTarget& target, const uint32_t* shared_records, RegionVerdict known) {
-  if (const PixelProgram* program = blockProgram(prim, record, state, bx, by, mask, known))
+                             const BlockTarget& target, const uint32_t* shared_records) {
+  if (const PixelProgram* program = blockProgram(prim, record, state, bx, by, mask, RegionVerdict::Unknown))
     runAndCommit(prim, *program, record, layout, state, shade_id, bx, by, nullptr, mask, target, shared_records);
 }
 

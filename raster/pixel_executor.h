@@ -82,12 +82,9 @@ class PixelExecutor {
   // Runs the block whose lower-left pixel is (bx, by) for the lanes set in `mask` (bit i is
   // lane i = (bx + i % 8, by + i / 8)). `shared_records`: the uniform records of the layout's
   // shared interpolators (ChannelLayout::shared), if it has any.
-  // `known`: a verdict already made for a rectangle holding the block's lanes (boundVerdict):
-  // Accepted runs the covered program whatever the mask, with no region verdict looked up.
   void runBlock(const CompiledPrimitive& prim, const uint32_t* record, const ChannelLayout& layout,
                 const RasterState& state, uint32_t shade_id, int bx, int by, uint64_t mask,
-                const BlockTarget& target, const uint32_t* shared_records = nullptr,
-                RegionVerdict known = RegionVerdict::Unknown);
+                const BlockTarget& target, const uint32_t* shared_records = nullptr);
   // Aligned blocks of one instance within a tile, in the order they run (at most the tile's).
   struct AlignedBlocks {
     static constexpr int kBlocksPerTile = (kTileSize / kBlockSize) * (kTileSize / kBlockSize);
@@ -101,6 +98,8 @@ class PixelExecutor {
     }
   };
   // runBlock for each of `blocks` (the same pixels, counters and images), set up once.
+  // `known`: a verdict already made for a rectangle holding all their lanes (boundVerdict):
+  // Accepted runs the covered program whatever the mask, with no region verdict looked up.
   void runBlocks(const CompiledPrimitive& prim, const uint32_t* record, const ChannelLayout& layout,
                  const RasterState& state, uint32_t shade_id, const AlignedBlocks& blocks, const BlockTarget& target,
                  const uint32_t* shared_records = nullptr, RegionVerdict known = RegionVerdict::Unknown);

@@ -524,12 +524,13 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
       const bool by_regions = iy1 - iy0 >= kRejectionRegion && ix1 - ix0 >= kRejectionRegion;
       const int step = by_regions ? kRejectionRegion : kTileSize;
       const int rx0 = (ix0 - x0) / step * step + x0, ry0 = (iy0 - y0) / step * step + y0;
+      // The blocks to run, collected and run together (PixelExecutor::runBlocks).
+      PixelExecutor::AlignedBlocks& aligned = s.aligned_blocks;
+      aligned.count = 0;
       // A bound over 2x2 regions or more is first judged whole, in one walk: a large triangle
       // is rejected or accepted over most tiles it touches, where a walk per region would
       // cost four (the walk costs about what a block does). Undecided, its regions are judged
       // one by one.
-      PixelExecutor::AlignedBlocks& blocks = s.aligned_blocks;
-      blocks.count = 0;
       RegionVerdict whole = RegionVerdict::Unknown;
       if (by_regions && (ix1 - 1 - rx0) / kRejectionRegion >= 1 && (iy1 - 1 - ry0) / kRejectionRegion >= 1) {
         whole = s.executor.boundVerdict(*inst.prim, record, state, ix0, iy0, ix1, iy1);
@@ -562,11 +563,11 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
             ++s.blocks_depth_culled;
             continue;
           }
-          if (mask) blocks.add(bx, by, mask);
+          if (mask) aligned.add(bx, by, mask);
         }
       }
         }
-      s.executor.runBlocks(*inst.prim, record, layout, state, inst.shade_id, blocks, target, shared, whole);
+      s.executor.runBlocks(*inst.prim, record, layout, state, inst.shade_id, aligned, target, shared, whole);
     }
     // What it wrote to the depth buffer: those blocks' ranges are stale.
     if (depth_ && state.depth_test && state.depth_write && s.executor.counters.lanes_committed != committed_before)
