@@ -13,15 +13,6 @@ static_assert(kNativeBlockSize == kBlockSize && kNativeLanes == kLanes && kNativ
 
 namespace {
 
-NativeIsa nativeIsaOf(LaneIsa isa) {
-  switch (isa) {
-    case LaneIsa::Avx512: return NativeIsa::Avx512;
-    case LaneIsa::Avx2: return NativeIsa::Avx2;
-    case LaneIsa::Baseline: break;
-  }
-  return NativeIsa::Sse2;
-}
-
 // The entry of `items` that `matches` -- the last one found first -- or null.
 template <class T, class Matches>
 T* findRemembered(std::vector<T>& items, size_t& last, const Matches& matches) {
@@ -41,6 +32,15 @@ bool readsState(const PixelProgram& p) {
 }
 
 }  // namespace
+
+NativeIsa nativeIsaOf(LaneIsa isa) {
+  switch (isa) {
+    case LaneIsa::Avx512: return NativeIsa::Avx512;
+    case LaneIsa::Avx2: return NativeIsa::Avx2;
+    case LaneIsa::Baseline: break;
+  }
+  return NativeIsa::Sse2;
+}
 
 void NativeBlocks::startFrame() {
   found_.clear();

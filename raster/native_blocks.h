@@ -11,6 +11,7 @@
 #include "compiler/compiler.h"
 #include "compiler/native/native_abi.h"
 #include "compiler/native/native_cache.h"
+#include "raster/lane_kernels.h"
 #include "raster/limits.h"
 #include "raster/raster_state.h"
 
@@ -18,6 +19,9 @@ namespace pf {
 
 struct BlockTarget;
 struct PackedLanes;
+
+// The native instruction set matching the interpreter kernels' (lane_kernels.h).
+NativeIsa nativeIsaOf(LaneIsa isa);
 
 // A native pixel program as the executor calls it.
 struct NativeBlockFunction {

@@ -46,6 +46,7 @@ Renderer::Renderer(int threads) : pool_(threads) {
     scratch_.push_back(std::make_unique<WorkerScratch>());
     scratch_.back()->executor.use_native = native_code_;
     batch_setups_.push_back(std::make_unique<BatchSetupExecutor>());
+    batch_setups_.back()->use_native = native_code_;
   }
 }
 
@@ -189,6 +190,7 @@ void Renderer::submitInstances(const CompiledPrimitive& prim, int instances, con
   batch_records_.resize(words * static_cast<size_t>(instances) + 1);
   batch_outputs_.resize(static_cast<size_t>(instances));
   const int batches = (instances + kSetupBatchLanes - 1) / kSetupBatchLanes;
+  const NativeSetupFunction native = batch_setups_[0]->nativeFunction(prim, layout, instances);
   auto setupBatch = [&](int b, int worker) {
     const int first = b * kSetupBatchLanes, lanes = std::min(kSetupBatchLanes, instances - first);
     SetupInput in[kSetupBatchLanes];
@@ -199,7 +201,7 @@ void Renderer::submitInstances(const CompiledPrimitive& prim, int instances, con
                          sequence_points, nullptr, 0};
       records[l] = batch_records_.data() + words * static_cast<size_t>(i);
     }
-    batch_setups_[static_cast<size_t>(worker)]->run(prim, in, lanes, records, batch_outputs_.data() + first);
+    batch_setups_[static_cast<size_t>(worker)]->run(prim, in, lanes, records, batch_outputs_.data() + first, native);
   };
   if (batches > 1 && pool_.threadCount() > 1) {
     // (A closure of one pointer: std::function keeps it without allocating.)
@@ -244,6 +246,8 @@ SetupBatchCounters Renderer::setupBatchCounters() const {
     sum.lanes_batched += b->counters.lanes_batched;
     sum.lanes_resumed += b->counters.lanes_resumed;
     sum.lanes_scalar += b->counters.lanes_scalar;
+    sum.batches_native += b->counters.batches_native;
+    sum.lanes_native += b->counters.lanes_native;
   }
   return sum;
 }
@@ -631,6 +635,7 @@ void Renderer::flush() {
 void Renderer::setNativeCode(bool on) {
   native_code_ = on;
   for (auto& s : scratch_) s->executor.use_native = on;
+  for (auto& b : batch_setups_) b->use_native = on;
 }
 
 void Renderer::discardPending() {

@@ -10,23 +10,33 @@
 #include <array>
 #include <bit>
 #include <cstring>
+#include <string>
 #include <utility>
 
+#include "compiler/native/native_cache.h"
 #include "compiler/scalar_ops.h"
 #include "raster/lane_kernels.h"
 #include "raster/limits.h"
+#include "raster/native_blocks.h"
 
 namespace pf {
 namespace {
 
 constexpr int K = kSetupBatchLanes;
 static_assert(K <= 32, "lane sets are 32-bit");
+static_assert(K == kNativeSetupLanes && kMaxMaskDepth == kNativeSetupMaxLoops,
+              "compiler/native/native_abi.h repeats the batch's sizes");
 constexpr uint32_t kAllLanes = K == 32 ? ~0u : (1u << K) - 1u;
 
 // The value-producing scalar instructions: every op up to Mov (their kernels: lane_kernels.h).
 constexpr size_t kKernelOps = kLaneKernelOps;
 
 alignas(64) const uint32_t kZeroLanes[K] = {};
+
+bool sameSetupVariant(const NativeSetupVariant& a, const NativeSetupVariant& b) {
+  return a.isa == b.isa && a.channels == b.channels && std::equal(a.kind_begin, a.kind_begin + 3, b.kind_begin) &&
+         std::equal(a.kind_end, a.kind_end + 3, b.kind_end) && a.named_bound == b.named_bound;
+}
 
 // dst = f(a, b) in every lane, through a temporary (dst may be a or b).
 template <class F>
@@ -40,6 +50,18 @@ template <class F>
 
 void BatchSetupExecutor::run(const CompiledPrimitive& prim, const SetupInput* in, int count,
                              uint32_t* const* records, SetupOutput* out) {
+  // The native function of each run of batches drawn with one layout.
+  for (int first = 0; first < count;) {
+    int end = first + 1;
+    while (end < count && in[end].layout == in[first].layout) ++end;
+    const NativeSetupFunction native = nativeFunction(prim, *in[first].layout, end - first);
+    run(prim, in + first, end - first, records + first, out + first, native);
+    first = end;
+  }
+}
+
+void BatchSetupExecutor::run(const CompiledPrimitive& prim, const SetupInput* in, int count,
+                             uint32_t* const* records, SetupOutput* out, NativeSetupFunction native) {
   for (int first = 0; first < count; first += K) {
     const int lanes = std::min(K, count - first);
     bool together = (batchable(prim) || batch_callers) && lanes >= kMinBatchLanes;
@@ -49,7 +71,7 @@ void BatchSetupExecutor::run(const CompiledPrimitive& prim, const SetupInput* in
                  a.depth == b.depth;
     }
     if (together) {
-      runBatch(prim, in + first, lanes, records + first, out + first);
+      runBatch(prim, in + first, lanes, records + first, out + first, native);
       continue;
     }
     for (int l = 0; l < lanes; ++l) out[first + l] = scalar_.run(prim, in[first + l], records[first + l]);
@@ -74,8 +96,50 @@ void BatchSetupExecutor::finishScalar(const CompiledPrimitive& prim, const Setup
   ++counters.lanes_resumed;
 }
 
+NativeSetupFunction BatchSetupExecutor::nativeFunction(const CompiledPrimitive& prim, const ChannelLayout& layout,
+                                                      int instances) {
+  // (Not a primitive that calls others: the renderer sets those up scalar -- their batches
+  // would leave at the first call -- and their programs are the longest to compile.)
+  if (!use_native || !batchable(prim) || !nativeCodeAvailable()) return nullptr;
+  NativeSetupVariant& v = variant_;
+  v.isa = nativeIsaOf(laneIsa());
+  v.channels = layout.count;
+  for (int k = 0; k < kInterpKindCount; ++k) {
+    v.kind_begin[k] = layout.kind_begin[k];
+    v.kind_end[k] = layout.kind_end[k];
+  }
+  v.named_bound.clear();
+  for (const std::string& name : prim.named_interpolators) v.named_bound.push_back(layout.bindsInterpolator(name));
+  NativeProgramCache& cache = NativeProgramCache::instance();
+  Remembered& r = remembered_;
+  const SetupProgram& p = prim.setup;
+  auto sameInstr = [](const Instr& x, const Instr& y) {
+    return x.op == y.op && x.imm == y.imm && x.dst == y.dst && x.a == y.a && x.b == y.b && x.c == y.c && x.d == y.d &&
+           x.masked_write == y.masked_write;
+  };
+  const bool same = r.entry && std::equal(p.code.begin(), p.code.end(), r.code.begin(), r.code.end(), sameInstr) &&
+                    p.constants == r.constants && p.scalar_exports == r.scalar_exports &&
+                    p.interp_exports == r.interp_exports && p.num_regs == r.num_regs &&
+                    p.num_interp_regs == r.num_interp_regs &&
+                    sameSetupVariant(v, r.variant);
+  if (!same) {
+    r.entry = cache.setupEntry(p, v);
+    r.code = p.code;
+    r.constants = p.constants;
+    r.scalar_exports = p.scalar_exports;
+    r.interp_exports = p.interp_exports;
+    r.num_regs = p.num_regs;
+    r.num_interp_regs = p.num_interp_regs;
+    r.variant = v;
+  }
+  NativeProgramCache::Entry* entry = r.entry;
+  if (void* f = entry->function()) return reinterpret_cast<NativeSetupFunction>(f);
+  if (entry->settled() || !cache.drawn(entry, static_cast<uint64_t>(instances))) return nullptr;
+  return reinterpret_cast<NativeSetupFunction>(cache.compileSetup(entry, prim.setup, v));
+}
+
 void BatchSetupExecutor::runBatch(const CompiledPrimitive& prim, const SetupInput* in, int lanes,
-                                  uint32_t* const* records, SetupOutput* out) {
+                                  uint32_t* const* records, SetupOutput* out, NativeSetupFunction fn) {
   ++counters.batches;
   const SetupProgram& p = prim.setup;
   const ChannelLayout& layout = *in[0].layout;
@@ -84,13 +148,20 @@ void BatchSetupExecutor::runBatch(const CompiledPrimitive& prim, const SetupInpu
   const int nch = layout.count;
   const size_t nregs = p.num_regs, nconst = p.constants.size(), nparams = static_cast<size_t>(prim.param_floats);
   regs_.resize((nregs + nconst + nparams) * K);
-  std::fill_n(regs_.begin(), nregs * K, 0u);
-  for (size_t k = 0; k < nconst; ++k) std::fill_n(regs_.begin() + static_cast<long>((nregs + k) * K), K, p.constants[k]);
-  for (size_t k = 0; k < nparams; ++k) {
-    uint32_t* d = regs_.data() + (nregs + nconst + k) * K;
-    for (int l = 0; l < K; ++l) d[l] = in[l < lanes ? l : 0].params[k];  // lanes past the batch: copies of lane 0
-  }
-  interp_.assign(static_cast<size_t>(p.num_interp_regs) * nch * K, 0.0f);
+  interp_.resize(static_cast<size_t>(p.num_interp_regs) * nch * K);
+  // The file: the registers and interp registers zero (unless native code wrote them), the
+  // constants broadcast, the parameters transposed.
+  auto loadFile = [&](bool registers) {
+    if (registers) {
+      std::fill_n(regs_.begin(), nregs * K, 0u);
+      std::fill(interp_.begin(), interp_.end(), 0.0f);
+    }
+    for (size_t k = 0; k < nconst; ++k) std::fill_n(regs_.begin() + static_cast<long>((nregs + k) * K), K, p.constants[k]);
+    for (size_t k = 0; k < nparams; ++k) {
+      uint32_t* d = regs_.data() + (nregs + nconst + k) * K;
+      for (int l = 0; l < K; ++l) d[l] = in[l < lanes ? l : 0].params[k];  // lanes past the batch: copies of lane 0
+    }
+  };
   for (int l = 0; l < lanes; ++l) out[l] = SetupOutput{};
   if (!state_cached_ || !(cached_state_ == st)) {  // instances of one glBegin share their state
     for (int k = 0; k < kStateValueCount; ++k) state_values_[k] = stateValue(st, static_cast<uint16_t>(k));
@@ -131,7 +202,55 @@ void BatchSetupExecutor::runBatch(const CompiledPrimitive& prim, const SetupInpu
   };
 
   const size_t n = p.code.size();
-  for (size_t pc = 0; pc < n;) {
+  size_t pc = 0;
+  // Native code first, while the lanes agree: where it stops, this loop goes on.
+  if (fn) {
+    NativeSetupArgs& a = native_args_;
+    a.regs = regs_.data();
+    a.interp = interp_.data();
+    a.state_values = state_values_;
+    for (int l = 0; l < K; ++l) {
+      a.params[l] = in[l < lanes ? l : 0].params;
+      a.vertex_channels[l] = in[l < lanes ? l : 0].vertex_channels;
+      a.records[l] = l < lanes ? records[l] : nullptr;
+    }
+    a.iteration_cap = cap;
+    a.param_words = prim.paramFloats(sequence_points);
+    a.active = active;
+    a.sequence_points = sequence_points;
+    const NativeSetupStatus status = fn(&a);
+    ++counters.batches_native;
+    forActive([&](int l) {
+      if (a.has_bound) {
+        out[l].has_bound = true;
+        for (int k = 0; k < 4; ++k) out[l].bound[k] = a.bound[k][l];
+      }
+      if (a.has_facing) out[l].back_facing = a.back_facing[l] != 0;
+      if (a.has_depth_bound) {
+        out[l].has_depth_bound = true;
+        for (int k = 0; k < 2; ++k) out[l].depth_bound[k] = a.depth_bound[k][l];
+      }
+    });
+    count = a.instructions;
+    if (status == NativeSetupStatus::Killed || status == NativeSetupStatus::CapHit) {
+      counters.lanes_native += static_cast<uint64_t>(std::popcount(active));
+      killAll(status == NativeSetupStatus::CapHit);
+      return;
+    }
+    if (status == NativeSetupStatus::Done) {  // (the records written)
+      forActive([&](int l) { out[l].instructions = count; });
+      counters.lanes_native += static_cast<uint64_t>(std::popcount(active));
+      counters.lanes_batched += static_cast<uint64_t>(std::popcount(active));
+      return;
+    }
+    loadFile(false);  // (the registers written)
+    pc = a.pc;
+    loop_depth = a.loop_depth;
+    std::copy_n(a.loop_counters, loop_depth, loop_counters);
+  } else {
+    loadFile(true);
+  }
+  while (pc < n) {
     const Instr& ins = p.code[pc];
     ++pc;
     ++count;

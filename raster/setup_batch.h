@@ -10,11 +10,17 @@
 // those instances from its next instruction -- and the larger group goes on. The same happens
 // at instructions that are not batched (calls of other primitives: OutParam, OutVertex, Emit)
 // for every lane, and when fewer than kMinBatchLanes lanes would go on.
+//
+// Native code (compiler/native/setup_codegen.h), once the program has set up enough instances
+// to be compiled, runs the batch while its lanes agree and hands it to this loop where they
+// part: the same results, bit for bit.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
+#include "compiler/native/native_abi.h"
+#include "compiler/native/native_cache.h"
 #include "raster/setup_executor.h"
 
 namespace pf {
@@ -29,6 +35,8 @@ struct SetupBatchCounters {
   uint64_t lanes_batched = 0;     // instances that finished in the batch
   uint64_t lanes_resumed = 0;     // instances handed to the scalar executor part-way
   uint64_t lanes_scalar = 0;      // instances run scalar from the start
+  uint64_t batches_native = 0;    // batches native code ran (to their end or where they parted)
+  uint64_t lanes_native = 0;      // instances whose setup native code ran to its end or kill
 };
 
 class BatchSetupExecutor {
@@ -37,8 +45,18 @@ class BatchSetupExecutor {
   // instance i's. Instances that cannot share a batch (different states, layouts, sequence
   // counts or depths, or a primitive that calls others) and batches of fewer than
   // kMinBatchLanes run scalar. Any count: batches are formed kSetupBatchLanes at a time.
+  // With use_native, native code runs the batches once it is compiled (nativeFunction()).
   void run(const CompiledPrimitive& prim, const SetupInput* in, int count, uint32_t* const* records,
            SetupOutput* out);
+  // The same, every batch run by `native` (null: the interpreter), nativeFunction()'s answer
+  // for these instances' program and layout -- looked up once for a draw's batches.
+  void run(const CompiledPrimitive& prim, const SetupInput* in, int count, uint32_t* const* records,
+           SetupOutput* out, NativeSetupFunction native);
+
+  // The native function that sets up `instances` more instances of `prim` drawn with `layout`:
+  // null while the program has not yet set up enough instances to be compiled (they count
+  // towards it: native_cache.h), or when native code is off, unavailable or refuses it.
+  NativeSetupFunction nativeFunction(const CompiledPrimitive& prim, const ChannelLayout& layout, int instances);
 
   // True where batching can pay: a primitive with no callees (an Emit would leave the batch,
   // and the callees' instances must be binned between their callers').
@@ -48,15 +66,29 @@ class BatchSetupExecutor {
   // Tests: batch primitives that call others too (their calls leave the batch at OutParam; a
   // lane resumed earlier may then submit its calls before an earlier lane's).
   bool batch_callers = false;
+  // Native code runs batches once compiled (the renderer's choice: PF_JIT, the context's).
+  bool use_native = false;
 
  private:
   void runBatch(const CompiledPrimitive& prim, const SetupInput* in, int lanes, uint32_t* const* records,
-                SetupOutput* out);
+                SetupOutput* out, NativeSetupFunction native);
   // Hands lane `l` to the scalar executor at `pc`.
   void finishScalar(const CompiledPrimitive& prim, const SetupInput& in, int l, uint32_t pc, uint32_t* record,
                     SetupOutput& out, uint32_t instructions, const uint32_t* loop_counters, int loop_depth);
 
   SetupExecutor scalar_;
+  NativeSetupVariant variant_;
+  NativeSetupArgs native_args_;
+  // The last program's cache entry, found again by content (its code, constants, exports and
+  // variant) without building the cache's key: a draw looks its program up once per batch.
+  struct Remembered {
+    std::vector<Instr> code;
+    std::vector<uint32_t> constants, scalar_exports, interp_exports;
+    uint32_t num_regs = 0, num_interp_regs = 0;
+    NativeSetupVariant variant;
+    NativeProgramCache::Entry* entry = nullptr;
+  };
+  Remembered remembered_;
   RasterState cached_state_;  // the state values of the last state seen, as the scalar executor's
   bool state_cached_ = false;
   float state_values_[kStateValueCount] = {};

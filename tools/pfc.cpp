@@ -1,11 +1,13 @@
 // pfc: the primitive-language compiler on the command line.
 //   pfc FILE.pfl [--emit=ast|ir|setup|pixel|native|tape] [--field NAME --params V...]
-//   --emit=native: each primitive's pixel program as native code (LLVM IR and assembly), for
-//   the block shape, instruction set and channels --block, --isa and --channels give.
+//   --emit=native: each primitive's setup and pixel programs as native code (LLVM IR and
+//   assembly), for the block shape, instruction set and channels --block, --isa and --channels give.
 // Diagnostics go to stderr as file:line:col: error: message, with the line and a caret.
 // Field units are compiled to tapes too (docs/language.md, "Fields"): those without parameters
 // always, one with parameters when --field names it and --params gives their values.
 // Exit status: 0 compiled, 1 compile error or unreadable file, 2 bad command line.
+#include <algorithm>
+#include <iterator>
 #include <set>
 #include <CLI/CLI.hpp>
 
@@ -26,8 +28,8 @@ int main(int argc, char** argv) {
   app.add_option("file", file, "source file (.pfl)")->required();
   bool explain = false;
   app.add_option("--emit", emit,
-                 "print a stage: ast, ir, setup (per-instance program), pixel (per-block program), native (the pixel "
-                 "program as machine code), tape (fields)")
+                 "print a stage: ast, ir, setup (per-instance program), pixel (per-block program), native (the setup "
+                 "and pixel programs as machine code), tape (fields)")
       ->check(CLI::IsMember({"none", "ast", "ir", "setup", "pixel", "native", "tape"}));
   std::string block = "block", isa = "avx512";
   int channels = 4;
@@ -79,10 +81,22 @@ int main(int argc, char** argv) {
     v.channels = channels;
     v.kind_end[0] = v.kind_end[1] = v.kind_end[2] = channels;
     v.kind_begin[1] = v.kind_begin[2] = channels;
+    pf::NativeSetupVariant sv;
+    sv.isa = v.isa;
+    sv.channels = channels;
+    std::copy(std::begin(v.kind_begin), std::end(v.kind_begin), sv.kind_begin);
+    std::copy(std::begin(v.kind_end), std::end(v.kind_end), sv.kind_end);
     for (const auto& prim : module.primitives) {
       v.writes_normal = prim->writes_normal;
       v.named_bound.assign(prim->named_interpolators.size(), false);
+      sv.named_bound = v.named_bound;
       std::string text, error;
+      if (!pf::nativeSetupListing(prim->setup, sv, text, error))
+        std::cout << "primitive " << prim->name << ": no native setup code: " << error << "\n";
+      else
+        std::cout << "primitive " << prim->name << ": native setup program (" << pf::kNativeSetupLanes
+                  << " instances, " << isa << ")\n"
+                  << text;
       if (!pf::nativePixelListing(prim->pixel, v, text, error)) {
         std::cout << "primitive " << prim->name << ": no native code: " << error << "\n";
         continue;

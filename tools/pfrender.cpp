@@ -60,6 +60,12 @@ void printStats(PFcontext ctx, double ms) {
   std::printf("blocks native      %llu (run as machine code: %.1f%% of the blocks run; the rest interpreted)\n",
               static_cast<unsigned long long>(s.blocks_native),
               s.blocks_run ? 100.0 * s.blocks_native / double(s.blocks_run) : 0.0);
+  const pf::SetupBatchCounters setup = ctx->renderer.setupBatchCounters();
+  std::printf("setups             %llu batched (%llu of them finished in native code), %llu resumed scalar, %llu "
+              "scalar (this context)\n",
+              static_cast<unsigned long long>(setup.lanes_batched), static_cast<unsigned long long>(setup.lanes_native),
+              static_cast<unsigned long long>(setup.lanes_resumed), static_cast<unsigned long long>(setup.lanes_scalar));
+
   const pf::NativeCacheStats n = pf::NativeProgramCache::instance().stats();
   std::printf("native programs    %llu compiled in %.1f ms, %llu left to the interpreter (this process)\n",
               static_cast<unsigned long long>(n.compiled), n.milliseconds,

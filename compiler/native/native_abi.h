@@ -90,4 +90,64 @@ struct NativeBlockArgs {
 // A compiled pixel program: returns the lanes that committed (alive at the end).
 using NativePixelFunction = uint64_t (*)(NativeBlockArgs* args);
 
+// --- Setup programs ------------------------------------------------------------------------
+// A compiled setup program runs a batch of up to kNativeSetupLanes instances of one primitive,
+// one per lane (raster/setup_batch.h), for as long as they take the same path: the native
+// counterpart of the batched interpreter's loop. Where the lanes disagree at a conditional
+// jump, or at an instruction it does not run (calls of other primitives), it stops before that
+// instruction with every register written back, and the batched interpreter goes on from
+// there exactly as if it had run the batch so far itself.
+constexpr int kNativeSetupLanes = 16;
+constexpr int kNativeSetupMaxLoops = 64;  // open loops (compiler/isa.h's kMaxProgramNesting)
+
+// What a native setup program is specialised on besides its content: the instruction set and
+// the instances' channel layout (raster's ChannelLayout).
+struct NativeSetupVariant {
+  NativeIsa isa = NativeIsa::Sse2;
+  int channels = 0;
+  int kind_begin[3] = {0, 0, 0};
+  int kind_end[3] = {0, 0, 0};
+  // Per entry of the primitive's named_interpolators: whether the layout binds it (HasNamed).
+  std::vector<bool> named_bound;
+};
+
+enum class NativeSetupStatus : uint32_t {
+  Done = 0,    // the program ran to its end: each lane's record written
+  Killed = 1,  // every lane was killed (Kill)
+  CapHit = 2,  // a loop ran past the cap: every lane killed
+  Left = 3,    // stopped before instruction `pc`: the interpreter goes on from there
+};
+
+// The arguments of one batch. Where it stops before the end (Left), the registers are written
+// to the batched interpreter's file, lane-major: register r of lane l at
+// regs[r * kNativeSetupLanes + l]; interp register i, channel c of lane l at
+// interp[(i * channels + c) * kNativeSetupLanes + l]. At the end (Done) it writes each lane's
+// record itself (the exports: SetupProgram::scalar_exports, then interp_exports' channels).
+struct NativeSetupArgs {
+  uint32_t* regs = nullptr;              // out: the registers (num_regs rows)
+  float* interp = nullptr;               // out: the interp registers
+  const float* state_values = nullptr;   // compiler/isa.h's StateValue order (LoadState)
+  // Each lane's parameter block, sequence points' channels and record (lanes past the batch:
+  // lane 0's blocks, and no record).
+  const uint32_t* params[kNativeSetupLanes] = {};
+  const float* vertex_channels[kNativeSetupLanes] = {};
+  uint32_t* records[kNativeSetupLanes] = {};
+  uint64_t iteration_cap = 0;   // a loop's iterations before the lanes are killed
+  int64_t param_words = 0;      // words in each parameter block (LoadParamAt past them: 0)
+  uint32_t active = 0;          // the batch's lanes (bit l: lane l), from lane 0 up
+  int32_t sequence_points = 0;
+  // Out: where it stopped, the instructions run (the same for every lane), the loops open.
+  uint32_t pc = 0;
+  uint32_t instructions = 0;
+  int32_t loop_depth = 0;
+  uint32_t loop_counters[kNativeSetupMaxLoops] = {};
+  // Out: the effects, each lane's (set: the instruction ran; the last one's values).
+  uint32_t has_bound = 0, has_depth_bound = 0, has_facing = 0;
+  float bound[4][kNativeSetupLanes] = {};
+  float depth_bound[2][kNativeSetupLanes] = {};
+  uint32_t back_facing[kNativeSetupLanes] = {};
+};
+
+using NativeSetupFunction = NativeSetupStatus (*)(NativeSetupArgs* args);
+
 }  // namespace pf

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <unordered_map>
@@ -16,6 +17,7 @@
 
 #include "compiler/native/jit_engine.h"
 #include "compiler/native/pixel_codegen.h"
+#include "compiler/native/setup_codegen.h"
 
 namespace pf {
 
@@ -41,6 +43,16 @@ class KeyWriter {
     key_.append(p, sizeof v);
   }
   void program(const PixelProgram& p) {
+    bytecode(p);
+    put(p.num_uniform_slots);
+    put(p.num_interp_uniform_slots);
+    put(p.reads_surface);
+  }
+  void words(const std::vector<uint32_t>& v) {
+    put(v.size());
+    key_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(uint32_t));
+  }
+  void bytecode(const Bytecode& p) {
     put(p.code.size());
     for (const Instr& in : p.code) {
       put(in.op);
@@ -56,9 +68,14 @@ class KeyWriter {
     key_.append(reinterpret_cast<const char*>(p.constants.data()), p.constants.size() * sizeof(uint32_t));
     put(p.num_regs);
     put(p.num_interp_regs);
-    put(p.num_uniform_slots);
-    put(p.num_interp_uniform_slots);
-    put(p.reads_surface);
+  }
+  void variant(const NativeSetupVariant& v) {
+    put(v.isa);
+    put(v.channels);
+    put(v.kind_begin);
+    put(v.kind_end);
+    put(v.named_bound.size());
+    for (bool b : v.named_bound) put(b);
   }
   void variant(const NativePixelVariant& v) {
     put(v.isa);
@@ -86,21 +103,19 @@ class KeyWriter {
 
 enum class Built { Yes, Unsupported, Unavailable, Broken };
 
-// A module holding the pixel function for `program` under `variant` -- or, without a variant,
-// its block-rejection walk -- named `name`, with its target set.
-Built buildModule(const PixelProgram& program, const NativePixelVariant* variant, const std::string& name,
-                  llvm::LLVMContext& context, std::unique_ptr<llvm::Module>& module, std::string& error) {
+// A module holding the function `build` adds (named `name`), with its target set for `isa`.
+Built buildModule(const std::function<llvm::Function*(llvm::Module&, const std::string&, std::string&)>& build,
+                  NativeIsa isa, const std::string& name, llvm::LLVMContext& context,
+                  std::unique_ptr<llvm::Module>& module, std::string& error) {
   JitEngine* engine = JitEngine::instance();
   if (!engine) {
     error = "native code is unavailable";
     return Built::Unavailable;
   }
   module = std::make_unique<llvm::Module>("primflow." + name, context);
-  llvm::Function* fn = variant ? buildPixelFunction(*module, name, program, *variant, error)
-                               : buildVerdictFunction(*module, name, program, error);
+  llvm::Function* fn = build(*module, name, error);
   if (!fn) return Built::Unsupported;
-  // (The walk is scalar code: the baseline instruction set computes it as well as any.)
-  engine->setTarget(*fn, variant ? variant->isa : NativeIsa::Sse2);
+  engine->setTarget(*fn, isa);
   std::string problems;
   llvm::raw_string_ostream os(problems);
   if (llvm::verifyModule(*module, &os)) {
@@ -108,6 +123,24 @@ Built buildModule(const PixelProgram& program, const NativePixelVariant* variant
     return Built::Broken;
   }
   return Built::Yes;
+}
+
+// The pixel function for `program` under `variant` -- or, without a variant, its
+// block-rejection walk (scalar code: the baseline instruction set computes it as well as any).
+Built buildPixelModule(const PixelProgram& program, const NativePixelVariant* variant, const std::string& name,
+                       llvm::LLVMContext& context, std::unique_ptr<llvm::Module>& module, std::string& error) {
+  auto build = [&](llvm::Module& m, const std::string& n, std::string& e) {
+    return variant ? buildPixelFunction(m, n, program, *variant, e) : buildVerdictFunction(m, n, program, e);
+  };
+  return buildModule(build, variant ? variant->isa : NativeIsa::Sse2, name, context, module, error);
+}
+
+Built buildSetupModule(const SetupProgram& program, const NativeSetupVariant& variant, const std::string& name,
+                       llvm::LLVMContext& context, std::unique_ptr<llvm::Module>& module, std::string& error) {
+  auto build = [&](llvm::Module& m, const std::string& n, std::string& e) {
+    return buildSetupFunction(m, n, program, variant, e);
+  };
+  return buildModule(build, variant.isa, name, context, module, error);
 }
 
 }  // namespace
@@ -139,7 +172,8 @@ uint64_t thresholdFromEnvironment(const char* name, uint64_t fallback) {
 NativeProgramCache::NativeProgramCache()
     : impl_(new Impl),
       threshold_(thresholdFromEnvironment("PF_JIT_THRESHOLD", kDefaultNativeThreshold)),
-      walk_threshold_(thresholdFromEnvironment("PF_JIT_WALK_THRESHOLD", kDefaultWalkThreshold)) {}
+      walk_threshold_(thresholdFromEnvironment("PF_JIT_WALK_THRESHOLD", kDefaultWalkThreshold)),
+      setup_threshold_(thresholdFromEnvironment("PF_JIT_SETUP_THRESHOLD", kDefaultSetupThreshold)) {}
 NativeProgramCache::~NativeProgramCache() { delete impl_; }
 
 NativeProgramCache& NativeProgramCache::instance() {
@@ -152,6 +186,15 @@ NativeCacheStats NativeProgramCache::stats() const {
   return impl_->stats;
 }
 
+NativeProgramCache::Entry* NativeProgramCache::entryFor(const std::string& key, Entry::Kind kind) {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  auto it = impl_->entries.find(key);
+  if (it != impl_->entries.end()) return it->second.get();
+  Entry* e = impl_->entries.emplace(key, std::make_unique<Entry>()).first->second.get();
+  e->kind_ = kind;
+  return e;
+}
+
 NativeProgramCache::Entry* NativeProgramCache::pixelEntry(const PixelProgram& program, const NativePixelVariant& variant) {
   thread_local std::string key;
   KeyWriter w(key);
@@ -159,10 +202,7 @@ NativeProgramCache::Entry* NativeProgramCache::pixelEntry(const PixelProgram& pr
   w.put(nativeFaultForTesting());
   w.program(program);
   w.variant(variant);
-  std::lock_guard<std::mutex> lock(impl_->mutex);
-  auto it = impl_->entries.find(key);
-  if (it != impl_->entries.end()) return it->second.get();
-  return impl_->entries.emplace(key, std::make_unique<Entry>()).first->second.get();
+  return entryFor(key, Entry::Kind::Pixel);
 }
 
 NativeProgramCache::Entry* NativeProgramCache::verdictEntry(const PixelProgram& program) {
@@ -173,17 +213,25 @@ NativeProgramCache::Entry* NativeProgramCache::verdictEntry(const PixelProgram& 
   w.put(program.last_early_retire);
   w.put(program.last_coverage_retire);
   w.put(program.covered != nullptr);
-  std::lock_guard<std::mutex> lock(impl_->mutex);
-  auto it = impl_->entries.find(key);
-  if (it != impl_->entries.end()) return it->second.get();
-  Entry* e = impl_->entries.emplace(key, std::make_unique<Entry>()).first->second.get();
-  e->verdict_ = true;
-  return e;
+  return entryFor(key, Entry::Kind::Verdict);
+}
+
+NativeProgramCache::Entry* NativeProgramCache::setupEntry(const SetupProgram& program, const NativeSetupVariant& variant) {
+  thread_local std::string key;
+  KeyWriter w(key);
+  w.put('s');
+  w.bytecode(program);
+  w.words(program.scalar_exports);  // (the function writes the records)
+  w.words(program.interp_exports);
+  w.variant(variant);
+  return entryFor(key, Entry::Kind::Setup);
 }
 
 bool NativeProgramCache::drawn(Entry* entry, uint64_t blocks) {
   if (entry->status_.load(std::memory_order_acquire) != Entry::kCold) return false;
-  const uint64_t threshold = entry->verdict_ ? walkThreshold() : this->threshold();
+  const uint64_t threshold = entry->kind_ == Entry::Kind::Verdict ? walkThreshold()
+                             : entry->kind_ == Entry::Kind::Setup ? setupThreshold()
+                                                                  : this->threshold();
   if (entry->blocks_.fetch_add(blocks, std::memory_order_relaxed) + blocks <= threshold) return false;
   // One thread compiles (the others interpret meanwhile).
   uint8_t cold = Entry::kCold;
@@ -191,6 +239,24 @@ bool NativeProgramCache::drawn(Entry* entry, uint64_t blocks) {
 }
 
 void* NativeProgramCache::compile(Entry* entry, const PixelProgram& program, const NativePixelVariant* variant) {
+  const bool verdict = entry->kind_ == Entry::Kind::Verdict;
+  return compileWith(entry, verdict ? "block-rejection walk" : "pixel program",
+                     [&](const std::string& name, llvm::LLVMContext& context, std::unique_ptr<llvm::Module>& module,
+                         std::string& error) {
+                       return static_cast<int>(buildPixelModule(program, verdict ? nullptr : variant, name, context,
+                                                                module, error));
+                     });
+}
+
+void* NativeProgramCache::compileSetup(Entry* entry, const SetupProgram& program, const NativeSetupVariant& variant) {
+  return compileWith(entry, "setup program",
+                     [&](const std::string& name, llvm::LLVMContext& context, std::unique_ptr<llvm::Module>& module,
+                         std::string& error) {
+                       return static_cast<int>(buildSetupModule(program, variant, name, context, module, error));
+                     });
+}
+
+void* NativeProgramCache::compileWith(Entry* entry, const char* what, const ModuleBuilder& build) {
   uint64_t serial;
   {
     std::lock_guard<std::mutex> lock(impl_->mutex);
@@ -202,9 +268,12 @@ void* NativeProgramCache::compile(Entry* entry, const PixelProgram& program, con
   std::string error;
   auto context = std::make_unique<llvm::LLVMContext>();
   std::unique_ptr<llvm::Module> module;
-  const std::string name = (entry->verdict_ ? "pf_verdict_" : "pf_pixel_") + std::to_string(serial);
+  const char* prefix = entry->kind_ == Entry::Kind::Verdict ? "pf_verdict_"
+                       : entry->kind_ == Entry::Kind::Setup ? "pf_setup_"
+                                                            : "pf_pixel_";
+  const std::string name = prefix + std::to_string(serial);
   std::vector<void*> addresses;
-  switch (buildModule(program, entry->verdict_ ? nullptr : variant, name, *context, module, error)) {
+  switch (static_cast<Built>(build(name, *context, module, error))) {
     case Built::Yes:
       if (JitEngine::instance()->add(std::move(module), std::move(context), {name}, addresses, error))
         function = addresses[0];
@@ -215,9 +284,7 @@ void* NativeProgramCache::compile(Entry* entry, const PixelProgram& program, con
     case Built::Unavailable: break;                   // (said once by JitEngine)
     case Built::Broken: failed = true; break;
   }
-  if (failed)
-    std::fprintf(stderr, "primflow: native code for a %s failed (%s): it runs on the interpreter\n",
-                 entry->verdict_ ? "block-rejection walk" : "pixel program", error.c_str());
+  if (failed) std::fprintf(stderr, "primflow: native code for a %s failed (%s): it runs on the interpreter\n", what, error.c_str());
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   {
     std::lock_guard<std::mutex> lock(impl_->mutex);
@@ -235,7 +302,16 @@ bool nativePixelListing(const PixelProgram& program, const NativePixelVariant& v
                         std::string& error) {
   llvm::LLVMContext context;
   std::unique_ptr<llvm::Module> module;
-  if (buildModule(program, &variant, "pf_pixel", context, module, error) != Built::Yes) return false;
+  if (buildPixelModule(program, &variant, "pf_pixel", context, module, error) != Built::Yes) return false;
+  listing = JitEngine::instance()->listing(*module);
+  return true;
+}
+
+bool nativeSetupListing(const SetupProgram& program, const NativeSetupVariant& variant, std::string& listing,
+                        std::string& error) {
+  llvm::LLVMContext context;
+  std::unique_ptr<llvm::Module> module;
+  if (buildSetupModule(program, variant, "pf_setup", context, module, error) != Built::Yes) return false;
   listing = JitEngine::instance()->listing(*module);
   return true;
 }

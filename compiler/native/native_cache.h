@@ -17,11 +17,18 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
+#include <memory>
 #include <string>
 
 #include "compiler/isa.h"
 #include "compiler/native/interval_codegen.h"
 #include "compiler/native/native_abi.h"
+
+namespace llvm {
+class LLVMContext;
+class Module;
+}  // namespace llvm
 
 namespace pf {
 
@@ -43,6 +50,11 @@ struct NativeCacheStats {
 // several times slower than a pixel program and saves less per call (docs/performance.md).
 constexpr uint64_t kDefaultNativeThreshold = 1024;
 constexpr uint64_t kDefaultWalkThreshold = 4096;
+// For a setup program, the instances set up (PF_JIT_SETUP_THRESHOLD): a setup program is long
+// straight-line code over 16-lane vectors, slower to compile than a pixel program, and saves
+// far less per instance than a pixel program per block, so only a program drawn over many
+// instances -- a frame of a large mesh, a few frames of a small one -- pays for it.
+constexpr uint64_t kDefaultSetupThreshold = 65536;
 
 class NativeProgramCache {
  public:
@@ -61,7 +73,8 @@ class NativeProgramCache {
    private:
     friend class NativeProgramCache;
     enum : uint8_t { kCold, kCompiling, kReady, kNone };
-    bool verdict_ = false;  // block rejection's walk (interval_codegen.h), not a pixel program
+    enum class Kind : uint8_t { Pixel, Verdict, Setup };
+    Kind kind_ = Kind::Pixel;  // what the function is: a pixel program's, a walk's, a setup program's
     std::atomic<void*> function_{nullptr};
     std::atomic<uint8_t> status_{kCold};
     std::atomic<uint64_t> blocks_{0};
@@ -70,12 +83,16 @@ class NativeProgramCache {
   // The entry of `program` under `variant`; of its block-rejection walk (interval_codegen.h).
   Entry* pixelEntry(const PixelProgram& program, const NativePixelVariant& variant);
   Entry* verdictEntry(const PixelProgram& program);
-  // Counts `blocks` more blocks (regions, for a walk) drawn with the entry's key on the
+  // The entry of a setup program under `variant` (setup_codegen.h); its function is a
+  // NativeSetupFunction.
+  Entry* setupEntry(const SetupProgram& program, const NativeSetupVariant& variant);
+  // Counts `blocks` more blocks (regions, for a walk; instances, for a setup program) drawn with the entry's key on the
   // interpreter; true when they passed the threshold and the caller is the one to compile() it.
   bool drawn(Entry* entry, uint64_t blocks);
   // Compiles the entry (`program` and `variant` must be its key's; no variant for a verdict
   // entry) and returns its function, or null if native code does not run it.
   void* compile(Entry* entry, const PixelProgram& program, const NativePixelVariant* variant);
+  void* compileSetup(Entry* entry, const SetupProgram& program, const NativeSetupVariant& variant);
 
 
   // The thresholds (kDefault*Threshold, or the environment's at start-up); tests set 0.
@@ -83,6 +100,8 @@ class NativeProgramCache {
   void setThreshold(uint64_t blocks) { threshold_.store(blocks, std::memory_order_relaxed); }
   uint64_t walkThreshold() const { return walk_threshold_.load(std::memory_order_relaxed); }
   void setWalkThreshold(uint64_t regions) { walk_threshold_.store(regions, std::memory_order_relaxed); }
+  uint64_t setupThreshold() const { return setup_threshold_.load(std::memory_order_relaxed); }
+  void setSetupThreshold(uint64_t instances) { setup_threshold_.store(instances, std::memory_order_relaxed); }
 
   NativeCacheStats stats() const;
 
@@ -93,14 +112,23 @@ class NativeProgramCache {
   NativeProgramCache();
   ~NativeProgramCache();
   struct Impl;
+  Entry* entryFor(const std::string& key, Entry::Kind kind);
+  // Compiles the module `build` makes (a function of the name it is given, in the context;
+  // what it returns: native_cache.cpp's Built) for the entry, and settles the entry.
+  using ModuleBuilder = std::function<int(const std::string& name, llvm::LLVMContext& context,
+                                          std::unique_ptr<llvm::Module>& module, std::string& error)>;
+  void* compileWith(Entry* entry, const char* what, const ModuleBuilder& build);
   Impl* impl_;
   std::atomic<uint64_t> threshold_;
   std::atomic<uint64_t> walk_threshold_;
+  std::atomic<uint64_t> setup_threshold_;
 };
 
 // What `pfc --emit=native` prints for `program` under `variant`: the optimized LLVM IR and the
 // assembly; false with `error` set when native code cannot run it.
 bool nativePixelListing(const PixelProgram& program, const NativePixelVariant& variant, std::string& listing,
+                        std::string& error);
+bool nativeSetupListing(const SetupProgram& program, const NativeSetupVariant& variant, std::string& listing,
                         std::string& error);
 
 }  // namespace pf

@@ -15,7 +15,10 @@ const char* nativeIsaName(NativeIsa isa) {
 
 struct NativeProgramCache::Impl {};
 NativeProgramCache::NativeProgramCache()
-    : impl_(nullptr), threshold_(kDefaultNativeThreshold), walk_threshold_(kDefaultWalkThreshold) {}
+    : impl_(nullptr),
+      threshold_(kDefaultNativeThreshold),
+      walk_threshold_(kDefaultWalkThreshold),
+      setup_threshold_(kDefaultSetupThreshold) {}
 NativeProgramCache::~NativeProgramCache() = default;
 
 NativeProgramCache& NativeProgramCache::instance() {
@@ -33,13 +36,24 @@ NativeProgramCache::Entry* NativeProgramCache::verdictEntry(const PixelProgram&)
   return &none;
 }
 
+NativeProgramCache::Entry* NativeProgramCache::setupEntry(const SetupProgram&, const NativeSetupVariant&) {
+  static Entry none;
+  return &none;
+}
+
 bool NativeProgramCache::drawn(Entry*, uint64_t) { return false; }
 
 void* NativeProgramCache::compile(Entry*, const PixelProgram&, const NativePixelVariant*) { return nullptr; }
+void* NativeProgramCache::compileSetup(Entry*, const SetupProgram&, const NativeSetupVariant&) { return nullptr; }
 
 NativeCacheStats NativeProgramCache::stats() const { return {}; }
 
 bool nativePixelListing(const PixelProgram&, const NativePixelVariant&, std::string&, std::string& error) {
+  error = "primflow was built without LLVM (PRIMFLOW_JIT=OFF)";
+  return false;
+}
+
+bool nativeSetupListing(const SetupProgram&, const NativeSetupVariant&, std::string&, std::string& error) {
   error = "primflow was built without LLVM (PRIMFLOW_JIT=OFF)";
   return false;
 }

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "compiler/native/native_cache.h"
 #include "raster/renderer.h"
 #include "setup_batch_helpers.h"
 
@@ -157,3 +158,17 @@ TEST(SetupBatch, ApiImagesIdenticalWithAndWithoutBatching) {
     EXPECT_TRUE(off == on) << threads << " thread(s): images differ";
   }
 }
+
+// The same scene with the batches' setup in native code from the first batch: the image of the
+// scalar setup, bit for bit.
+TEST(SetupBatch, ApiImagesIdenticalWithSetupInNativeCode) {
+  if (!nativeCodeAvailable()) GTEST_SKIP() << "native code is unavailable here";
+  NativeProgramCache& cache = NativeProgramCache::instance();
+  const uint64_t compiled = cache.stats().compiled, saved = cache.setupThreshold();
+  cache.setSetupThreshold(0);
+  const std::vector<unsigned char> native = drawThroughApi(nullptr, 2);
+  cache.setSetupThreshold(saved);
+  EXPECT_GT(cache.stats().compiled, compiled) << "no setup program was compiled";
+  EXPECT_TRUE(drawThroughApi("0", 2) == native) << "images differ";
+}
+

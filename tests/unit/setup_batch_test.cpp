@@ -1,7 +1,8 @@
 // The batched setup executor (raster/setup_batch.h) against the scalar one: for every shipped
 // primitive and shared interpolator, random instances -- degenerate ones among them (radius
 // <= 0, NaN, infinities, points behind the eye) -- set up both ways must give the same records,
-// bounds, kill, cap and facing flags and instruction counts, bit for bit.
+// bounds, kill, cap and facing flags and instruction counts, bit for bit. The same sweep runs
+// the batches in native code (compiler/native/setup_codegen.h), compiled at once.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "compiler/native/native_cache.h"
 #include "raster/setup_batch.h"
 #include "setup_batch_helpers.h"
 
@@ -23,7 +25,8 @@ using namespace pf;
 using namespace pf::test;
 
 struct Sweep {
-  uint64_t compared = 0, batched = 0, resumed = 0;
+  bool native = false;  // the batches in native code
+  uint64_t compared = 0, batched = 0, resumed = 0, in_native = 0;
 };
 
 // Sets up `n` random instances of `prim` scalar, one by one, and batched, and compares.
@@ -53,6 +56,7 @@ void compareBoth(const CompiledPrimitive& prim, const ChannelLayout& layout, con
   }
   BatchSetupExecutor batch;
   batch.batch_callers = true;
+  batch.use_native = sweep.native;
   batch.run(prim, in.data(), n, records.data(), batch_out.data());
   for (int i = 0; i < n; ++i) {
     const SetupOutput &a = scalar_out[i], &b = batch_out[i];
@@ -72,19 +76,37 @@ void compareBoth(const CompiledPrimitive& prim, const ChannelLayout& layout, con
   sweep.compared += static_cast<uint64_t>(n);
   sweep.batched += batch.counters.lanes_batched;
   sweep.resumed += batch.counters.lanes_resumed;
+  sweep.in_native += batch.counters.lanes_native;
+  if (!sweep.native) {
+    EXPECT_EQ(batch.counters.batches_native, 0u);
+  }
 }
 
-}  // namespace
+// Native code compiled on a program's first batch, for the test's length.
+class CompileAtOnce {
+ public:
+  CompileAtOnce() : saved_(NativeProgramCache::instance().setupThreshold()) {
+    NativeProgramCache::instance().setSetupThreshold(0);
+  }
+  ~CompileAtOnce() { NativeProgramCache::instance().setSetupThreshold(saved_); }
 
-TEST(SetupBatch, EveryBuiltinPrimitiveMatchesScalarSetupBitForBit) {
+ private:
+  uint64_t saved_;
+};
+
+// compareBoth's sweep over every built-in, interpreted or in native code.
+void sweepEveryBuiltin(bool native) {
   ASSERT_TRUE(builtinPrimitives().errors.empty()) << builtinPrimitives().errors;
   const RasterState state = testState();
   const RasterState capped = testState(3);  // loops of more than 3 iterations stop
   const ChannelLayout one = ChannelLayout::ofKind(4, InterpKind::PerspectiveLinear), split = splitLayout();
   const ChannelLayout none;
   int primitives = 0;
+  uint64_t in_native = 0;
   for (const CompiledPrimitive* prim : everyBuiltin()) {
     Sweep sweep;
+    sweep.native = native;
+    const double compile_ms = NativeProgramCache::instance().stats().milliseconds;
     for (uint32_t seed = 1; seed <= 3; ++seed) {
       const ChannelLayout& layout = prim->is_interpolator ? none : seed == 2 ? split : one;
       compareBoth(*prim, layout, state, 53, seed, 0.0, sweep);    // plausible instances
@@ -97,12 +119,33 @@ TEST(SetupBatch, EveryBuiltinPrimitiveMatchesScalarSetupBitForBit) {
     EXPECT_GT(exercised, sweep.compared / 3) << prim->name << ": the batch path was hardly exercised ("
                                              << sweep.batched << " batched, " << sweep.resumed << " resumed of "
                                              << sweep.compared << " lanes)";
-    std::printf("%-20s %5llu lanes: %5llu finished batched, %5llu resumed scalar\n", prim->name.c_str(),
-                static_cast<unsigned long long>(sweep.compared), static_cast<unsigned long long>(sweep.batched),
+    std::printf("%-20s %5llu lanes: %5llu finished batched (%5llu in native code, compiled in %.0f ms), %5llu "
+                "resumed scalar\n",
+                prim->name.c_str(), static_cast<unsigned long long>(sweep.compared),
+                static_cast<unsigned long long>(sweep.batched), static_cast<unsigned long long>(sweep.in_native),
+                NativeProgramCache::instance().stats().milliseconds - compile_ms,
                 static_cast<unsigned long long>(sweep.resumed));
+    in_native += sweep.in_native;
     ++primitives;
   }
   EXPECT_GE(primitives, 30);
+  if (native) {
+    // Native code ran batches to their end: the comparison above compared it.
+    EXPECT_GT(in_native, 0u);
+    const NativeCacheStats stats = NativeProgramCache::instance().stats();
+    std::printf("native code: %llu functions compiled in %.0f ms\n", static_cast<unsigned long long>(stats.compiled),
+                stats.milliseconds);
+  }
+}
+
+}  // namespace
+
+TEST(SetupBatch, EveryBuiltinPrimitiveMatchesScalarSetupBitForBit) { sweepEveryBuiltin(false); }
+
+TEST(SetupBatch, EveryBuiltinPrimitiveMatchesScalarSetupBitForBitInNativeCode) {
+  if (!nativeCodeAvailable()) GTEST_SKIP() << "native code is unavailable here";
+  CompileAtOnce at_once;
+  sweepEveryBuiltin(true);
 }
 
 TEST(SetupBatch, BatchMixingKilledAndLiveInstances) {
