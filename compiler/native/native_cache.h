@@ -63,8 +63,8 @@ class NativeProgramCache {
   // One key's state; found or made by entry(), never freed.
   class Entry {
    public:
-    // The compiled function (a NativePixelFunction or a NativeVerdictFunction, as the entry
-    // was made), or null (not yet, or never: settled()).
+    // The compiled function (a NativePixelFunction, NativeVerdictFunction or
+    // NativeSetupFunction, as the entry was made), or null (not yet, or never: settled()).
     void* function() const { return function_.load(std::memory_order_acquire); }
     // Whether function() is what it will stay: compiled, or never to be (native code does not
     // run the program, or LLVM failed on it).

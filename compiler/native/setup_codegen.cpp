@@ -66,12 +66,11 @@ class SetupCodegen {
   llvm::FixedVectorType* mv_;
   llvm::Function* fn_ = nullptr;
   llvm::BasicBlock* entry_ = nullptr;
-  llvm::BasicBlock* spill_ = nullptr;  // writes the registers back and returns `status_`
+  llvm::BasicBlock* spill_ = nullptr;  // writes the registers back and returns Left
   llvm::Value* args_ = nullptr;
   llvm::Value* regs_file_ = nullptr;
   llvm::Value* active_ = nullptr;       // i32: the batch's lanes
   llvm::Value* active_lanes_ = nullptr; // <K x i1>
-  llvm::AllocaInst* status_ = nullptr;
   llvm::AllocaInst* count_ = nullptr;   // instructions run
   std::map<uint32_t, llvm::Value*> params_;  // each parameter read, gathered from the lanes' blocks at the start
   std::vector<llvm::AllocaInst*> regs_;
@@ -149,7 +148,6 @@ void SetupCodegen::storeLanes(size_t field_offset, unsigned row, llvm::Value* v)
 void SetupCodegen::leave(size_t pc, llvm::Value* executed) {
   b_.CreateStore(b_.getInt32(static_cast<uint32_t>(pc)), argAddress(offsetof(NativeSetupArgs, pc)));
   b_.CreateStore(executed, argAddress(offsetof(NativeSetupArgs, instructions)));
-  b_.CreateStore(b_.getInt32(static_cast<uint32_t>(NativeSetupStatus::Left)), status_);
   b_.CreateBr(spill_);
 }
 
@@ -173,7 +171,6 @@ llvm::Function* SetupCodegen::build(const std::string& name, const SetupProgram&
   regs_file_ = argField(offsetof(NativeSetupArgs, regs), b_.getPtrTy());
   active_ = argField(offsetof(NativeSetupArgs, active), b_.getInt32Ty());
   active_lanes_ = b_.CreateBitCast(b_.CreateTrunc(active_, b_.getIntNTy(K)), mv_, "active_lanes");
-  status_ = entryAlloca(b_.getInt32Ty(), "status");
   count_ = entryAlloca(b_.getInt32Ty(), "count");
   b_.CreateStore(b_.getInt32(0), count_);
   // Registers and interp registers start at zero, as the interpreter's file.
@@ -250,7 +247,7 @@ llvm::Function* SetupCodegen::build(const std::string& name, const SetupProgram&
     b_.CreateAlignedStore(b_.CreateLoad(fv_, slot), b_.CreateConstInBoundsGEP1_64(b_.getFloatTy(), interp, row * K),
                           llvm::Align(4));
   }
-  b_.CreateRet(b_.CreateLoad(b_.getInt32Ty(), status_));
+  b_.CreateRet(b_.getInt32(static_cast<uint32_t>(NativeSetupStatus::Left)));
   return fn_;
 }
 
