@@ -14,14 +14,15 @@ import sys
 # (stage, test on "dso symbol"), first match wins.
 STAGES = [
     ("pixel programs (native code)", lambda d, s: s.startswith("pf_pixel_")),
-    ("block rejection", lambda d, s: s.startswith("pf_verdict_") or "BlockRejection" in s or "regionVerdict" in s
+    ("block rejection", lambda d, s: s.startswith("pf_verdict_") or s.startswith("pf_block_verdicts_")
+     or "BlockRejection" in s or "regionVerdict" in s or "regionMemo" in s or "blockVerdict" in s
      or "rejectsRegion" in s),
     ("pixel programs (interpreter)", lambda d, s: "PixelExecutor::execute" in s or "::run<" in s or "::fused<" in s
      or "decodeProgram" in s),
     ("block calls (executor, native arguments)", lambda d, s: "PixelExecutor::" in s or "NativeBlocks::" in s
      or "popcount" in s),
     ("gang blocks (record spread)", lambda d, s: "spread" in s or "GangBlock::" in s),
-    ("setup", lambda d, s: "Setup" in s or "::batch<" in s),
+    ("setup", lambda d, s: s.startswith("pf_setup_") or "Setup" in s or "::batch<" in s),
     ("shading pass", lambda d, s: "shadeTile" in s or "LightingEquation" in s or "shadeRun" in s),
     ("tile walk, binning, depth culling", lambda d, s: "runTile" in s or "binInstance" in s or "CoarseDepth" in s
      or "depthPassMask" in s or "submitInstances" in s or "Renderer::" in s or "WorkerPool" in s),

@@ -47,6 +47,8 @@ void NativeBlocks::startFrame() {
   last_ = 0;
   walks_.clear();
   last_walk_ = 0;
+  block_walks_.clear();
+  last_block_walk_ = 0;
   values_valid_ = false;
 }
 
@@ -133,30 +135,51 @@ const float* NativeBlocks::stateValues(const RasterState& state) {
   return state_values_;
 }
 
-bool NativeBlocks::verdict(const PixelProgram& program, const uint32_t* record, const RasterState& state,
-                           const double region[4], uint32_t& out) {
+NativeBlocks::FoundWalk* NativeBlocks::walkFor(const PixelProgram& program, bool blocks) {
+  std::vector<FoundWalk>& walks = blocks ? block_walks_ : walks_;
+  size_t& last = blocks ? last_block_walk_ : last_walk_;
+  const NativeIsa isa = nativeIsaOf(laneIsa());
   auto matches = [&](const FoundWalk& f) {
-    return f.program == &program && f.code == program.code.data() && f.code_size == program.code.size();
+    return f.program == &program && f.code == program.code.data() && f.code_size == program.code.size() &&
+           (!blocks || f.isa == isa);
   };
-  FoundWalk* found = findRemembered(walks_, last_walk_, matches);
+  FoundWalk* found = findRemembered(walks, last, matches);
   if (!found) {
-    NativeProgramCache::Entry* e = NativeProgramCache::instance().verdictEntry(program);
-    walks_.push_back(FoundWalk{&program, program.code.data(), program.code.size(), e, nullptr, false, readsState(program)});
-    last_walk_ = walks_.size() - 1;
-    found = &walks_.back();
+    NativeProgramCache& cache = NativeProgramCache::instance();
+    NativeProgramCache::Entry* e = blocks ? cache.blockVerdictsEntry(program, isa) : cache.verdictEntry(program);
+    walks.push_back(FoundWalk{&program, program.code.data(), program.code.size(), isa, e, nullptr, false,
+                              readsState(program)});
+    last = walks.size() - 1;
+    found = &walks.back();
   }
   if (!found->fn && !found->never) {
     // (A walk costs about what a block does, and compiles slower than a pixel program: each
     // counts as one block towards the threshold.)
     NativeProgramCache& cache = NativeProgramCache::instance();
-    auto f = reinterpret_cast<NativeVerdictFunction>(found->entry->function());
+    void* f = found->entry->function();
     if (!f && cache.drawn(found->entry, 1))
-      f = reinterpret_cast<NativeVerdictFunction>(cache.compile(found->entry, program, nullptr));
+      f = blocks ? cache.compileBlockVerdicts(found->entry, program, isa) : cache.compile(found->entry, program, nullptr);
     found->fn = f;
     found->never = !f && found->entry->settled();
   }
+  return found;
+}
+
+bool NativeBlocks::verdict(const PixelProgram& program, const uint32_t* record, const RasterState& state,
+                           const double region[4], uint32_t& out) {
+  const FoundWalk* found = walkFor(program, false);
   if (!found->fn) return false;
-  out = found->fn(record, found->reads_state ? stateValues(state) : nullptr, region);
+  out = reinterpret_cast<NativeVerdictFunction>(found->fn)(record, found->reads_state ? stateValues(state) : nullptr,
+                                                           region);
+  return true;
+}
+
+bool NativeBlocks::blockVerdicts(const PixelProgram& program, const uint32_t* record, const RasterState& state,
+                                 const double* regions, uint8_t* verdicts) {
+  const FoundWalk* found = walkFor(program, true);
+  if (!found->fn) return false;
+  reinterpret_cast<NativeBlockVerdictsFunction>(found->fn)(record, found->reads_state ? stateValues(state) : nullptr,
+                                                           regions, verdicts);
   return true;
 }
 

@@ -67,6 +67,11 @@ class NativeBlocks {
   // interpreter's verdict, or false when native code does not (yet) walk this program.
   bool verdict(const PixelProgram& program, const uint32_t* record, const RasterState& state, const double region[4],
                uint32_t& out);
+  // The same walk over kNativeVerdictLanes regions at once (interval_codegen.h's
+  // NativeBlockVerdictsFunction: `regions` their bounds, bound by bound), into `verdicts`; false
+  // when native code does not (yet) walk this program so.
+  bool blockVerdicts(const PixelProgram& program, const uint32_t* record, const RasterState& state,
+                     const double* regions, uint8_t* verdicts);
 
   // Forgets what it found (keyed by addresses a later frame may reuse).
   void startFrame();
@@ -87,12 +92,16 @@ class NativeBlocks {
     const PixelProgram* program;
     const Instr* code;
     size_t code_size;
+    NativeIsa isa;  // (of a walk over blocks)
     NativeProgramCache::Entry* entry;
-    NativeVerdictFunction fn;
+    void* fn;  // a NativeVerdictFunction or NativeBlockVerdictsFunction
     bool never, reads_state;
   };
-  std::vector<FoundWalk> walks_;
-  size_t last_walk_ = 0;
+  std::vector<FoundWalk> walks_, block_walks_;
+  size_t last_walk_ = 0, last_block_walk_ = 0;
+  // The walk of `program` (over blocks: the one of blockVerdicts), its function compiled once
+  // the walks asked of it pass the threshold.
+  FoundWalk* walkFor(const PixelProgram& program, bool blocks);
   const float* stateValues(const RasterState& state);
   // The variant `program` of `prim` runs in with `layout` (into variant_).
   const NativePixelVariant& variantFor(const CompiledPrimitive& prim, const ChannelLayout& layout, bool gang,

@@ -22,15 +22,15 @@ namespace pf {
 // made for -- compared by content, since a later frame may put other values at the same
 // address. (The state is not part of it: the evaluated prefix stops at the first loop, and
 // pixel programs read the state only inside loops.)
-RegionVerdict PixelExecutor::regionVerdict(const PixelProgram& program, const uint32_t* record, const RasterState& state,
-                                           int bx, int by) {
+PixelExecutor::RegionMemo& PixelExecutor::regionMemo(const PixelProgram& program, const uint32_t* record,
+                                                     const RasterState& state, int bx, int by) {
   const int rx = bx / kRejectionRegion * kRejectionRegion, ry = by / kRejectionRegion * kRejectionRegion;
   constexpr int kPerRow = kTileSize / kRejectionRegion;
   RegionMemo& v = region_memos_[(rx / kRejectionRegion) % kPerRow + (ry / kRejectionRegion) % kPerRow * kPerRow];
   const size_t words = program.num_uniform_slots;
   // The same record (by address: records do not change while a frame runs, and startFrame
   // forgets the memos), else the same values.
-  if (v.program == &program && v.x == rx && v.y == ry && v.record_address == record) return v.verdict;
+  if (v.program == &program && v.x == rx && v.y == ry && v.record_address == record) return v;
   if (v.program != &program || v.x != rx || v.y != ry || v.record.size() != words ||
       !std::equal(v.record.begin(), v.record.end(), record)) {
     // The verdict before the key: if evaluating fails (std::bad_alloc), no key names a stale one.
@@ -46,10 +46,37 @@ RegionVerdict PixelExecutor::regionVerdict(const PixelProgram& program, const ui
     v.x = rx;
     v.y = ry;
     v.verdict = verdict;
+    v.blocks_known = false;
     v.program = &program;
   }
   v.record_address = record;
-  return v.verdict;
+  return v;
+}
+
+RegionVerdict PixelExecutor::blockVerdict(const PixelProgram& program, const uint32_t* record, const RasterState& state,
+                                          int bx, int by) {
+  RegionMemo& v = regionMemo(program, record, state, bx, by);
+  if (v.verdict != RegionVerdict::Unknown || !use_native) return v.verdict;
+  static_assert(kBlocksPerRegion == kNativeVerdictLanes, "a region's blocks are one walk's lanes");
+  constexpr int kPerRow = kRejectionRegion / kBlockSize;
+  if (!v.blocks_known) {
+    // The pixel centres of each block: x_lo, x_hi, y_lo, y_hi, each for every block.
+    double bounds[4][kBlocksPerRegion];
+    for (int i = 0; i < kBlocksPerRegion; ++i) {
+      const int x = v.x + i % kPerRow * kBlockSize, y = v.y + i / kPerRow * kBlockSize;
+      bounds[0][i] = x + 0.5;
+      bounds[1][i] = x + kBlockSize - 0.5;
+      bounds[2][i] = y + 0.5;
+      bounds[3][i] = y + kBlockSize - 0.5;
+    }
+    if (!native_.blockVerdicts(program, record, state, &bounds[0][0], v.blocks)) return RegionVerdict::Unknown;
+    v.blocks_known = true;
+  }
+  const uint8_t b = v.blocks[(by - v.y) / kBlockSize * kPerRow + (bx - v.x) / kBlockSize];
+  if (b != static_cast<uint8_t>(RegionVerdict::Rejected) && b != static_cast<uint8_t>(RegionVerdict::Accepted))
+    return RegionVerdict::Unknown;
+  ++counters.blocks_walked;
+  return static_cast<RegionVerdict>(b);
 }
 
 void PixelExecutor::startFrame() {
@@ -112,7 +139,7 @@ const PixelProgram* PixelExecutor::blockProgram(const CompiledPrimitive& prim, c
     return prim.pixel.covered.get();
   }
   if (mask == ~0ull && prim.pixel.last_early_retire >= 0 && use_block_rejection) {
-    const RegionVerdict v = regionVerdict(prim.pixel, record, state, bx, by);
+    const RegionVerdict v = blockVerdict(prim.pixel, record, state, bx, by);
     if (v == RegionVerdict::Rejected) {
       ++counters.blocks_rejected;
       return nullptr;

@@ -54,6 +54,9 @@ struct BlockCounters {
   uint64_t blocks_run = 0;
   uint64_t blocks_rejected = 0;  // skipped whole by block_rejection.h (not in blocks_run)
   uint64_t blocks_accepted = 0;  // run by the covered program, without coverage tests (in blocks_run)
+  // rejected or accepted by their own verdict where their region's was undecided (native
+  // code's walk over a region's blocks; in blocks_rejected or blocks_accepted)
+  uint64_t blocks_walked = 0;
   uint64_t blocks_packed = 0;    // run on packed lanes (in blocks_run)
   uint64_t blocks_ganged = 0;    // packed blocks holding lanes of several instances (in blocks_packed)
   uint64_t lanes_started = 0;
@@ -194,16 +197,29 @@ class PixelExecutor {
   field::FieldRayCaster caster_;
   BlockRejection rejection_;
   // The verdicts of a tile's regions (regionVerdict) and what each was computed for.
+  static constexpr int kBlocksPerRegion = (kRejectionRegion / kBlockSize) * (kRejectionRegion / kBlockSize);
   struct RegionMemo {
     const PixelProgram* program = nullptr;
     int x = -1, y = -1;
     std::vector<uint32_t> record;
     const uint32_t* record_address = nullptr;  // the record last found to hold those values
     RegionVerdict verdict = RegionVerdict::Unknown;
+    // Where the region's verdict is Unknown: its blocks' own (blockVerdict), once asked for.
+    bool blocks_known = false;
+    uint8_t blocks[kBlocksPerRegion];
   };
   RegionMemo region_memos_[(kTileSize / kRejectionRegion) * (kTileSize / kRejectionRegion)];
+  RegionMemo& regionMemo(const PixelProgram& program, const uint32_t* record, const RasterState& state, int bx,
+                         int by);
   RegionVerdict regionVerdict(const PixelProgram& program, const uint32_t* record, const RasterState& state, int bx,
-                              int by);
+                              int by) {
+    return regionMemo(program, record, state, bx, by).verdict;
+  }
+  // The verdict for the block at (bx, by): its region's, or where that is Unknown, the block's
+  // own -- from native code's walk over the region's blocks at once, where there is one (a walk
+  // per block on the interpreter costs more than the blocks it saves: docs/performance.md).
+  RegionVerdict blockVerdict(const PixelProgram& program, const uint32_t* record, const RasterState& state, int bx,
+                             int by);
   float field_box_[6] = {0, 0, 0, 0, 0, 0};
   std::unordered_map<const field::ImplicitField*, std::unique_ptr<field::GradientEvaluator>> gradients_;
   // The gradient of a short tape (HitTapes): one evaluator per executor -- so per rasterizer

@@ -48,6 +48,9 @@ void printStats(PFcontext ctx, double ms) {
   std::printf("blocks accepted    %llu (run without coverage tests: %.1f%% of the blocks run)\n",
               static_cast<unsigned long long>(s.blocks_accepted),
               s.blocks_run ? 100.0 * s.blocks_accepted / double(s.blocks_run) : 0.0);
+  std::printf("blocks walked      %llu (rejected or accepted by a verdict of their own, their 32x32 region's "
+              "undecided)\n",
+              static_cast<unsigned long long>(s.blocks_walked));
   std::printf("blocks packed      %llu (a small bound's pixels packed into whole blocks: %.1f%% of the blocks run)\n",
               static_cast<unsigned long long>(s.blocks_packed),
               s.blocks_run ? 100.0 * s.blocks_packed / double(s.blocks_run) : 0.0);

@@ -43,7 +43,10 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 class IntervalCodegen {
  public:
-  IntervalCodegen(llvm::Module& m) : module_(m), ctx_(m.getContext()), b_(m.getContext()) {}
+  IntervalCodegen(llvm::Module& m, unsigned lanes)
+      : module_(m), ctx_(m.getContext()), b_(m.getContext()), lanes_(lanes),
+        double_(lanes == 1 ? b_.getDoubleTy() : static_cast<llvm::Type*>(llvm::FixedVectorType::get(b_.getDoubleTy(), lanes))),
+        bool_(lanes == 1 ? b_.getInt1Ty() : static_cast<llvm::Type*>(llvm::FixedVectorType::get(b_.getInt1Ty(), lanes))) {}
 
   llvm::Function* build(const std::string& name, const PixelProgram& p, std::string& error);
 
@@ -60,7 +63,12 @@ class IntervalCodegen {
   };
   enum class As { Float, Int, Bool, Any };
 
-  llvm::Value* d(double v) { return llvm::ConstantFP::get(b_.getDoubleTy(), v); }
+  // A double or a truth value, as one value or one per lane (a region each).
+  llvm::Value* d(double v) { return llvm::ConstantFP::get(double_, v); }
+  llvm::Value* yes() { return llvm::ConstantInt::get(bool_, 1); }
+  llvm::Value* no() { return llvm::ConstantInt::get(bool_, 0); }
+  // A value the same in every region (a uniform's, a constant's), as the walk's type.
+  llvm::Value* everywhere(llvm::Value* scalar) { return lanes_ == 1 ? scalar : b_.CreateVectorSplat(lanes_, scalar); }
   llvm::Value* isnan(llvm::Value* v) { return b_.CreateFCmpUNO(v, v); }
   llvm::Value* isinf(llvm::Value* v) { return b_.CreateFCmpOEQ(fabs(v), d(kInf)); }
   llvm::Value* fabs(llvm::Value* v) { return b_.CreateUnaryIntrinsic(llvm::Intrinsic::fabs, v); }
@@ -71,19 +79,19 @@ class IntervalCodegen {
   Range pick(llvm::Value* c, const Range& a, const Range& b) {
     return {select(c, a.lo, b.lo), select(c, a.hi, b.hi), select(c, a.nan, b.nan)};
   }
-  Range unknown() { return {d(-kInf), d(kInf), b_.getTrue()}; }
-  Range unknownBool() { return {d(0.0), d(1.0), b_.getFalse()}; }
+  Range unknown() { return {d(-kInf), d(kInf), yes()}; }
+  Range unknownBool() { return {d(0.0), d(1.0), no()}; }
 
   Range widen(llvm::Value* lo, llvm::Value* hi) {
     llvm::Value* bad = b_.CreateOr(isnan(lo), isnan(hi));
     const double tiny = 1.2e-38;
     llvm::Value* wlo = b_.CreateFSub(lo, b_.CreateFAdd(b_.CreateFMul(fabs(lo), d(0x1p-22)), d(tiny)));
     llvm::Value* whi = b_.CreateFAdd(hi, b_.CreateFAdd(b_.CreateFMul(fabs(hi), d(0x1p-22)), d(tiny)));
-    return pick(bad, unknown(), Range{wlo, whi, b_.getFalse()});
+    return pick(bad, unknown(), Range{wlo, whi, no()});
   }
-  Range point(llvm::Value* v) { return pick(isnan(v), unknown(), Range{v, v, b_.getFalse()}); }
+  Range point(llvm::Value* v) { return pick(isnan(v), unknown(), Range{v, v, no()}); }
   Range boolean(llvm::Value* can_false, llvm::Value* can_true) {
-    return {select(can_false, d(0.0), d(1.0)), select(can_true, d(1.0), d(0.0)), b_.getFalse()};
+    return {select(can_false, d(0.0), d(1.0)), select(can_true, d(1.0), d(0.0)), no()};
   }
   llvm::Value* certainlyTrue(const Range& r) { return b_.CreateAnd(b_.CreateFCmpOEQ(r.lo, d(1.0)), b_.CreateNot(r.nan)); }
   llvm::Value* certainlyFalse(const Range& r) { return b_.CreateAnd(b_.CreateFCmpOEQ(r.hi, d(0.0)), b_.CreateNot(r.nan)); }
@@ -135,7 +143,7 @@ class IntervalCodegen {
   }
 
   Range load(const Slot& s) {
-    return {b_.CreateLoad(b_.getDoubleTy(), s.lo), b_.CreateLoad(b_.getDoubleTy(), s.hi), b_.CreateLoad(b_.getInt1Ty(), s.nan)};
+    return {b_.CreateLoad(double_, s.lo), b_.CreateLoad(double_, s.hi), b_.CreateLoad(bool_, s.nan)};
   }
   void store(const Slot& s, const Range& r) {
     b_.CreateStore(r.lo, s.lo);
@@ -143,7 +151,7 @@ class IntervalCodegen {
     b_.CreateStore(r.nan, s.nan);
   }
   Slot slot(llvm::IRBuilder<>& at) {
-    return {at.CreateAlloca(b_.getDoubleTy()), at.CreateAlloca(b_.getDoubleTy()), at.CreateAlloca(b_.getInt1Ty())};
+    return {at.CreateAlloca(double_), at.CreateAlloca(double_), at.CreateAlloca(bool_)};
   }
   // read(): registers whatever `as` says; uniforms and constants by their bits.
   Range read(uint32_t o, As as) {
@@ -166,8 +174,8 @@ class IntervalCodegen {
       default: return unknown();
     }
     switch (as) {
-      case As::Float: return point(b_.CreateFPExt(b_.CreateBitCast(bits, b_.getFloatTy()), b_.getDoubleTy()));
-      case As::Int: return point(b_.CreateSIToFP(bits, b_.getDoubleTy()));
+      case As::Float: return point(everywhere(b_.CreateFPExt(b_.CreateBitCast(bits, b_.getFloatTy()), b_.getDoubleTy())));
+      case As::Int: return point(everywhere(b_.CreateSIToFP(bits, b_.getDoubleTy())));
       case As::Bool: return point(select(b_.CreateICmpNE(bits, b_.getInt32(0)), d(1.0), d(0.0)));
       case As::Any: return unknown();
     }
@@ -178,6 +186,9 @@ class IntervalCodegen {
   llvm::Module& module_;
   llvm::LLVMContext& ctx_;
   llvm::IRBuilder<> b_;
+  const unsigned lanes_;      // regions walked at once: 1 (a NativeVerdictFunction) or more
+  llvm::Type* const double_;  // double, or a vector of lanes_ doubles
+  llvm::Type* const bool_;    // i1, or a vector of lanes_
   const PixelProgram* program_ = nullptr;
   llvm::Value* record_ = nullptr;
   llvm::Value* state_values_ = nullptr;
@@ -202,8 +213,8 @@ IntervalCodegen::Range IntervalCodegen::value(const Instr& in) {
     }
     case Op::FMin: case Op::FMax: {
       const Range a = f(in.a), b = f(in.b);
-      Range r = in.op == Op::FMin ? Range{min(a.lo, b.lo), min(a.hi, b.hi), b_.getFalse()}
-                                  : Range{max(a.lo, b.lo), max(a.hi, b.hi), b_.getFalse()};
+      Range r = in.op == Op::FMin ? Range{min(a.lo, b.lo), min(a.hi, b.hi), no()}
+                                  : Range{max(a.lo, b.lo), max(a.hi, b.hi), no()};
       return pick(b_.CreateOr(a.nan, b.nan), unknown(), r);
     }
     case Op::FSqrt: {
@@ -235,19 +246,19 @@ IntervalCodegen::Range IntervalCodegen::value(const Instr& in) {
     }
     case Op::BAnd: case Op::BOr: {
       const Range a = bv(in.a), b = bv(in.b);
-      return in.op == Op::BAnd ? Range{min(a.lo, b.lo), min(a.hi, b.hi), b_.getFalse()}
-                               : Range{max(a.lo, b.lo), max(a.hi, b.hi), b_.getFalse()};
+      return in.op == Op::BAnd ? Range{min(a.lo, b.lo), min(a.hi, b.hi), no()}
+                               : Range{max(a.lo, b.lo), max(a.hi, b.hi), no()};
     }
     case Op::BNot: {
       const Range a = bv(in.a);
-      return {b_.CreateFSub(d(1.0), a.hi), b_.CreateFSub(d(1.0), a.lo), b_.getFalse()};
+      return {b_.CreateFSub(d(1.0), a.hi), b_.CreateFSub(d(1.0), a.lo), no()};
     }
     case Op::IAdd: case Op::ISub: case Op::IMul: {
       const Range a = iv(in.a), b = iv(in.b);
       Range s = in.op == Op::IAdd ? add(a, b) : in.op == Op::ISub ? add(a, negate(b)) : mul(a, b);
       llvm::Value* fits = b_.CreateAnd(b_.CreateFCmpOGE(s.lo, d(-2147483648.0)), b_.CreateFCmpOLE(s.hi, d(2147483647.0)));
       Range r{b_.CreateUnaryIntrinsic(llvm::Intrinsic::ceil, b_.CreateFSub(s.lo, d(0.5))),
-              b_.CreateUnaryIntrinsic(llvm::Intrinsic::floor, b_.CreateFAdd(s.hi, d(0.5))), b_.getFalse()};
+              b_.CreateUnaryIntrinsic(llvm::Intrinsic::floor, b_.CreateFAdd(s.hi, d(0.5))), no()};
       return pick(fits, r, unknown());
     }
     case Op::ILt: case Op::ILe: case Op::IEq: case Op::INe: {
@@ -269,7 +280,7 @@ IntervalCodegen::Range IntervalCodegen::value(const Instr& in) {
       llvm::Value* neg = b_.CreateFCmpOLT(s.hi, d(0.0));
       llvm::Value* lo = select(pos, d(1.0), select(neg, d(-1.0), select(b_.CreateFCmpOEQ(s.lo, d(0.0)), d(0.0), d(-1.0))));
       llvm::Value* hi = select(neg, d(-1.0), select(pos, d(1.0), select(b_.CreateFCmpOEQ(s.hi, d(0.0)), d(0.0), d(1.0))));
-      return pick(s.nan, unknown(), Range{lo, hi, b_.getFalse()});
+      return pick(s.nan, unknown(), Range{lo, hi, no()});
     }
     case Op::Sel: {
       const Range c = bv(in.a);
@@ -283,7 +294,7 @@ IntervalCodegen::Range IntervalCodegen::value(const Instr& in) {
     case Op::LoadState: {
       llvm::LoadInst* l = b_.CreateAlignedLoad(b_.getFloatTy(), b_.CreateConstInBoundsGEP1_32(b_.getFloatTy(), state_values_, in.imm),
                                                llvm::Align(4));
-      return point(b_.CreateFPExt(l, b_.getDoubleTy()));
+      return point(everywhere(b_.CreateFPExt(l, b_.getDoubleTy())));
     }
     default: return unknown();  // Z tests, fields, noise, the rest
   }
@@ -294,8 +305,10 @@ llvm::Function* IntervalCodegen::build(const std::string& name, const PixelProgr
   MaskFrames frames;
   if (!findMaskFrames(p.code, frames, error)) return nullptr;
   program_ = &p;
+  const bool scalar = lanes_ == 1;
   llvm::Type* ptr = b_.getPtrTy();
-  auto* type = llvm::FunctionType::get(b_.getInt32Ty(), {ptr, ptr, ptr}, false);
+  auto* type = scalar ? llvm::FunctionType::get(b_.getInt32Ty(), {ptr, ptr, ptr}, false)
+                      : llvm::FunctionType::get(b_.getVoidTy(), {ptr, ptr, ptr, ptr}, false);
   llvm::Function* fn = llvm::Function::Create(type, llvm::Function::ExternalLinkage, name, module_);
   record_ = fn->getArg(0);
   state_values_ = fn->getArg(1);
@@ -312,25 +325,39 @@ llvm::Function* IntervalCodegen::build(const std::string& name, const PixelProgr
     cond.push_back(slot(at));
     in_else.push_back(at.CreateAlloca(b_.getInt1Ty()));
   }
-  llvm::AllocaInst* coverage_may_run = at.CreateAlloca(b_.getInt1Ty());
+  llvm::AllocaInst* coverage_may_run = at.CreateAlloca(bool_);
+  // Several regions at once: a region whose walk has ended -- rejected, or undecided (at a
+  // loop, a jump it cannot decide, or a jump the others take and it does not) -- stays in the
+  // vectors, its lanes no longer written and their results unused.
+  llvm::AllocaInst* rejected = scalar ? nullptr : at.CreateAlloca(bool_);
+  llvm::AllocaInst* undecided = scalar ? nullptr : at.CreateAlloca(bool_);
   for (const Slot& s : regs_) store(s, unknown());
-  b_.CreateStore(b_.getInt1(p.last_coverage_retire < 0), coverage_may_run);
+  b_.CreateStore(llvm::ConstantInt::get(bool_, p.last_coverage_retire < 0 ? 1 : 0), coverage_may_run);
+  if (!scalar) {
+    b_.CreateStore(no(), rejected);
+    b_.CreateStore(no(), undecided);
+  }
   if (p.num_regs > kRegY) {
+    // The regions' bounds: x_lo, x_hi, y_lo, y_hi, each one double per region.
     auto region_at = [&](int k) {
-      return b_.CreateAlignedLoad(b_.getDoubleTy(), b_.CreateConstInBoundsGEP1_32(b_.getDoubleTy(), region, k), llvm::Align(8));
+      return b_.CreateAlignedLoad(double_, b_.CreateConstInBoundsGEP1_32(b_.getDoubleTy(), region, k * lanes_),
+                                  llvm::Align(8));
     };
-    store(regs_[kRegX], Range{region_at(0), region_at(1), b_.getFalse()});
-    store(regs_[kRegY], Range{region_at(2), region_at(3), b_.getFalse()});
+    store(regs_[kRegX], Range{region_at(0), region_at(1), no()});
+    store(regs_[kRegY], Range{region_at(2), region_at(3), no()});
   }
 
   const size_t n = std::min(p.code.size(), static_cast<size_t>(p.last_early_retire) + 1);
   const size_t coverage_end = p.last_coverage_retire >= 0 ? static_cast<size_t>(p.last_coverage_retire) + 1 : 0;
   std::vector<llvm::BasicBlock*> at_pc(n + 1);
   for (size_t pc = 0; pc <= n; ++pc) at_pc[pc] = llvm::BasicBlock::Create(ctx_, "pc" + std::to_string(pc), fn);
-  llvm::BasicBlock* unknown_exit = llvm::BasicBlock::Create(ctx_, "unknown", fn);
-  llvm::BasicBlock* rejected_exit = llvm::BasicBlock::Create(ctx_, "rejected", fn);
+  llvm::BasicBlock* unknown_exit = scalar ? llvm::BasicBlock::Create(ctx_, "unknown", fn) : nullptr;
+  llvm::BasicBlock* rejected_exit = scalar ? llvm::BasicBlock::Create(ctx_, "rejected", fn) : nullptr;
   b_.CreateBr(at_pc[0]);
   auto target = [&](uint32_t t) { return at_pc[std::min<size_t>(t, n)]; };
+  auto addTo = [&](llvm::AllocaInst* set, llvm::Value* lanes) {
+    b_.CreateStore(b_.CreateOr(b_.CreateLoad(bool_, set), lanes), set);
+  };
 
   for (size_t pc = 0; pc < n; ++pc) {
     b_.SetInsertPoint(at_pc[pc]);
@@ -341,8 +368,8 @@ llvm::Function* IntervalCodegen::build(const std::string& name, const PixelProgr
     }
     // live: no frame certainly excludes every lane; certain: every frame certainly includes all.
     const int depth = static_cast<int>(frames.at[pc].size());
-    llvm::Value* live = b_.getTrue();
-    llvm::Value* certain = b_.getTrue();
+    llvm::Value* live = yes();
+    llvm::Value* certain = yes();
     for (int k = 0; k < depth; ++k) {
       const Range c = load(cond[static_cast<size_t>(k)]);
       llvm::Value* e = b_.CreateLoad(b_.getInt1Ty(), in_else[static_cast<size_t>(k)]);
@@ -369,28 +396,62 @@ llvm::Function* IntervalCodegen::build(const std::string& name, const PixelProgr
         continue;
       default: break;
     }
-    // What follows runs only where some lane is live.
+    // What follows runs only where some lane is live -- of a region whose walk goes on.
+    // strays: regions going on where no lane is live (a jump they do not take ends them).
+    llvm::Value* active = live;
+    llvm::Value* strays = nullptr;
+    if (!scalar) {
+      llvm::Value* ended = b_.CreateOr(b_.CreateLoad(bool_, rejected), b_.CreateLoad(bool_, undecided));
+      active = b_.CreateAnd(live, b_.CreateNot(ended));
+      strays = b_.CreateNot(b_.CreateOr(active, ended));
+    }
     llvm::BasicBlock* run = llvm::BasicBlock::Create(ctx_, "live", fn);
-    b_.CreateCondBr(live, run, next);
+    b_.CreateCondBr(scalar ? live : b_.CreateOrReduce(active), run, next);
     b_.SetInsertPoint(run);
     switch (in.op) {
       case Op::Retire: {
-        if (pc + 1 <= coverage_end) b_.CreateStore(b_.getTrue(), coverage_may_run);
-        b_.CreateCondBr(certain, rejected_exit, next);
+        if (pc + 1 <= coverage_end) addTo(coverage_may_run, active);
+        if (scalar) {
+          b_.CreateCondBr(certain, rejected_exit, next);
+        } else {
+          addTo(rejected, b_.CreateAnd(active, certain));
+          llvm::Value* ended = b_.CreateOr(b_.CreateLoad(bool_, rejected), b_.CreateLoad(bool_, undecided));
+          b_.CreateCondBr(b_.CreateAndReduce(ended), at_pc[n], next);
+        }
         continue;
       }
-      case Op::Jmp: b_.CreateBr(target(in.a)); continue;
+      case Op::Jmp:
+        if (!scalar) addTo(undecided, strays);
+        b_.CreateBr(target(in.a));
+        continue;
       case Op::JmpIfNot: {
         const Range c = read(in.b, As::Bool);
-        llvm::BasicBlock* maybe = llvm::BasicBlock::Create(ctx_, "maybe", fn);
-        b_.CreateCondBr(certainlyFalse(c), target(in.a), maybe);
-        b_.SetInsertPoint(maybe);
-        b_.CreateCondBr(certainlyTrue(c), next, unknown_exit);
+        if (scalar) {
+          llvm::BasicBlock* maybe = llvm::BasicBlock::Create(ctx_, "maybe", fn);
+          b_.CreateCondBr(certainlyFalse(c), target(in.a), maybe);
+          b_.SetInsertPoint(maybe);
+          b_.CreateCondBr(certainlyTrue(c), next, unknown_exit);
+          continue;
+        }
+        // The regions that certainly jump decide the way (if there are any); the others end.
+        llvm::Value* jumps = b_.CreateAnd(active, certainlyFalse(c));
+        llvm::Value* falls = b_.CreateAnd(active, certainlyTrue(c));
+        addTo(undecided, b_.CreateAnd(active, b_.CreateNot(b_.CreateOr(jumps, falls))));
+        llvm::BasicBlock* jump = llvm::BasicBlock::Create(ctx_, "jump", fn);
+        b_.CreateCondBr(b_.CreateOrReduce(jumps), jump, next);
+        b_.SetInsertPoint(jump);
+        addTo(undecided, b_.CreateOr(falls, strays));
+        b_.CreateBr(target(in.a));
         continue;
       }
       case Op::LoopBegin: case Op::LoopTest: case Op::Break: case Op::Continue: case Op::LoopContinue:
       case Op::LoopBack: case Op::LoopEnd:
-        b_.CreateBr(unknown_exit);
+        if (scalar) {
+          b_.CreateBr(unknown_exit);
+        } else {
+          addTo(undecided, active);
+          b_.CreateBr(next);
+        }
         continue;
       default: break;
     }
@@ -402,18 +463,32 @@ llvm::Function* IntervalCodegen::build(const std::string& name, const PixelProgr
       Range r = value(in);
       // A merge value written under a mask some lanes may not be in keeps their old values.
       if (in.masked_write) r = pick(certain, r, hull(load(dst), r));
+      // (Where no lane of a region is live its register keeps its range; a region whose walk
+      // has ended may take any -- it is not read again -- so values the same in every region
+      // stay so, and LLVM computes them once rather than per lane.)
+      if (!scalar && depth > 0) r = pick(live, r, load(dst));
       store(dst, r);
     }
     b_.CreateBr(next);
   }
   b_.SetInsertPoint(at_pc[n]);
-  llvm::Value* accepted = b_.getFalse();
-  if (p.covered) accepted = b_.CreateNot(b_.CreateLoad(b_.getInt1Ty(), coverage_may_run));
-  b_.CreateRet(select(accepted, b_.getInt32(2), b_.getInt32(0)));
-  b_.SetInsertPoint(unknown_exit);
-  b_.CreateRet(b_.getInt32(0));
-  b_.SetInsertPoint(rejected_exit);
-  b_.CreateRet(b_.getInt32(1));
+  llvm::Value* accepted = no();
+  if (p.covered) accepted = b_.CreateNot(b_.CreateLoad(bool_, coverage_may_run));
+  if (scalar) {
+    b_.CreateRet(select(accepted, b_.getInt32(2), b_.getInt32(0)));
+    b_.SetInsertPoint(unknown_exit);
+    b_.CreateRet(b_.getInt32(0));
+    b_.SetInsertPoint(rejected_exit);
+    b_.CreateRet(b_.getInt32(1));
+  } else {
+    llvm::Type* bytes = llvm::FixedVectorType::get(b_.getInt8Ty(), lanes_);
+    auto v = [&](int k) { return llvm::ConstantInt::get(bytes, k); };
+    llvm::Value* verdicts =
+        select(b_.CreateLoad(bool_, rejected), v(1),
+               select(b_.CreateLoad(bool_, undecided), v(0), select(accepted, v(2), v(0))));
+    b_.CreateAlignedStore(verdicts, fn->getArg(3), llvm::Align(1));
+    b_.CreateRetVoid();
+  }
   fn->addFnAttr(llvm::Attribute::NoUnwind);
   return fn;
 }
@@ -422,7 +497,13 @@ llvm::Function* IntervalCodegen::build(const std::string& name, const PixelProgr
 
 llvm::Function* buildVerdictFunction(llvm::Module& module, const std::string& name, const PixelProgram& program,
                                      std::string& error) {
-  IntervalCodegen g(module);
+  IntervalCodegen g(module, 1);
+  return g.build(name, program, error);
+}
+
+llvm::Function* buildBlockVerdictsFunction(llvm::Module& module, const std::string& name, const PixelProgram& program,
+                                           std::string& error) {
+  IntervalCodegen g(module, kNativeVerdictLanes);
   return g.build(name, program, error);
 }
 

@@ -7,6 +7,7 @@
 // verdicts are the same (tests/unit/native_rejection_test.cpp compares them).
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "compiler/isa.h"
@@ -23,6 +24,16 @@ namespace pf {
 // `state_values`: compiler/isa.h's StateValue order, read where the program loads the state.
 using NativeVerdictFunction = uint32_t (*)(const uint32_t* record, const float* state_values, const double* region);
 
+// The same walk over kNativeVerdictLanes regions at once, one per lane of a vector (the
+// rasterizer asks it about the 8x8 blocks of a 32x32 region the region's own walk left
+// undecided): regions[k * kNativeVerdictLanes + i] is bound k (x_lo, x_hi, y_lo, y_hi) of region
+// i, verdicts[i] its verdict. A region's verdict is the single walk's, except that it is 0 where
+// the regions part ways at a jump of the program (a region that does not take the jump the
+// others certainly take ends there, undecided) -- never decisive where the single walk is not.
+constexpr int kNativeVerdictLanes = 16;
+using NativeBlockVerdictsFunction = void (*)(const uint32_t* record, const float* state_values, const double* regions,
+                                             uint8_t* verdicts);
+
 // Whether native code can walk `program` (forward jumps only in its leading part); if not, why.
 bool nativeVerdictSupports(const PixelProgram& program, std::string* why = nullptr);
 
@@ -30,5 +41,8 @@ bool nativeVerdictSupports(const PixelProgram& program, std::string* why = nullp
 // set when it cannot.
 llvm::Function* buildVerdictFunction(llvm::Module& module, const std::string& name, const PixelProgram& program,
                                      std::string& error);
+// The same for the NativeBlockVerdictsFunction of `program`.
+llvm::Function* buildBlockVerdictsFunction(llvm::Module& module, const std::string& name, const PixelProgram& program,
+                                           std::string& error);
 
 }  // namespace pf

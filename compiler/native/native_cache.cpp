@@ -135,6 +135,15 @@ Built buildPixelModule(const PixelProgram& program, const NativePixelVariant* va
   return buildModule(build, variant ? variant->isa : NativeIsa::Sse2, name, context, module, error);
 }
 
+// The walk over kNativeVerdictLanes regions at once, as vectors of `isa`.
+Built buildBlockVerdictsModule(const PixelProgram& program, NativeIsa isa, const std::string& name,
+                               llvm::LLVMContext& context, std::unique_ptr<llvm::Module>& module, std::string& error) {
+  auto build = [&](llvm::Module& m, const std::string& n, std::string& e) {
+    return buildBlockVerdictsFunction(m, n, program, e);
+  };
+  return buildModule(build, isa, name, context, module, error);
+}
+
 Built buildSetupModule(const SetupProgram& program, const NativeSetupVariant& variant, const std::string& name,
                        llvm::LLVMContext& context, std::unique_ptr<llvm::Module>& module, std::string& error) {
   auto build = [&](llvm::Module& m, const std::string& n, std::string& e) {
@@ -216,6 +225,18 @@ NativeProgramCache::Entry* NativeProgramCache::verdictEntry(const PixelProgram& 
   return entryFor(key, Entry::Kind::Verdict);
 }
 
+NativeProgramCache::Entry* NativeProgramCache::blockVerdictsEntry(const PixelProgram& program, NativeIsa isa) {
+  thread_local std::string key;
+  KeyWriter w(key);
+  w.put('b');
+  w.put(isa);
+  w.program(program);
+  w.put(program.last_early_retire);
+  w.put(program.last_coverage_retire);
+  w.put(program.covered != nullptr);
+  return entryFor(key, Entry::Kind::BlockVerdicts);
+}
+
 NativeProgramCache::Entry* NativeProgramCache::setupEntry(const SetupProgram& program, const NativeSetupVariant& variant) {
   thread_local std::string key;
   KeyWriter w(key);
@@ -229,13 +250,22 @@ NativeProgramCache::Entry* NativeProgramCache::setupEntry(const SetupProgram& pr
 
 bool NativeProgramCache::drawn(Entry* entry, uint64_t blocks) {
   if (entry->status_.load(std::memory_order_acquire) != Entry::kCold) return false;
-  const uint64_t threshold = entry->kind_ == Entry::Kind::Verdict ? walkThreshold()
+  const uint64_t threshold = entry->kind_ == Entry::Kind::Verdict || entry->kind_ == Entry::Kind::BlockVerdicts
+                                 ? walkThreshold()
                              : entry->kind_ == Entry::Kind::Setup ? setupThreshold()
                                                                   : this->threshold();
   if (entry->blocks_.fetch_add(blocks, std::memory_order_relaxed) + blocks <= threshold) return false;
   // One thread compiles (the others interpret meanwhile).
   uint8_t cold = Entry::kCold;
   return entry->status_.compare_exchange_strong(cold, Entry::kCompiling, std::memory_order_acq_rel);
+}
+
+void* NativeProgramCache::compileBlockVerdicts(Entry* entry, const PixelProgram& program, NativeIsa isa) {
+  return compileWith(entry, "block-rejection walk over blocks",
+                     [&](const std::string& name, llvm::LLVMContext& context, std::unique_ptr<llvm::Module>& module,
+                         std::string& error) {
+                       return static_cast<int>(buildBlockVerdictsModule(program, isa, name, context, module, error));
+                     });
 }
 
 void* NativeProgramCache::compile(Entry* entry, const PixelProgram& program, const NativePixelVariant* variant) {
@@ -268,7 +298,8 @@ void* NativeProgramCache::compileWith(Entry* entry, const char* what, const Modu
   std::string error;
   auto context = std::make_unique<llvm::LLVMContext>();
   std::unique_ptr<llvm::Module> module;
-  const char* prefix = entry->kind_ == Entry::Kind::Verdict ? "pf_verdict_"
+  const char* prefix = entry->kind_ == Entry::Kind::Verdict          ? "pf_verdict_"
+                       : entry->kind_ == Entry::Kind::BlockVerdicts ? "pf_block_verdicts_"
                        : entry->kind_ == Entry::Kind::Setup ? "pf_setup_"
                                                             : "pf_pixel_";
   const std::string name = prefix + std::to_string(serial);

@@ -63,8 +63,8 @@ class NativeProgramCache {
   // One key's state; found or made by entry(), never freed.
   class Entry {
    public:
-    // The compiled function (a NativePixelFunction, NativeVerdictFunction or
-    // NativeSetupFunction, as the entry was made), or null (not yet, or never: settled()).
+    // The compiled function (a NativePixelFunction, NativeVerdictFunction,
+    // NativeBlockVerdictsFunction or NativeSetupFunction, as the entry was made), or null (not yet, or never: settled()).
     void* function() const { return function_.load(std::memory_order_acquire); }
     // Whether function() is what it will stay: compiled, or never to be (native code does not
     // run the program, or LLVM failed on it).
@@ -73,8 +73,10 @@ class NativeProgramCache {
    private:
     friend class NativeProgramCache;
     enum : uint8_t { kCold, kCompiling, kReady, kNone };
-    enum class Kind : uint8_t { Pixel, Verdict, Setup };
-    Kind kind_ = Kind::Pixel;  // what the function is: a pixel program's, a walk's, a setup program's
+    enum class Kind : uint8_t { Pixel, Verdict, BlockVerdicts, Setup };
+    // What the function is: a pixel program's, a walk's (of one region, or of several at
+    // once), a setup program's.
+    Kind kind_ = Kind::Pixel;
     std::atomic<void*> function_{nullptr};
     std::atomic<uint8_t> status_{kCold};
     std::atomic<uint64_t> blocks_{0};
@@ -83,6 +85,9 @@ class NativeProgramCache {
   // The entry of `program` under `variant`; of its block-rejection walk (interval_codegen.h).
   Entry* pixelEntry(const PixelProgram& program, const NativePixelVariant& variant);
   Entry* verdictEntry(const PixelProgram& program);
+  // The entry of its walk over kNativeVerdictLanes regions at once (a
+  // NativeBlockVerdictsFunction), in vectors of `isa`.
+  Entry* blockVerdictsEntry(const PixelProgram& program, NativeIsa isa);
   // The entry of a setup program under `variant` (setup_codegen.h); its function is a
   // NativeSetupFunction.
   Entry* setupEntry(const SetupProgram& program, const NativeSetupVariant& variant);
@@ -93,6 +98,7 @@ class NativeProgramCache {
   // entry) and returns its function, or null if native code does not run it.
   void* compile(Entry* entry, const PixelProgram& program, const NativePixelVariant* variant);
   void* compileSetup(Entry* entry, const SetupProgram& program, const NativeSetupVariant& variant);
+  void* compileBlockVerdicts(Entry* entry, const PixelProgram& program, NativeIsa isa);
 
 
   // The thresholds (kDefault*Threshold, or the environment's at start-up); tests set 0.

@@ -36,6 +36,11 @@ NativeProgramCache::Entry* NativeProgramCache::verdictEntry(const PixelProgram&)
   return &none;
 }
 
+NativeProgramCache::Entry* NativeProgramCache::blockVerdictsEntry(const PixelProgram&, NativeIsa) {
+  static Entry none;
+  return &none;
+}
+
 NativeProgramCache::Entry* NativeProgramCache::setupEntry(const SetupProgram&, const NativeSetupVariant&) {
   static Entry none;
   return &none;
@@ -45,6 +50,7 @@ bool NativeProgramCache::drawn(Entry*, uint64_t) { return false; }
 
 void* NativeProgramCache::compile(Entry*, const PixelProgram&, const NativePixelVariant*) { return nullptr; }
 void* NativeProgramCache::compileSetup(Entry*, const SetupProgram&, const NativeSetupVariant&) { return nullptr; }
+void* NativeProgramCache::compileBlockVerdicts(Entry*, const PixelProgram&, NativeIsa) { return nullptr; }
 
 NativeCacheStats NativeProgramCache::stats() const { return {}; }
 

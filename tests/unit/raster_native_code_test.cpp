@@ -1,12 +1,14 @@
 // Native pixel programs (compiler/native/) as the rasterizer uses them: the comparison with the
 // interpreter catches a planted miscompile; the process-wide cache compiles a program once for
 // any number of contexts; a primitive recompiled under the same name draws its new code in new
-// draws while draws recorded before still draw the old.
+// draws while draws recorded before still draw the old; blocks decided by native code's walk
+// over a region's blocks draw what the interpreter draws.
 #include <gtest/gtest.h>
 
 #include <primflow/gl.h>
 
 #include <bit>
+#include <cmath>
 #include <vector>
 
 #include "api/src/context_state.h"
@@ -216,4 +218,68 @@ TEST(NativeCode, ARecompiledPrimitiveDrawsItsNewCodeAfterPendingDrawsOfTheOld) {
     for (int x = 0; x < 64; ++x)  // the new version over the old where both draw
       EXPECT_EQ(depth[5 * 64 + x], x + 0.5f <= 20.0f ? 0.75f : x + 0.5f <= 40.0f ? 0.25f : 1.0f) << x;
   EXPECT_TRUE(depths[0] == depths[1]);
+}
+
+namespace {
+
+// Large triangles over a 256x256 framebuffer, through a context with native code or without.
+struct LargeTriangles {
+  std::vector<unsigned char> pixels = std::vector<unsigned char>(256 * 256 * 4);
+  std::vector<float> depth = std::vector<float>(256 * 256);
+  FrameStats stats;
+};
+
+LargeTriangles drawLargeTriangles(int native) {
+  LargeTriangles out;
+  const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_THREADS, 2, PF_JIT, native, 0};
+  PFcontext ctx = pfCreateContextAttribs(attribs);
+  EXPECT_TRUE(ctx && pfMakeCurrent(ctx, out.pixels.data(), GL_UNSIGNED_BYTE, 256, 256));
+  pfglMatrixMode(GL_PROJECTION);
+  pfglOrtho(0, 256, 0, 256, -1, 1);
+  pfglEnable(GL_DEPTH_TEST);
+  pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  pfglBegin(GL_TRIANGLES);
+  for (int i = 0; i < 12; ++i) {
+    // Edges at every slope through the regions, crossing one another, at depths that cross.
+    const float a = 0.52f * static_cast<float>(i), cx = 128.0f + 30.0f * std::cos(3.0f * a),
+                cy = 128.0f + 30.0f * std::sin(3.0f * a), r = 70.0f + 9.0f * static_cast<float>(i);
+    for (int k = 0; k < 3; ++k) {
+      const float t = a + 2.0944f * static_cast<float>(k);
+      pfglColor3f(0.08f * static_cast<float>(i), 0.3f * static_cast<float>(k), 1.0f - 0.07f * static_cast<float>(i));
+      pfglVertex3f(cx + r * std::cos(t), cy + r * std::sin(t), 0.1f * static_cast<float>(k) - 0.05f * static_cast<float>(i % 5));
+    }
+  }
+  pfglEnd();
+  pfglFinish();
+  pfglReadPixels(0, 0, 256, 256, GL_DEPTH_COMPONENT, GL_FLOAT, out.depth.data());
+  out.stats = ctx->renderer.stats();
+  pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
+  pfDestroyContext(ctx);
+  return out;
+}
+
+}  // namespace
+
+TEST(NativeCode, BlocksDecidedByTheirOwnVerdictsDrawWhatTheInterpreterDraws) {
+  // Where a 32x32 region's walk is undecided -- along a triangle's edges -- native code walks
+  // its 16 blocks at once and runs the covered program or nothing on those it decides: the
+  // image and depths must be the interpreter's, which decides by regions only.
+  if (!nativeCodeAvailable()) GTEST_SKIP() << "native code is unavailable here";
+  NativeProgramCache::instance().setThreshold(0);
+  NativeProgramCache::instance().setWalkThreshold(0);
+  const LargeTriangles interpreted = drawLargeTriangles(0);
+  const LargeTriangles native = drawLargeTriangles(1);
+  EXPECT_EQ(interpreted.stats.blocks_walked, 0u);
+  EXPECT_GT(native.stats.blocks_walked, 50u);
+  EXPECT_GT(native.stats.blocks_accepted, interpreted.stats.blocks_accepted);
+  EXPECT_LT(native.stats.blocks_run, interpreted.stats.blocks_run);
+  EXPECT_EQ(native.pixels, interpreted.pixels);
+  size_t depth_differences = 0;
+  for (size_t i = 0; i < native.depth.size(); ++i)
+    depth_differences += std::bit_cast<uint32_t>(native.depth[i]) != std::bit_cast<uint32_t>(interpreted.depth[i]);
+  EXPECT_EQ(depth_differences, 0u);
+  // Something was drawn (the comparison is not of two empty frames).
+  size_t drawn = 0;
+  for (float z : native.depth) drawn += z < 1.0f;
+  EXPECT_GT(drawn, 256u * 256u / 3);
 }
