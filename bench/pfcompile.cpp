@@ -1,7 +1,8 @@
 // pfcompile: what native code costs to make. Context creation (every built-in primitive
 // registered) with and without native code, and each built-in primitive's pixel program, its
-// covered variant and its block-rejection walk compiled for the machine's instruction set with
-// a 4-channel perspective-correct layout, timed one by one (fresh keys: a compile each).
+// covered variant, its block-rejection walk (of one region, and of 16 blocks at once) and its
+// setup program (16 instances at once) compiled for the machine's instruction set with a
+// 4-channel perspective-correct layout, timed one by one (fresh keys: a compile each).
 //   pfcompile [--csv FILE]      CSV: what,name,ms
 #include <CLI/CLI.hpp>
 
@@ -16,6 +17,7 @@
 #include "compiler/builtin_primitives.h"
 #include "compiler/native/native_cache.h"
 #include "raster/lane_kernels.h"
+#include "raster/setup_batch.h"
 
 namespace {
 
@@ -75,7 +77,28 @@ int main(int argc, char** argv) {
     };
     time("pixel", prim->pixel, false);
     if (prim->pixel.covered) time("covered", *prim->pixel.covered, false);
-    if (pf::nativeVerdictSupports(prim->pixel)) time("verdict", prim->pixel, true);
+    if (pf::nativeVerdictSupports(prim->pixel)) {
+      time("verdict", prim->pixel, true);
+      // The walk over a region's 16 blocks at once.
+      pf::NativeProgramCache::Entry* e = cache.blockVerdictsEntry(prim->pixel, v.isa);
+      const auto t0 = std::chrono::steady_clock::now();
+      if (cache.compileBlockVerdicts(e, prim->pixel, v.isa)) rows.push_back({"blocks", prim->name, msSince(t0)});
+    }
+    // The setup program over 16 instances at once, with the same layout (a primitive calling
+    // others is set up by the interpreter: raster/setup_batch.h).
+    if (pf::BatchSetupExecutor::batchable(*prim)) {
+      pf::NativeSetupVariant sv;
+      sv.isa = v.isa;
+      sv.channels = v.channels;
+      for (int k = 0; k < 3; ++k) {
+        sv.kind_begin[k] = v.kind_begin[k];
+        sv.kind_end[k] = v.kind_end[k];
+      }
+      sv.named_bound = v.named_bound;
+      pf::NativeProgramCache::Entry* e = cache.setupEntry(prim->setup, sv);
+      const auto t0 = std::chrono::steady_clock::now();
+      if (cache.compileSetup(e, prim->setup, sv)) rows.push_back({"setup", prim->name, msSince(t0)});
+    }
   }
   std::printf("%-9s %-18s %9s\n", "what", "name", "ms");
   for (const Row& r : rows) std::printf("%-9s %-18s %9.2f\n", r.what.c_str(), r.name.c_str(), r.ms);

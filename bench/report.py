@@ -123,13 +123,14 @@ def table_compile():
             continue
         by_prim.setdefault(r["name"], {})[r["what"]] = float(r["ms"])
     for name, kinds in by_prim.items():
-        body.append([f"`{name}`"] + [fmt(kinds[k]) if k in kinds else "--" for k in ("pixel", "covered", "verdict")])
+        body.append([f"`{name}`"] + [fmt(kinds[k]) if k in kinds else "--"
+                                     for k in ("pixel", "covered", "verdict", "blocks", "setup")])
     isa = rs[0]["isa"] if rs else "?"
     head = table(["context creation", "ms (median of 21)"],
                  [["interpreter (`PF_JIT` 0)", fmt(ctx.get("interpreter", 0), 2)],
                   ["native code (`PF_JIT` 1)", fmt(ctx.get("native", 0), 2)]])
     return head + "\n\n" + table([f"built-in primitive ({isa})", "pixel program ms", "covered variant ms",
-                                  "block-rejection walk ms"], body)
+                                  "block-rejection walk ms", "walk over 16 blocks ms", "setup program ms"], body)
 
 
 def particle_cases():
