@@ -66,7 +66,8 @@ class SetupCodegen {
   llvm::FixedVectorType* mv_;
   llvm::Function* fn_ = nullptr;
   llvm::BasicBlock* entry_ = nullptr;
-  llvm::BasicBlock* spill_ = nullptr;  // writes the registers back and returns Left
+  // Per instruction: the registers the interpreter may read going on from it (liveRegisters).
+  std::vector<std::vector<bool>> live_in_;
   llvm::Value* args_ = nullptr;
   llvm::Value* regs_file_ = nullptr;
   llvm::Value* active_ = nullptr;       // i32: the batch's lanes
@@ -76,6 +77,57 @@ class SetupCodegen {
   std::vector<llvm::AllocaInst*> regs_;
   std::map<std::pair<uint32_t, int>, llvm::AllocaInst*> xregs_;  // (interp register, channel)
 };
+
+// Which registers each instruction's execution may go on to read before writing them -- those a
+// batch leaving before it must hand to the interpreter (the others' values are never read).
+// Conservative: every register operand of every instruction is a use (an interp register's
+// index counts too, as a register's), and only the value instructions, which write all of
+// their destination, end a register's life; the end reads the exports. Backward, over Jmp's,
+// JmpIfNot's and LoopBack's edges, to a fixed point.
+std::vector<std::vector<bool>> liveRegisters(const SetupProgram& p) {
+  const size_t n = p.code.size();
+  const size_t regs = p.num_regs;
+  std::vector<std::vector<bool>> in(n + 1, std::vector<bool>(regs, false));
+  auto use = [&](std::vector<bool>& set, uint32_t o) {
+    if (o != kNoOperand && operandKind(o) == OperandKind::Reg && operandIndex(o) < regs) set[operandIndex(o)] = true;
+  };
+  for (uint32_t o : p.scalar_exports) use(in[n], o);
+  auto defines = [](Op op) {
+    return isLaneValueOp(op) || op == Op::LoadParamAt || op == Op::LoadState || op == Op::HasKinds ||
+           op == Op::HasNamed;
+  };
+  std::vector<bool> out(regs);
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (size_t pc = n; pc-- > 0;) {
+      const Instr& ins = p.code[pc];
+      const size_t target = std::min<size_t>(ins.a, n);
+      std::fill(out.begin(), out.end(), false);
+      auto from = [&](size_t next) {
+        for (size_t r = 0; r < regs; ++r) out[r] = out[r] || in[next][r];
+      };
+      switch (ins.op) {
+        case Op::Jmp: from(target); break;
+        case Op::JmpIfNot: from(pc + 1); from(target); break;
+        case Op::LoopBack: from(target); break;
+        case Op::Kill: break;
+        default: from(pc + 1); break;
+      }
+      std::vector<bool> live = out;
+      if (defines(ins.op) && ins.dst != kNoOperand && operandKind(ins.dst) == OperandKind::Reg &&
+          operandIndex(ins.dst) < regs)
+        live[operandIndex(ins.dst)] = false;
+      else
+        use(live, ins.dst);
+      for (uint32_t o : {ins.a, ins.b, ins.c, ins.d}) use(live, o);
+      if (live != in[pc]) {
+        in[pc] = std::move(live);
+        changed = true;
+      }
+    }
+  }
+  return in;
+}
 
 // What the interpreter cannot have either: operands past the program's registers (the
 // compiler never writes them; the interpreter's file would read a constant there).
@@ -148,7 +200,22 @@ void SetupCodegen::storeLanes(size_t field_offset, unsigned row, llvm::Value* v)
 void SetupCodegen::leave(size_t pc, llvm::Value* executed) {
   b_.CreateStore(b_.getInt32(static_cast<uint32_t>(pc)), argAddress(offsetof(NativeSetupArgs, pc)));
   b_.CreateStore(executed, argAddress(offsetof(NativeSetupArgs, instructions)));
-  b_.CreateBr(spill_);
+  // The registers the interpreter may read from here on, and every interp register, into its
+  // lane-major files. (Each exit its own stores, no block shared by all: where every exit
+  // branched to one, its phis of every register at every exit were most of the compile time.)
+  const std::vector<bool>& live = live_in_[pc];
+  for (uint32_t r = 0; r < regs_.size(); ++r)
+    if (live[r])
+      b_.CreateAlignedStore(b_.CreateLoad(iv_, regs_[r]),
+                            b_.CreateConstInBoundsGEP1_64(b_.getInt32Ty(), regs_file_, uint64_t{r} * K), llvm::Align(4));
+  llvm::Value* interp = argField(offsetof(NativeSetupArgs, interp), b_.getPtrTy());
+  for (auto& [key, slot] : xregs_) {
+    if (key.first >= program_->num_interp_regs) continue;  // (not the interpreter's)
+    const uint64_t row = uint64_t{key.first} * static_cast<uint64_t>(variant_.channels) + static_cast<uint64_t>(key.second);
+    b_.CreateAlignedStore(b_.CreateLoad(fv_, slot), b_.CreateConstInBoundsGEP1_64(b_.getFloatTy(), interp, row * K),
+                          llvm::Align(4));
+  }
+  b_.CreateRet(b_.getInt32(static_cast<uint32_t>(NativeSetupStatus::Left)));
 }
 
 void SetupCodegen::kill(NativeSetupStatus status, llvm::Value* executed) {
@@ -165,8 +232,8 @@ llvm::Function* SetupCodegen::build(const std::string& name, const SetupProgram&
   args_->setName("args");
   fn_->addParamAttr(0, llvm::Attribute::NoAlias);
   entry_ = llvm::BasicBlock::Create(ctx_, "entry", fn_);
-  spill_ = llvm::BasicBlock::Create(ctx_, "spill", fn_);
   b_.SetInsertPoint(entry_);
+  live_in_ = liveRegisters(program);
 
   regs_file_ = argField(offsetof(NativeSetupArgs, regs), b_.getPtrTy());
   active_ = argField(offsetof(NativeSetupArgs, active), b_.getInt32Ty());
@@ -236,18 +303,6 @@ llvm::Function* SetupCodegen::build(const std::string& name, const SetupProgram&
   emitExports();
   b_.CreateRet(b_.getInt32(static_cast<uint32_t>(NativeSetupStatus::Done)));
 
-  b_.SetInsertPoint(spill_);
-  for (uint32_t r = 0; r < regs_.size(); ++r)
-    b_.CreateAlignedStore(b_.CreateLoad(iv_, regs_[r]),
-                          b_.CreateConstInBoundsGEP1_64(b_.getInt32Ty(), regs_file_, uint64_t{r} * K), llvm::Align(4));
-  llvm::Value* interp = argField(offsetof(NativeSetupArgs, interp), b_.getPtrTy());
-  for (auto& [key, slot] : xregs_) {
-    if (key.first >= program.num_interp_regs) continue;  // (not the interpreter's)
-    const uint64_t row = uint64_t{key.first} * static_cast<uint64_t>(variant_.channels) + static_cast<uint64_t>(key.second);
-    b_.CreateAlignedStore(b_.CreateLoad(fv_, slot), b_.CreateConstInBoundsGEP1_64(b_.getFloatTy(), interp, row * K),
-                          llvm::Align(4));
-  }
-  b_.CreateRet(b_.getInt32(static_cast<uint32_t>(NativeSetupStatus::Left)));
   return fn_;
 }
 
