@@ -33,7 +33,7 @@ void runColour(const ShadeState& s, const float* const* slots, size_t i0, int n,
 // glm::normalize: n * (1 / sqrt(dot(n, n))), where its length is not zero), the back face's
 // material and reversed normal where two-sided lighting shows the back, the tracked material
 // properties taking the pixel's colour. `c` is the colour on entry, the lit colour on return.
-void lightRun(const ShadeState& s, const LightingState& l, const LightingEquation& eq, const float* const* slots,
+PF_SHADING_CLONES void lightRun(const ShadeState& s, const LightingState& l, const LightingEquation& eq, const float* const* slots,
               size_t i0, int n, float c[4][kTileSize]) {
   alignas(64) float normal[3][kTileSize], material[4][4][kTileSize], shininess[kTileSize];
   alignas(64) uint8_t face[kTileSize];
@@ -128,7 +128,7 @@ void lightRun(const ShadeState& s, const LightingState& l, const LightingEquatio
 
 }  // namespace
 
-uint64_t shadeTile(const uint32_t* shade_ids, const float* const* slots, const ShadeState* shades,
+PF_SHADING_CLONES uint64_t shadeTile(const uint32_t* shade_ids, const float* const* slots, const ShadeState* shades,
                    const LightingState* lightings, const LightingEquation* equations, const ShadeTarget& t) {
   uint64_t shaded = 0;
   alignas(64) float c[4][kTileSize];
