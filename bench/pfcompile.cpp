@@ -80,9 +80,10 @@ int main(int argc, char** argv) {
     if (pf::nativeVerdictSupports(prim->pixel)) {
       time("verdict", prim->pixel, true);
       // The walk over a region's 16 blocks at once.
-      pf::NativeProgramCache::Entry* e = cache.blockVerdictsEntry(prim->pixel, v.isa);
+      pf::NativeProgramCache::Entry* e = cache.blockVerdictsEntry(prim->pixel, v.isa, pf::kNativeVerdictLanes);
       const auto t0 = std::chrono::steady_clock::now();
-      if (cache.compileBlockVerdicts(e, prim->pixel, v.isa)) rows.push_back({"blocks", prim->name, msSince(t0)});
+      if (cache.compileBlockVerdicts(e, prim->pixel, v.isa, pf::kNativeVerdictLanes))
+        rows.push_back({"blocks", prim->name, msSince(t0)});
     }
     // The setup program over 16 instances at once, with the same layout (a primitive calling
     // others is set up by the interpreter: raster/setup_batch.h).

@@ -47,8 +47,6 @@ void NativeBlocks::startFrame() {
   last_ = 0;
   walks_.clear();
   last_walk_ = 0;
-  block_walks_.clear();
-  last_block_walk_ = 0;
   values_valid_ = false;
 }
 
@@ -135,22 +133,21 @@ const float* NativeBlocks::stateValues(const RasterState& state) {
   return state_values_;
 }
 
-NativeBlocks::FoundWalk* NativeBlocks::walkFor(const PixelProgram& program, bool blocks) {
-  std::vector<FoundWalk>& walks = blocks ? block_walks_ : walks_;
-  size_t& last = blocks ? last_block_walk_ : last_walk_;
+NativeBlocks::FoundWalk* NativeBlocks::walkFor(const PixelProgram& program, int lanes) {
   const NativeIsa isa = nativeIsaOf(laneIsa());
   auto matches = [&](const FoundWalk& f) {
     return f.program == &program && f.code == program.code.data() && f.code_size == program.code.size() &&
-           (!blocks || f.isa == isa);
+           f.lanes == lanes && (lanes == 1 || f.isa == isa);
   };
-  FoundWalk* found = findRemembered(walks, last, matches);
+  FoundWalk* found = findRemembered(walks_, last_walk_, matches);
   if (!found) {
     NativeProgramCache& cache = NativeProgramCache::instance();
-    NativeProgramCache::Entry* e = blocks ? cache.blockVerdictsEntry(program, isa) : cache.verdictEntry(program);
-    walks.push_back(FoundWalk{&program, program.code.data(), program.code.size(), isa, e, nullptr, false,
-                              readsState(program)});
-    last = walks.size() - 1;
-    found = &walks.back();
+    NativeProgramCache::Entry* e =
+        lanes == 1 ? cache.verdictEntry(program) : cache.blockVerdictsEntry(program, isa, lanes);
+    walks_.push_back(FoundWalk{&program, program.code.data(), program.code.size(), isa, lanes, e, nullptr, false,
+                               readsState(program)});
+    last_walk_ = walks_.size() - 1;
+    found = &walks_.back();
   }
   if (!found->fn && !found->never) {
     // (A walk costs about what a block does, and compiles slower than a pixel program: each
@@ -158,7 +155,8 @@ NativeBlocks::FoundWalk* NativeBlocks::walkFor(const PixelProgram& program, bool
     NativeProgramCache& cache = NativeProgramCache::instance();
     void* f = found->entry->function();
     if (!f && cache.drawn(found->entry, 1))
-      f = blocks ? cache.compileBlockVerdicts(found->entry, program, isa) : cache.compile(found->entry, program, nullptr);
+      f = lanes == 1 ? cache.compile(found->entry, program, nullptr)
+                     : cache.compileBlockVerdicts(found->entry, program, isa, lanes);
     found->fn = f;
     found->never = !f && found->entry->settled();
   }
@@ -167,16 +165,16 @@ NativeBlocks::FoundWalk* NativeBlocks::walkFor(const PixelProgram& program, bool
 
 bool NativeBlocks::verdict(const PixelProgram& program, const uint32_t* record, const RasterState& state,
                            const double region[4], uint32_t& out) {
-  const FoundWalk* found = walkFor(program, false);
+  const FoundWalk* found = walkFor(program, 1);
   if (!found->fn) return false;
   out = reinterpret_cast<NativeVerdictFunction>(found->fn)(record, found->reads_state ? stateValues(state) : nullptr,
                                                            region);
   return true;
 }
 
-bool NativeBlocks::blockVerdicts(const PixelProgram& program, const uint32_t* record, const RasterState& state,
-                                 const double* regions, uint8_t* verdicts) {
-  const FoundWalk* found = walkFor(program, true);
+bool NativeBlocks::verdicts(const PixelProgram& program, const uint32_t* record, const RasterState& state, int lanes,
+                            const double* regions, uint8_t* verdicts) {
+  const FoundWalk* found = walkFor(program, lanes);
   if (!found->fn) return false;
   reinterpret_cast<NativeBlockVerdictsFunction>(found->fn)(record, found->reads_state ? stateValues(state) : nullptr,
                                                            regions, verdicts);

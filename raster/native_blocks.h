@@ -67,11 +67,11 @@ class NativeBlocks {
   // interpreter's verdict, or false when native code does not (yet) walk this program.
   bool verdict(const PixelProgram& program, const uint32_t* record, const RasterState& state, const double region[4],
                uint32_t& out);
-  // The same walk over kNativeVerdictLanes regions at once (interval_codegen.h's
-  // NativeBlockVerdictsFunction: `regions` their bounds, bound by bound), into `verdicts`; false
-  // when native code does not (yet) walk this program so.
-  bool blockVerdicts(const PixelProgram& program, const uint32_t* record, const RasterState& state,
-                     const double* regions, uint8_t* verdicts);
+  // The same walk over `lanes` regions at once (kNativeRegionLanes or kNativeVerdictLanes:
+  // interval_codegen.h's NativeBlockVerdictsFunction, `regions` their bounds, bound by bound),
+  // into `verdicts`; false when native code does not (yet) walk this program so.
+  bool verdicts(const PixelProgram& program, const uint32_t* record, const RasterState& state, int lanes,
+                const double* regions, uint8_t* verdicts);
 
   // Forgets what it found (keyed by addresses a later frame may reuse).
   void startFrame();
@@ -92,16 +92,17 @@ class NativeBlocks {
     const PixelProgram* program;
     const Instr* code;
     size_t code_size;
-    NativeIsa isa;  // (of a walk over blocks)
+    NativeIsa isa;  // (of a walk over several regions)
+    int lanes;      // regions at once: 1 (a NativeVerdictFunction) or more
     NativeProgramCache::Entry* entry;
     void* fn;  // a NativeVerdictFunction or NativeBlockVerdictsFunction
     bool never, reads_state;
   };
-  std::vector<FoundWalk> walks_, block_walks_;
-  size_t last_walk_ = 0, last_block_walk_ = 0;
-  // The walk of `program` (over blocks: the one of blockVerdicts), its function compiled once
-  // the walks asked of it pass the threshold.
-  FoundWalk* walkFor(const PixelProgram& program, bool blocks);
+  std::vector<FoundWalk> walks_;
+  size_t last_walk_ = 0;
+  // The walk of `program` over `lanes` regions at once, its function compiled once the walks
+  // asked of it pass the threshold.
+  FoundWalk* walkFor(const PixelProgram& program, int lanes);
   const float* stateValues(const RasterState& state);
   // The variant `program` of `prim` runs in with `layout` (into variant_).
   const NativePixelVariant& variantFor(const CompiledPrimitive& prim, const ChannelLayout& layout, bool gang,

@@ -35,6 +35,9 @@ PixelExecutor::RegionMemo& PixelExecutor::regionMemo(const PixelProgram& program
       !std::equal(v.record.begin(), v.record.end(), record)) {
     // The verdict before the key: if evaluating fails (std::bad_alloc), no key names a stale one.
     v.program = nullptr;
+    // Native code walks the tile's regions at once, where it can (the instance's blocks in the
+    // tile ask for each region in turn).
+    if (use_native && walkTileRegions(program, record, state, rx, ry)) return v;
     // Native code's walk where there is some (the same verdict), else the interpreter's.
     const double region[4] = {rx + 0.5, rx + kRejectionRegion - 0.5, ry + 0.5, ry + kRejectionRegion - 0.5};
     uint32_t native = 0;
@@ -53,6 +56,38 @@ PixelExecutor::RegionMemo& PixelExecutor::regionMemo(const PixelProgram& program
   return v;
 }
 
+bool PixelExecutor::walkTileRegions(const PixelProgram& program, const uint32_t* record, const RasterState& state,
+                                    int rx, int ry) {
+  constexpr int kPerRow = kTileSize / kRejectionRegion;
+  static_assert(kPerRow * kPerRow == kNativeRegionLanes, "a tile's regions are one walk's lanes");
+  const int tx = rx / kTileSize * kTileSize, ty = ry / kTileSize * kTileSize;
+  // The pixel centres of each region: x_lo, x_hi, y_lo, y_hi, each for every region.
+  double bounds[4][kNativeRegionLanes];
+  for (int i = 0; i < kNativeRegionLanes; ++i) {
+    const int x = tx + i % kPerRow * kRejectionRegion, y = ty + i / kPerRow * kRejectionRegion;
+    bounds[0][i] = x + 0.5;
+    bounds[1][i] = x + kRejectionRegion - 0.5;
+    bounds[2][i] = y + 0.5;
+    bounds[3][i] = y + kRejectionRegion - 0.5;
+  }
+  uint8_t verdicts[kNativeRegionLanes];
+  if (!native_.verdicts(program, record, state, kNativeRegionLanes, &bounds[0][0], verdicts)) return false;
+  const size_t words = program.num_uniform_slots;
+  for (int i = 0; i < kNativeRegionLanes; ++i) {
+    RegionMemo& m = region_memos_[i];  // (region i of a tile has memo i: tiles hold kPerRow regions a row)
+    m.program = nullptr;
+    m.record.assign(record, record + words);
+    m.x = tx + i % kPerRow * kRejectionRegion;
+    m.y = ty + i / kPerRow * kRejectionRegion;
+    m.verdict = verdicts[i] <= static_cast<uint8_t>(RegionVerdict::Accepted) ? static_cast<RegionVerdict>(verdicts[i])
+                                                                            : RegionVerdict::Unknown;
+    m.blocks_known = false;
+    m.program = &program;
+    m.record_address = record;
+  }
+  return true;
+}
+
 RegionVerdict PixelExecutor::blockVerdict(const PixelProgram& program, const uint32_t* record, const RasterState& state,
                                           int bx, int by) {
   RegionMemo& v = regionMemo(program, record, state, bx, by);
@@ -69,7 +104,8 @@ RegionVerdict PixelExecutor::blockVerdict(const PixelProgram& program, const uin
       bounds[2][i] = y + 0.5;
       bounds[3][i] = y + kBlockSize - 0.5;
     }
-    if (!native_.blockVerdicts(program, record, state, &bounds[0][0], v.blocks)) return RegionVerdict::Unknown;
+    if (!native_.verdicts(program, record, state, kNativeVerdictLanes, &bounds[0][0], v.blocks))
+      return RegionVerdict::Unknown;
     v.blocks_known = true;
   }
   const uint8_t b = v.blocks[(by - v.y) / kBlockSize * kPerRow + (bx - v.x) / kBlockSize];

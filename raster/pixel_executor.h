@@ -211,6 +211,9 @@ class PixelExecutor {
   RegionMemo region_memos_[(kTileSize / kRejectionRegion) * (kTileSize / kRejectionRegion)];
   RegionMemo& regionMemo(const PixelProgram& program, const uint32_t* record, const RasterState& state, int bx,
                          int by);
+  // Fills the memos of the tile holding region (rx, ry) with native code's walk over its
+  // regions at once; false (nothing filled) where there is none yet.
+  bool walkTileRegions(const PixelProgram& program, const uint32_t* record, const RasterState& state, int rx, int ry);
   RegionVerdict regionVerdict(const PixelProgram& program, const uint32_t* record, const RasterState& state, int bx,
                               int by) {
     return regionMemo(program, record, state, bx, by).verdict;

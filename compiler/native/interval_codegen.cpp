@@ -502,8 +502,8 @@ llvm::Function* buildVerdictFunction(llvm::Module& module, const std::string& na
 }
 
 llvm::Function* buildBlockVerdictsFunction(llvm::Module& module, const std::string& name, const PixelProgram& program,
-                                           std::string& error) {
-  IntervalCodegen g(module, kNativeVerdictLanes);
+                                           int lanes, std::string& error) {
+  IntervalCodegen g(module, static_cast<unsigned>(lanes));
   return g.build(name, program, error);
 }
 

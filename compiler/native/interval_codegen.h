@@ -24,13 +24,15 @@ namespace pf {
 // `state_values`: compiler/isa.h's StateValue order, read where the program loads the state.
 using NativeVerdictFunction = uint32_t (*)(const uint32_t* record, const float* state_values, const double* region);
 
-// The same walk over kNativeVerdictLanes regions at once, one per lane of a vector (the
-// rasterizer asks it about the 8x8 blocks of a 32x32 region the region's own walk left
-// undecided): regions[k * kNativeVerdictLanes + i] is bound k (x_lo, x_hi, y_lo, y_hi) of region
-// i, verdicts[i] its verdict. A region's verdict is the single walk's, except that it is 0 where
-// the regions part ways at a jump of the program (a region that does not take the jump the
-// others certainly take ends there, undecided) -- never decisive where the single walk is not.
+// The same walk over `lanes` regions at once, one per lane of a vector (the rasterizer asks it
+// about the kNativeRegionLanes 32x32 regions of a tile, and about the kNativeVerdictLanes 8x8
+// blocks of a region whose own walk was undecided): regions[k * lanes + i] is bound k (x_lo,
+// x_hi, y_lo, y_hi) of region i, verdicts[i] its verdict. A region's verdict is the single
+// walk's, except that it is 0 where the regions part ways at a jump of the program (a region
+// that does not take the jump the others certainly take ends there, undecided) -- never
+// decisive where the single walk is not.
 constexpr int kNativeVerdictLanes = 16;
+constexpr int kNativeRegionLanes = 4;
 using NativeBlockVerdictsFunction = void (*)(const uint32_t* record, const float* state_values, const double* regions,
                                              uint8_t* verdicts);
 
@@ -41,8 +43,8 @@ bool nativeVerdictSupports(const PixelProgram& program, std::string* why = nullp
 // set when it cannot.
 llvm::Function* buildVerdictFunction(llvm::Module& module, const std::string& name, const PixelProgram& program,
                                      std::string& error);
-// The same for the NativeBlockVerdictsFunction of `program`.
+// The same for the NativeBlockVerdictsFunction of `program` over `lanes` regions.
 llvm::Function* buildBlockVerdictsFunction(llvm::Module& module, const std::string& name, const PixelProgram& program,
-                                           std::string& error);
+                                           int lanes, std::string& error);
 
 }  // namespace pf

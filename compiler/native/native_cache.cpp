@@ -135,11 +135,11 @@ Built buildPixelModule(const PixelProgram& program, const NativePixelVariant* va
   return buildModule(build, variant ? variant->isa : NativeIsa::Sse2, name, context, module, error);
 }
 
-// The walk over kNativeVerdictLanes regions at once, as vectors of `isa`.
-Built buildBlockVerdictsModule(const PixelProgram& program, NativeIsa isa, const std::string& name,
+// The walk over `lanes` regions at once, as vectors of `isa`.
+Built buildBlockVerdictsModule(const PixelProgram& program, NativeIsa isa, int lanes, const std::string& name,
                                llvm::LLVMContext& context, std::unique_ptr<llvm::Module>& module, std::string& error) {
   auto build = [&](llvm::Module& m, const std::string& n, std::string& e) {
-    return buildBlockVerdictsFunction(m, n, program, e);
+    return buildBlockVerdictsFunction(m, n, program, lanes, e);
   };
   return buildModule(build, isa, name, context, module, error);
 }
@@ -225,11 +225,13 @@ NativeProgramCache::Entry* NativeProgramCache::verdictEntry(const PixelProgram& 
   return entryFor(key, Entry::Kind::Verdict);
 }
 
-NativeProgramCache::Entry* NativeProgramCache::blockVerdictsEntry(const PixelProgram& program, NativeIsa isa) {
+NativeProgramCache::Entry* NativeProgramCache::blockVerdictsEntry(const PixelProgram& program, NativeIsa isa,
+                                                                   int lanes) {
   thread_local std::string key;
   KeyWriter w(key);
   w.put('b');
   w.put(isa);
+  w.put(lanes);
   w.program(program);
   w.put(program.last_early_retire);
   w.put(program.last_coverage_retire);
@@ -260,11 +262,12 @@ bool NativeProgramCache::drawn(Entry* entry, uint64_t blocks) {
   return entry->status_.compare_exchange_strong(cold, Entry::kCompiling, std::memory_order_acq_rel);
 }
 
-void* NativeProgramCache::compileBlockVerdicts(Entry* entry, const PixelProgram& program, NativeIsa isa) {
-  return compileWith(entry, "block-rejection walk over blocks",
+void* NativeProgramCache::compileBlockVerdicts(Entry* entry, const PixelProgram& program, NativeIsa isa, int lanes) {
+  return compileWith(entry, "block-rejection walk over several regions",
                      [&](const std::string& name, llvm::LLVMContext& context, std::unique_ptr<llvm::Module>& module,
                          std::string& error) {
-                       return static_cast<int>(buildBlockVerdictsModule(program, isa, name, context, module, error));
+                       return static_cast<int>(
+                           buildBlockVerdictsModule(program, isa, lanes, name, context, module, error));
                      });
 }
 

@@ -85,9 +85,9 @@ class NativeProgramCache {
   // The entry of `program` under `variant`; of its block-rejection walk (interval_codegen.h).
   Entry* pixelEntry(const PixelProgram& program, const NativePixelVariant& variant);
   Entry* verdictEntry(const PixelProgram& program);
-  // The entry of its walk over kNativeVerdictLanes regions at once (a
-  // NativeBlockVerdictsFunction), in vectors of `isa`.
-  Entry* blockVerdictsEntry(const PixelProgram& program, NativeIsa isa);
+  // The entry of its walk over `lanes` regions at once (a NativeBlockVerdictsFunction), in
+  // vectors of `isa`.
+  Entry* blockVerdictsEntry(const PixelProgram& program, NativeIsa isa, int lanes);
   // The entry of a setup program under `variant` (setup_codegen.h); its function is a
   // NativeSetupFunction.
   Entry* setupEntry(const SetupProgram& program, const NativeSetupVariant& variant);
@@ -98,7 +98,7 @@ class NativeProgramCache {
   // entry) and returns its function, or null if native code does not run it.
   void* compile(Entry* entry, const PixelProgram& program, const NativePixelVariant* variant);
   void* compileSetup(Entry* entry, const SetupProgram& program, const NativeSetupVariant& variant);
-  void* compileBlockVerdicts(Entry* entry, const PixelProgram& program, NativeIsa isa);
+  void* compileBlockVerdicts(Entry* entry, const PixelProgram& program, NativeIsa isa, int lanes);
 
 
   // The thresholds (kDefault*Threshold, or the environment's at start-up); tests set 0.

@@ -36,7 +36,7 @@ NativeProgramCache::Entry* NativeProgramCache::verdictEntry(const PixelProgram&)
   return &none;
 }
 
-NativeProgramCache::Entry* NativeProgramCache::blockVerdictsEntry(const PixelProgram&, NativeIsa) {
+NativeProgramCache::Entry* NativeProgramCache::blockVerdictsEntry(const PixelProgram&, NativeIsa, int) {
   static Entry none;
   return &none;
 }
@@ -50,7 +50,7 @@ bool NativeProgramCache::drawn(Entry*, uint64_t) { return false; }
 
 void* NativeProgramCache::compile(Entry*, const PixelProgram&, const NativePixelVariant*) { return nullptr; }
 void* NativeProgramCache::compileSetup(Entry*, const SetupProgram&, const NativeSetupVariant&) { return nullptr; }
-void* NativeProgramCache::compileBlockVerdicts(Entry*, const PixelProgram&, NativeIsa) { return nullptr; }
+void* NativeProgramCache::compileBlockVerdicts(Entry*, const PixelProgram&, NativeIsa, int) { return nullptr; }
 
 NativeCacheStats NativeProgramCache::stats() const { return {}; }
 

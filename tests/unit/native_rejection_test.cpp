@@ -1,5 +1,5 @@
 // Block rejection's walk as native code (compiler/native/interval_codegen.h), of one region or of
-// kNativeVerdictLanes at once, gives the interpreter's verdict (raster/block_rejection.cpp) --
+// several at once (a tile's 4, a region's 16 blocks), gives the interpreter's verdict (raster/block_rejection.cpp) --
 // rejected, accepted or unknown -- for
 // every built-in primitive's pixel program and its covered variant, and for a probe of edge,
 // discriminant, ratio and square-root tests, over random uniform records (NaN, infinities,
@@ -92,29 +92,36 @@ Agreed compareWalks(const PixelProgram& program, const std::string& what, int tr
     agreed.rejected += want == RegionVerdict::Rejected;
     agreed.accepted += want == RegionVerdict::Accepted;
     agreed.unknown += want == RegionVerdict::Unknown;
-    // The walk over kNativeVerdictLanes regions at once, each its own size and place around
-    // this one: each region's verdict the interpreter's, or undecided where it parted ways.
-    double regions[4][kNativeVerdictLanes];
-    RegionVerdict wanted[kNativeVerdictLanes];
-    for (int i = 0; i < kNativeVerdictLanes; ++i) {
-      const int rx = i == 0 ? x0 : corner(rng) / 8 * 8, ry = i == 0 ? y0 : corner(rng) / 8 * 8;
-      const int rsize = i == 0 ? size : (i % 4 == 0 ? 32 : 8);
-      regions[0][i] = rx + 0.5;
-      regions[1][i] = rx + rsize - 0.5;
-      regions[2][i] = ry + 0.5;
-      regions[3][i] = ry + rsize - 0.5;
-      wanted[i] = interpreted.verdict(program, record.data(), state, rx, ry, rx + rsize, ry + rsize);
-    }
-    uint8_t verdicts[kNativeVerdictLanes];
-    if (!native.blockVerdicts(program, record.data(), state, &regions[0][0], verdicts)) {
-      ADD_FAILURE() << what << ": no native walk over several regions";
-      return agreed;
-    }
-    for (int i = 0; i < kNativeVerdictLanes; ++i) {
-      if (verdicts[i] == static_cast<uint8_t>(wanted[i])) continue;
-      EXPECT_EQ(verdicts[i], 0) << what << ", trial " << trial << ", region " << i << " at (" << regions[0][i]
-                                << ", " << regions[2][i] << "): decided otherwise than the interpreter";
-      ++agreed.parted;
+    // The walks over kNativeRegionLanes and kNativeVerdictLanes regions at once, each its own
+    // size and place around this one: each region's verdict the interpreter's, or undecided
+    // where it parted ways.
+    for (const int lanes : {kNativeRegionLanes, kNativeVerdictLanes}) {
+      double regions[4][kNativeVerdictLanes];
+      RegionVerdict wanted[kNativeVerdictLanes];
+      for (int i = 0; i < lanes; ++i) {
+        const int rx = i == 0 ? x0 : corner(rng) / 8 * 8, ry = i == 0 ? y0 : corner(rng) / 8 * 8;
+        const int rsize = i == 0 ? size : (i % 4 == 0 ? 32 : 8);
+        regions[0][i] = rx + 0.5;
+        regions[1][i] = rx + rsize - 0.5;
+        regions[2][i] = ry + 0.5;
+        regions[3][i] = ry + rsize - 0.5;
+        wanted[i] = interpreted.verdict(program, record.data(), state, rx, ry, rx + rsize, ry + rsize);
+      }
+      // (Bound by bound, `lanes` apart.)
+      double packed[4 * kNativeVerdictLanes];
+      for (int k = 0; k < 4; ++k)
+        for (int i = 0; i < lanes; ++i) packed[k * lanes + i] = regions[k][i];
+      uint8_t verdicts[kNativeVerdictLanes];
+      if (!native.verdicts(program, record.data(), state, lanes, packed, verdicts)) {
+        ADD_FAILURE() << what << ": no native walk over " << lanes << " regions";
+        return agreed;
+      }
+      for (int i = 0; i < lanes; ++i) {
+        if (verdicts[i] == static_cast<uint8_t>(wanted[i])) continue;
+        EXPECT_EQ(verdicts[i], 0) << what << ", trial " << trial << ", " << lanes << " lanes, region " << i << " at ("
+                                  << regions[0][i] << ", " << regions[2][i] << "): decided otherwise than the interpreter";
+        ++agreed.parted;
+      }
     }
   }
   return agreed;
