@@ -45,12 +45,7 @@ PixelExecutor::RegionMemo& PixelExecutor::regionMemo(const PixelProgram& program
         use_native && native_.verdict(program, record, state, region, native)
             ? static_cast<RegionVerdict>(native)
             : rejection_.verdict(program, record, state, rx, ry, rx + kRejectionRegion, ry + kRejectionRegion);
-    v.record.assign(record, record + words);
-    v.x = rx;
-    v.y = ry;
-    v.verdict = verdict;
-    v.blocks_known = false;
-    v.program = &program;
+    v.remember(program, record, words, rx, ry, verdict);
   }
   v.record_address = record;
   return v;
@@ -75,14 +70,9 @@ bool PixelExecutor::walkTileRegions(const PixelProgram& program, const uint32_t*
   const size_t words = program.num_uniform_slots;
   for (int i = 0; i < kNativeRegionLanes; ++i) {
     RegionMemo& m = region_memos_[i];  // (region i of a tile has memo i: tiles hold kPerRow regions a row)
-    m.program = nullptr;
-    m.record.assign(record, record + words);
-    m.x = tx + i % kPerRow * kRejectionRegion;
-    m.y = ty + i / kPerRow * kRejectionRegion;
-    m.verdict = verdicts[i] <= static_cast<uint8_t>(RegionVerdict::Accepted) ? static_cast<RegionVerdict>(verdicts[i])
-                                                                            : RegionVerdict::Unknown;
-    m.blocks_known = false;
-    m.program = &program;
+    m.remember(program, record, words, tx + i % kPerRow * kRejectionRegion, ty + i / kPerRow * kRejectionRegion,
+               verdicts[i] <= static_cast<uint8_t>(RegionVerdict::Accepted) ? static_cast<RegionVerdict>(verdicts[i])
+                                                                           : RegionVerdict::Unknown);
     m.record_address = record;
   }
   return true;

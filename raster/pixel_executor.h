@@ -207,6 +207,16 @@ class PixelExecutor {
     // Where the region's verdict is Unknown: its blocks' own (blockVerdict), once asked for.
     bool blocks_known = false;
     uint8_t blocks[kBlocksPerRegion];
+    // Remembers `verdict` for region (x, y) of `program` with the record's `words` values.
+    void remember(const PixelProgram& p, const uint32_t* rec, size_t words, int rx, int ry, RegionVerdict v) {
+      program = nullptr;  // (the key last: if copying the record fails, no key names a stale one)
+      record.assign(rec, rec + words);
+      x = rx;
+      y = ry;
+      verdict = v;
+      blocks_known = false;
+      program = &p;
+    }
   };
   RegionMemo region_memos_[(kTileSize / kRejectionRegion) * (kTileSize / kRejectionRegion)];
   RegionMemo& regionMemo(const PixelProgram& program, const uint32_t* record, const RasterState& state, int bx,
