@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "raster/light_pow.h"
+
 namespace pf {
 
 void LightingState::trackColor(const glm::vec4& color) {
@@ -42,7 +44,7 @@ namespace {
 
 float spotFactor(const glm::vec3& vp, const glm::vec3& sd, float cos_cutoff, float exponent) {
   const float cos_angle = std::max(glm::dot(-vp, sd), 0.0f);
-  return cos_angle >= cos_cutoff ? std::pow(cos_angle, exponent) : 0.0f;
+  return cos_angle >= cos_cutoff ? lightPow(cos_angle, exponent) : 0.0f;
 }
 
 }  // namespace
@@ -103,7 +105,7 @@ glm::vec4 LightingEquation::shade(const Material& m, const glm::vec3& eye, const
         const float hl = glm::length(h);
         n_dot_h = hl > 0 ? std::max(glm::dot(n, h / hl), 0.0f) : 0.0f;
       }
-      const float spec = m.shininess == 0.0f ? 1.0f : std::pow(n_dot_h, m.shininess);
+      const float spec = m.shininess == 0.0f ? 1.0f : lightPow(n_dot_h, m.shininess);
       term += spec * glm::vec3(m.specular) * l.specular;
     }
     c += attenuation * spot * term;
@@ -117,8 +119,12 @@ PF_SHADING_CLONES void LightingEquation::shadeRun(const LitPoints& in, float* co
   const int n = in.n;
   alignas(64) float c[3][LitPoints::kMax], term[3][LitPoints::kMax], vp[3][LitPoints::kMax], scale[LitPoints::kMax],
       n_dot_vp[LitPoints::kMax];
-  for (int k = 0; k < 3; ++k)
-    for (int i = 0; i < n; ++i) c[k][i] = in.emission[k][i] + in.ambient[k][i] * model_ambient_[k];
+  for (int k = 0; k < 3; ++k) {
+    const float* const emission = in.emission[k];
+    const float* const ambient = in.ambient[k];
+    const float global = model_ambient_[k];
+    for (int i = 0; i < n; ++i) c[k][i] = emission[i] + ambient[i] * global;
+  }
   const float* const ex = in.eye[0];
   const float* const ey = in.eye[1];
   const float* const ez = in.eye[2];
@@ -179,17 +185,24 @@ PF_SHADING_CLONES void LightingEquation::shadeRun(const LitPoints& in, float* co
         spec[i] = hl > 0 ? std::max(glm::dot(glm::vec3(nx[i], ny[i], nz[i]), h / hl), 0.0f) : 0.0f;
       }
     }
-    bool shiny = false;
-    for (int i = 0; i < n; ++i) shiny |= in.shininess[i] != 0.0f;
-    if (shiny)  // pow, lane by lane (only where it counts)
-      for (int i = 0; i < n; ++i)
-        spec[i] = in.shininess[i] == 0.0f ? 1.0f : n_dot_vp[i] > 0.0f ? std::pow(spec[i], in.shininess[i]) : 0.0f;
+    // (Every lane's value computed, then chosen, here and below: an operation in one arm of a
+    // select is one the compiler may not run for every lane, and the loop would not vectorize.)
+    int shiny = 0;
+    for (int i = 0; i < n; ++i) shiny |= in.shininess[i] != 0.0f ? 1 : 0;
+    if (shiny)
+      for (int i = 0; i < n; ++i) {
+        const float power = lightPow(spec[i], in.shininess[i]);
+        spec[i] = in.shininess[i] == 0.0f ? 1.0f : n_dot_vp[i] > 0.0f ? power : 0.0f;
+      }
     else
       for (int i = 0; i < n; ++i) spec[i] = 1.0f;
     for (int k = 0; k < 3; ++k) {
       const float ls = l.specular[k];
-      for (int i = 0; i < n; ++i)
-        term[k][i] = n_dot_vp[i] > 0.0f ? term[k][i] + spec[i] * in.specular[k][i] * ls : term[k][i];
+      const float* const material = in.specular[k];
+      for (int i = 0; i < n; ++i) {
+        const float lit = term[k][i] + spec[i] * material[i] * ls;
+        term[k][i] = n_dot_vp[i] > 0.0f ? lit : term[k][i];
+      }
     }
     for (int k = 0; k < 3; ++k)
       for (int i = 0; i < n; ++i) c[k][i] = c[k][i] + scale[i] * term[k][i];

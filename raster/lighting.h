@@ -95,7 +95,8 @@ class LightingEquation {
   glm::vec4 shade(const Material& m, const glm::vec3& eye, const glm::vec3& n) const;
   // shade() at every point of `in`, into out[component][point]: the same operations in the same
   // order, point by point -- the same bits -- in loops over the points that the compiler
-  // vectorizes (the shading pass lights a row of a tile at a time).
+  // vectorizes (the shading pass lights a row of a tile at a time). `out` may be the arrays of
+  // in's material (GL_COLOR_MATERIAL's colour): every input is read before its point is written.
   void shadeRun(const LitPoints& in, float* const out[4]) const;
 
  private:

@@ -6,8 +6,10 @@
 #include "raster/shading.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 
 #include "raster/limits.h"
 
@@ -68,8 +70,12 @@ PF_SHADING_CLONES void lightRun(const ShadeState& s, const LightingState& l, con
   }
   for (int k = 0; k < 3; ++k)
     for (int i = 0; i < n; ++i) normal[k][i] = face[i] ? -normal[k][i] : normal[k][i];
-  // The material of each pixel's face (trackedMaterial, property by property).
+  // The material of each pixel's face (trackedMaterial, property by property): `props[q][k]`
+  // is component k of property q at the run's pixels -- the face's own material, or the
+  // pixel's colour where GL_COLOR_MATERIAL tracks the property on that face (then, on both faces,
+  // the colour itself, not a copy).
   enum { kAmbient, kDiffuse, kSpecular, kEmission };
+  const float* props[4][4];
   for (int q = 0; q < 4; ++q) {
     const glm::vec4* front[4] = {&l.material[0].ambient, &l.material[0].diffuse, &l.material[0].specular,
                                  &l.material[0].emission};
@@ -78,9 +84,11 @@ PF_SHADING_CLONES void lightRun(const ShadeState& s, const LightingState& l, con
     for (int k = 0; k < 4; ++k) {
       const float f = (*front[q])[k], b = (*back[q])[k];
       for (int i = 0; i < n; ++i) material[q][k][i] = face[i] ? b : f;
+      props[q][k] = material[q][k];
     }
   }
-  for (int i = 0; i < n; ++i) shininess[i] = face[i] ? l.material[1].shininess : l.material[0].shininess;
+  const float front_shininess = l.material[0].shininess, back_shininess = l.material[1].shininess;
+  for (int i = 0; i < n; ++i) shininess[i] = face[i] ? back_shininess : front_shininess;
   if (l.color_material) {
     int tracked[2] = {kAmbient, kDiffuse};  // GL_AMBIENT_AND_DIFFUSE (and trackedMaterial's default)
     switch (l.color_material_mode) {
@@ -95,12 +103,12 @@ PF_SHADING_CLONES void lightRun(const ShadeState& s, const LightingState& l, con
     for (int t : tracked) {
       if (t < 0 || !(front_tracks || back_tracks)) continue;
       for (int k = 0; k < 4; ++k) {
-        float* const m = material[t][k];
         const float* const colour = c[k];
         if (front_tracks && back_tracks) {
-          std::copy_n(colour, n, m);
+          props[t][k] = colour;
           continue;
         }
+        float* const m = material[t][k];
         const uint8_t tracking_face = back_tracks ? 1 : 0;
         for (int i = 0; i < n; ++i) {
           const float a = colour[i], b = m[i];
@@ -116,10 +124,10 @@ PF_SHADING_CLONES void lightRun(const ShadeState& s, const LightingState& l, con
     in.normal[k] = normal[k];
   }
   for (int k = 0; k < 4; ++k) {
-    in.ambient[k] = material[kAmbient][k];
-    in.diffuse[k] = material[kDiffuse][k];
-    in.specular[k] = material[kSpecular][k];
-    in.emission[k] = material[kEmission][k];
+    in.ambient[k] = props[kAmbient][k];
+    in.diffuse[k] = props[kDiffuse][k];
+    in.specular[k] = props[kSpecular][k];
+    in.emission[k] = props[kEmission][k];
   }
   in.shininess = shininess;
   float* const out[4] = {c[0], c[1], c[2], c[3]};
@@ -134,14 +142,23 @@ PF_SHADING_CLONES uint64_t shadeTile(const uint32_t* shade_ids, const float* con
   alignas(64) float c[4][kTileSize];
   for (int y = 0; y < t.h; ++y) {
     const size_t row = static_cast<size_t>(y) * kTileSize;
+    const uint32_t* const ids = shade_ids + row;
+    // Most rows of most tiles are empty, or empty but for one run: an empty row is found with one
+    // vectorized pass, and the scans for a run's ends are tight loops over the row.
+    uint32_t any = 0;
+    for (int x = 0; x < t.w; ++x) any |= ids[x];
+    if (any == 0) continue;
     for (int x = 0; x < t.w;) {
-      const uint32_t id = shade_ids[row + static_cast<size_t>(x)];
-      if (id == 0) {
-        ++x;
-        continue;
-      }
+      while (x < t.w && ids[x] == 0) ++x;
+      if (x == t.w) break;
+      const uint32_t id = ids[x];
       int end = x + 1;
-      while (end < t.w && shade_ids[row + static_cast<size_t>(end)] == id) ++end;
+      for (; end + 8 <= t.w; end += 8) {  // eight at a time while all eight belong to the run
+        uint32_t differ = 0;
+        for (int j = 0; j < 8; ++j) differ |= ids[end + j] ^ id;
+        if (differ != 0) break;
+      }
+      while (end < t.w && ids[end] == id) ++end;
       const int n = end - x;
       const size_t i0 = row + static_cast<size_t>(x);
       const ShadeState& s = shades[id - 1];
@@ -149,15 +166,26 @@ PF_SHADING_CLONES uint64_t shadeTile(const uint32_t* shade_ids, const float* con
       if (s.lighting >= 0) lightRun(s, lightings[s.lighting], equations[s.lighting], slots, i0, n, c);
       uint8_t* px = t.color + (static_cast<size_t>(t.y0 + y) * t.stride + t.x0 + x) * 4;
       if (t.color_mask == 0xf) {
-        // toUnorm8 without a branch, so that the loop vectorizes: the same bytes.
-        for (int i = 0; i < n; ++i)
-          for (int k = 0; k < 4; ++k) {
+        // toUnorm8 without a branch, a plane at a time, so that the loops vectorize (the same
+        // bytes); then the four planes interleaved into RGBA words (byte 0 red: little-endian).
+        alignas(64) uint32_t q[4][kTileSize];
+        for (int k = 0; k < 4; ++k)
+          for (int i = 0; i < n; ++i) {
             const float v = c[k][i];
             const float clamped = v > 0.0f ? v : 0.0f;  // NaN too: 0
             const float rounded = clamped * 255.0f + 0.5f;
             const float scaled = clamped >= 1.0f ? 255.0f : rounded;
-            px[4 * i + k] = static_cast<uint8_t>(static_cast<int>(scaled));
+            q[k][i] = static_cast<uint32_t>(static_cast<int>(scaled));
           }
+        if constexpr (std::endian::native == std::endian::little) {
+          for (int i = 0; i < n; ++i) {
+            const uint32_t word = q[0][i] | q[1][i] << 8 | q[2][i] << 16 | q[3][i] << 24;
+            std::memcpy(px + 4 * i, &word, sizeof word);
+          }
+        } else {
+          for (int i = 0; i < n; ++i)
+            for (int k = 0; k < 4; ++k) px[4 * i + k] = static_cast<uint8_t>(q[k][i]);
+        }
       } else {
         for (int i = 0; i < n; ++i)
           for (int k = 0; k < 4; ++k)
