@@ -18,6 +18,10 @@ namespace {
 
 static_assert(LitPoints::kMax >= kTileSize, "a run is at most a tile's row");
 
+// Runs are lit in whole groups of this many pixels: AVX-512's floats per vector.
+constexpr int kLaneGroup = 16;
+static_assert(kTileSize % kLaneGroup == 0, "a row is whole groups");
+
 // The colour of `n` pixels from plane index i0 of the G-buffer under shading state `s`
 // (the colour parameter, or the state's constant colour), into c[component][pixel].
 void runColour(const ShadeState& s, const float* const* slots, size_t i0, int n, float c[4][kTileSize]) {
@@ -38,7 +42,7 @@ void runColour(const ShadeState& s, const float* const* slots, size_t i0, int n,
 PF_SHADING_CLONES void lightRun(const ShadeState& s, const LightingState& l, const LightingEquation& eq, const float* const* slots,
               size_t i0, int n, float c[4][kTileSize]) {
   alignas(64) float normal[3][kTileSize], material[4][4][kTileSize], shininess[kTileSize];
-  alignas(64) uint8_t face[kTileSize];
+  alignas(64) int32_t face[kTileSize];  // 1: the back face shows (int, as wide as the floats it selects)
   const float* p[3];
   for (int k = 0; k < 3; ++k) p[k] = slots[s.surface_slot + k] + i0;
   const float* const nx = slots[s.surface_slot + 3] + i0;
@@ -60,37 +64,28 @@ PF_SHADING_CLONES void lightRun(const ShadeState& s, const LightingState& l, con
   // Two-sided lighting: a normal facing away from the eye (dot(n, -p) < 0) shows the back face.
   // (Without it P is not read: the lighting may not need it, and then it was not written --
   // ChannelLayout::surface_eye.)
+  int any_back = 0;
   if (l.two_side) {
     for (int i = 0; i < n; ++i) {
       const float d = normal[0][i] * -p[0][i] + normal[1][i] * -p[1][i] + normal[2][i] * -p[2][i];
       face[i] = d < 0.0f ? 1 : 0;
+      any_back |= face[i];
     }
   } else {
     for (int i = 0; i < n; ++i) face[i] = 0;
   }
-  for (int k = 0; k < 3; ++k)
-    for (int i = 0; i < n; ++i) normal[k][i] = face[i] ? -normal[k][i] : normal[k][i];
+  if (any_back)
+    for (int k = 0; k < 3; ++k)
+      for (int i = 0; i < n; ++i) normal[k][i] = face[i] ? -normal[k][i] : normal[k][i];
   // The material of each pixel's face (trackedMaterial, property by property): `props[q][k]`
-  // is component k of property q at the run's pixels -- the face's own material, or the
-  // pixel's colour where GL_COLOR_MATERIAL tracks the property on that face (then, on both faces,
-  // the colour itself, not a copy).
+  // is component k of property q at the run's pixels -- the face's own material (one value
+  // where no pixel shows its back), or the pixel's colour where GL_COLOR_MATERIAL tracks the
+  // property on that face (then, on both faces, the colour itself, not a copy).
   enum { kAmbient, kDiffuse, kSpecular, kEmission };
-  const float* props[4][4];
-  for (int q = 0; q < 4; ++q) {
-    const glm::vec4* front[4] = {&l.material[0].ambient, &l.material[0].diffuse, &l.material[0].specular,
-                                 &l.material[0].emission};
-    const glm::vec4* back[4] = {&l.material[1].ambient, &l.material[1].diffuse, &l.material[1].specular,
-                                &l.material[1].emission};
-    for (int k = 0; k < 4; ++k) {
-      const float f = (*front[q])[k], b = (*back[q])[k];
-      for (int i = 0; i < n; ++i) material[q][k][i] = face[i] ? b : f;
-      props[q][k] = material[q][k];
-    }
-  }
-  const float front_shininess = l.material[0].shininess, back_shininess = l.material[1].shininess;
-  for (int i = 0; i < n; ++i) shininess[i] = face[i] ? back_shininess : front_shininess;
+  int tracked[2] = {-1, -1};
+  const bool front_tracks = l.color_material_face != GL_BACK, back_tracks = l.color_material_face != GL_FRONT;
   if (l.color_material) {
-    int tracked[2] = {kAmbient, kDiffuse};  // GL_AMBIENT_AND_DIFFUSE (and trackedMaterial's default)
+    tracked[0] = kAmbient, tracked[1] = kDiffuse;  // GL_AMBIENT_AND_DIFFUSE (and trackedMaterial's default)
     switch (l.color_material_mode) {
       case GL_AMBIENT: tracked[1] = -1; break;
       case GL_DIFFUSE: tracked[0] = -1; break;
@@ -98,25 +93,44 @@ PF_SHADING_CLONES void lightRun(const ShadeState& s, const LightingState& l, con
       case GL_EMISSION: tracked[0] = kEmission, tracked[1] = -1; break;
       default: break;
     }
-    const bool front_tracks = l.color_material_face != GL_BACK, back_tracks = l.color_material_face != GL_FRONT;
-    // (face[i] ? back_tracks : front_tracks) ? colour : own, decided per run where it can be.
+  }
+  const float* props[4][4];
+  for (int q = 0; q < 4; ++q) {
+    const bool follows_colour = (q == tracked[0] || q == tracked[1]) && front_tracks && back_tracks;
+    const glm::vec4& front = q == kAmbient ? l.material[0].ambient : q == kDiffuse ? l.material[0].diffuse
+                           : q == kSpecular ? l.material[0].specular : l.material[0].emission;
+    const glm::vec4& back = q == kAmbient ? l.material[1].ambient : q == kDiffuse ? l.material[1].diffuse
+                          : q == kSpecular ? l.material[1].specular : l.material[1].emission;
+    for (int k = 0; k < 4; ++k) {
+      if (follows_colour) {
+        props[q][k] = c[k];
+        continue;
+      }
+      const float f = front[k], b = back[k];
+      float* const m = material[q][k];
+      if (any_back)
+        for (int i = 0; i < n; ++i) m[i] = face[i] ? b : f;
+      else
+        for (int i = 0; i < n; ++i) m[i] = f;
+      props[q][k] = m;
+    }
+  }
+  const float front_shininess = l.material[0].shininess, back_shininess = l.material[1].shininess;
+  for (int i = 0; i < n; ++i) shininess[i] = face[i] ? back_shininess : front_shininess;
+  // A property tracked on one face only: the colour where that face shows, the material elsewhere.
+  if (front_tracks != back_tracks)
     for (int t : tracked) {
-      if (t < 0 || !(front_tracks || back_tracks)) continue;
+      if (t < 0) continue;
+      const int32_t tracking_face = back_tracks ? 1 : 0;
       for (int k = 0; k < 4; ++k) {
         const float* const colour = c[k];
-        if (front_tracks && back_tracks) {
-          props[t][k] = colour;
-          continue;
-        }
         float* const m = material[t][k];
-        const uint8_t tracking_face = back_tracks ? 1 : 0;
         for (int i = 0; i < n; ++i) {
           const float a = colour[i], b = m[i];
           m[i] = face[i] == tracking_face ? a : b;
         }
       }
     }
-  }
   LitPoints in;
   in.n = n;
   for (int k = 0; k < 3; ++k) {
@@ -160,10 +174,17 @@ PF_SHADING_CLONES uint64_t shadeTile(const uint32_t* shade_ids, const float* con
       }
       while (end < t.w && ids[end] == id) ++end;
       const int n = end - x;
-      const size_t i0 = row + static_cast<size_t>(x);
+      // The colour and the lighting run over the run widened to whole groups of kLaneGroup
+      // pixels of the row (the G-buffer's rows are kTileSize wide whatever the tile's width), so
+      // that their loops have no scalar remainder; the pixels widened over are computed --
+      // lane by lane, without effect on the run's -- and not written.
+      const int first = x & ~(kLaneGroup - 1);
+      const int span = std::min((end + kLaneGroup - 1) & ~(kLaneGroup - 1), kTileSize) - first;
+      const int skip = x - first;
+      const size_t i0 = row + static_cast<size_t>(first);
       const ShadeState& s = shades[id - 1];
-      runColour(s, slots, i0, n, c);
-      if (s.lighting >= 0) lightRun(s, lightings[s.lighting], equations[s.lighting], slots, i0, n, c);
+      runColour(s, slots, i0, span, c);
+      if (s.lighting >= 0) lightRun(s, lightings[s.lighting], equations[s.lighting], slots, i0, span, c);
       uint8_t* px = t.color + (static_cast<size_t>(t.y0 + y) * t.stride + t.x0 + x) * 4;
       if (t.color_mask == 0xf) {
         // toUnorm8 without a branch, a plane at a time, so that the loops vectorize (the same
@@ -171,7 +192,7 @@ PF_SHADING_CLONES uint64_t shadeTile(const uint32_t* shade_ids, const float* con
         alignas(64) uint32_t q[4][kTileSize];
         for (int k = 0; k < 4; ++k)
           for (int i = 0; i < n; ++i) {
-            const float v = c[k][i];
+            const float v = c[k][skip + i];
             const float clamped = v > 0.0f ? v : 0.0f;  // NaN too: 0
             const float rounded = clamped * 255.0f + 0.5f;
             const float scaled = clamped >= 1.0f ? 255.0f : rounded;
@@ -189,7 +210,7 @@ PF_SHADING_CLONES uint64_t shadeTile(const uint32_t* shade_ids, const float* con
       } else {
         for (int i = 0; i < n; ++i)
           for (int k = 0; k < 4; ++k)
-            if (t.color_mask & (1u << k)) px[4 * i + k] = toUnorm8(c[k][i]);
+            if (t.color_mask & (1u << k)) px[4 * i + k] = toUnorm8(c[k][skip + i]);
       }
       shaded += static_cast<uint64_t>(n);
       x = end;
