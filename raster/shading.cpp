@@ -1,8 +1,10 @@
 // The shading pass (see shading.h).
 //
-// A tile is shaded row by row, in runs of pixels with the same shading state. A lit run goes
-// through LightingEquation::shadeRun with each quantity one array per component -- the
-// G-buffer's planes are already laid out that way -- so that the equation's loops vectorize.
+// A tile is shaded row by row: a row with one shading state as one span from its first shaded
+// pixel to its last (the gaps computed and not written), a row with several in runs of pixels
+// with the same state. A lit span goes through LightingEquation::shadeRun with each quantity one
+// array per component -- the G-buffer's planes are already laid out that way -- so that the
+// equation's loops vectorize.
 #include "raster/shading.h"
 
 #include <algorithm>
@@ -148,71 +150,119 @@ PF_SHADING_CLONES void lightRun(const ShadeState& s, const LightingState& l, con
   eq.shadeRun(in, out);
 }
 
+// What shading a tile reads besides its ids: the G-buffer and the frame's lighting states.
+struct TileShading {
+  const float* const* slots;
+  const ShadeState* shades;
+  const LightingState* lightings;
+  const LightingEquation* equations;
+};
+
+// Pixels [x, end) of a tile row with one shading state `id`: all of them (a run), or -- `holes`,
+// a row whose pixels all have that state or none -- those with that id, the gaps computed and not
+// written. Returns the pixels shaded. (Inlined into each of shadeTile's clones.)
+[[gnu::always_inline]] inline uint64_t shadeSpan(const TileShading& in, const ShadeTarget& t, int y,
+                                                 const uint32_t* ids, int x, int end, uint32_t id, bool holes,
+                                                 float c[4][kTileSize]) {
+  const int n = end - x;
+  // The colour and the lighting run over the span widened to whole groups of kLaneGroup pixels
+  // of the row (the G-buffer's rows are kTileSize wide whatever the tile's width), so that their
+  // loops have no scalar remainder; the pixels widened over are computed -- lane by lane, without
+  // effect on the others -- and not written.
+  const int first = x & ~(kLaneGroup - 1);
+  const int span = std::min((end + kLaneGroup - 1) & ~(kLaneGroup - 1), kTileSize) - first;
+  const int skip = x - first;
+  const size_t i0 = static_cast<size_t>(y) * kTileSize + static_cast<size_t>(first);
+  const ShadeState& s = in.shades[id - 1];
+  runColour(s, in.slots, i0, span, c);
+  if (s.lighting >= 0) lightRun(s, in.lightings[s.lighting], in.equations[s.lighting], in.slots, i0, span, c);
+  uint8_t* px = t.color + (static_cast<size_t>(t.y0 + y) * t.stride + t.x0 + x) * 4;
+  const uint32_t* const span_ids = ids + x;
+  uint64_t shaded = static_cast<uint64_t>(n);
+  if (holes) {
+    shaded = 0;
+    for (int i = 0; i < n; ++i) shaded += span_ids[i] != 0 ? 1u : 0u;
+  }
+  if (t.color_mask == 0xf) {
+    // toUnorm8 without a branch, a plane at a time, so that the loops vectorize (the same bytes);
+    // then the four planes interleaved into RGBA words (byte 0 red: little-endian), a gap's pixel
+    // keeping the word it has.
+    alignas(64) uint32_t q[4][kTileSize];
+    for (int k = 0; k < 4; ++k)
+      for (int i = 0; i < n; ++i) {
+        const float v = c[k][skip + i];
+        const float clamped = v > 0.0f ? v : 0.0f;  // NaN too: 0
+        const float rounded = clamped * 255.0f + 0.5f;
+        const float scaled = clamped >= 1.0f ? 255.0f : rounded;
+        q[k][i] = static_cast<uint32_t>(static_cast<int>(scaled));
+      }
+    if constexpr (std::endian::native == std::endian::little) {
+      if (holes) {
+        for (int i = 0; i < n; ++i) {
+          uint32_t word = q[0][i] | q[1][i] << 8 | q[2][i] << 16 | q[3][i] << 24, old;
+          std::memcpy(&old, px + 4 * i, sizeof old);
+          word = span_ids[i] != 0 ? word : old;
+          std::memcpy(px + 4 * i, &word, sizeof word);
+        }
+      } else {
+        for (int i = 0; i < n; ++i) {
+          const uint32_t word = q[0][i] | q[1][i] << 8 | q[2][i] << 16 | q[3][i] << 24;
+          std::memcpy(px + 4 * i, &word, sizeof word);
+        }
+      }
+    } else {
+      for (int i = 0; i < n; ++i)
+        if (span_ids[i] != 0)
+          for (int k = 0; k < 4; ++k) px[4 * i + k] = static_cast<uint8_t>(q[k][i]);
+    }
+  } else {
+    for (int i = 0; i < n; ++i)
+      if (span_ids[i] != 0)
+        for (int k = 0; k < 4; ++k)
+          if (t.color_mask & (1u << k)) px[4 * i + k] = toUnorm8(c[k][skip + i]);
+  }
+  return shaded;
+}
+
 }  // namespace
 
 PF_SHADING_CLONES uint64_t shadeTile(const uint32_t* shade_ids, const float* const* slots, const ShadeState* shades,
                    const LightingState* lightings, const LightingEquation* equations, const ShadeTarget& t) {
+  const TileShading in{slots, shades, lightings, equations};
   uint64_t shaded = 0;
   alignas(64) float c[4][kTileSize];
   for (int y = 0; y < t.h; ++y) {
-    const size_t row = static_cast<size_t>(y) * kTileSize;
-    const uint32_t* const ids = shade_ids + row;
-    // Most rows of most tiles are empty, or empty but for one run: an empty row is found with one
-    // vectorized pass, and the scans for a run's ends are tight loops over the row.
+    const uint32_t* const ids = shade_ids + static_cast<size_t>(y) * kTileSize;
+    // Most rows of most tiles are empty, or hold one shading state (a mesh's triangles, the
+    // spheres of one glBegin): an empty row is found with one vectorized pass, and a row with
+    // one state is shaded as one span from its first shaded pixel to its last, gaps and all --
+    // small primitives leave many short runs, and a run costs far more than a pixel.
     uint32_t any = 0;
     for (int x = 0; x < t.w; ++x) any |= ids[x];
     if (any == 0) continue;
-    for (int x = 0; x < t.w;) {
-      while (x < t.w && ids[x] == 0) ++x;
-      if (x == t.w) break;
+    int x0 = 0, x1 = t.w;
+    while (ids[x0] == 0) ++x0;
+    while (ids[x1 - 1] == 0) --x1;
+    const uint32_t first_id = ids[x0];
+    uint32_t mixed = 0;
+    for (int x = x0; x < x1; ++x) mixed |= ids[x] != 0 ? ids[x] ^ first_id : 0u;
+    if (mixed == 0) {
+      shaded += shadeSpan(in, t, y, ids, x0, x1, first_id, true, c);
+      continue;
+    }
+    // Several states: run by run.
+    for (int x = x0; x < x1;) {
+      while (x < x1 && ids[x] == 0) ++x;
+      if (x == x1) break;
       const uint32_t id = ids[x];
       int end = x + 1;
-      for (; end + 8 <= t.w; end += 8) {  // eight at a time while all eight belong to the run
+      for (; end + 8 <= x1; end += 8) {  // eight at a time while all eight belong to the run
         uint32_t differ = 0;
         for (int j = 0; j < 8; ++j) differ |= ids[end + j] ^ id;
         if (differ != 0) break;
       }
-      while (end < t.w && ids[end] == id) ++end;
-      const int n = end - x;
-      // The colour and the lighting run over the run widened to whole groups of kLaneGroup
-      // pixels of the row (the G-buffer's rows are kTileSize wide whatever the tile's width), so
-      // that their loops have no scalar remainder; the pixels widened over are computed --
-      // lane by lane, without effect on the run's -- and not written.
-      const int first = x & ~(kLaneGroup - 1);
-      const int span = std::min((end + kLaneGroup - 1) & ~(kLaneGroup - 1), kTileSize) - first;
-      const int skip = x - first;
-      const size_t i0 = row + static_cast<size_t>(first);
-      const ShadeState& s = shades[id - 1];
-      runColour(s, slots, i0, span, c);
-      if (s.lighting >= 0) lightRun(s, lightings[s.lighting], equations[s.lighting], slots, i0, span, c);
-      uint8_t* px = t.color + (static_cast<size_t>(t.y0 + y) * t.stride + t.x0 + x) * 4;
-      if (t.color_mask == 0xf) {
-        // toUnorm8 without a branch, a plane at a time, so that the loops vectorize (the same
-        // bytes); then the four planes interleaved into RGBA words (byte 0 red: little-endian).
-        alignas(64) uint32_t q[4][kTileSize];
-        for (int k = 0; k < 4; ++k)
-          for (int i = 0; i < n; ++i) {
-            const float v = c[k][skip + i];
-            const float clamped = v > 0.0f ? v : 0.0f;  // NaN too: 0
-            const float rounded = clamped * 255.0f + 0.5f;
-            const float scaled = clamped >= 1.0f ? 255.0f : rounded;
-            q[k][i] = static_cast<uint32_t>(static_cast<int>(scaled));
-          }
-        if constexpr (std::endian::native == std::endian::little) {
-          for (int i = 0; i < n; ++i) {
-            const uint32_t word = q[0][i] | q[1][i] << 8 | q[2][i] << 16 | q[3][i] << 24;
-            std::memcpy(px + 4 * i, &word, sizeof word);
-          }
-        } else {
-          for (int i = 0; i < n; ++i)
-            for (int k = 0; k < 4; ++k) px[4 * i + k] = static_cast<uint8_t>(q[k][i]);
-        }
-      } else {
-        for (int i = 0; i < n; ++i)
-          for (int k = 0; k < 4; ++k)
-            if (t.color_mask & (1u << k)) px[4 * i + k] = toUnorm8(c[k][skip + i]);
-      }
-      shaded += static_cast<uint64_t>(n);
+      while (end < x1 && ids[end] == id) ++end;
+      shaded += shadeSpan(in, t, y, ids, x, end, id, false, c);
       x = end;
     }
   }

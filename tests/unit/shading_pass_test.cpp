@@ -75,15 +75,23 @@ TEST(ShadingPass, RunsGiveThePixelAtATimeBytes) {
         s.lighting = k % 2;
       }
     }
-    // The G-buffer: colour (4 slots), P and N (6): runs of random length and state, some empty.
+    // The G-buffer: colour (4 slots), P and N (6): runs of random length and state, some empty;
+    // in every other trial one state a row, with many gaps (the pass shades such a row as one
+    // span, the gaps computed and not written).
     std::vector<float> planes(10 * kPlane);
     std::vector<float*> slots(10);
     for (int k = 0; k < 10; ++k) slots[static_cast<size_t>(k)] = planes.data() + static_cast<size_t>(k) * kPlane;
     std::vector<uint32_t> ids(kPlane);
+    const bool one_state_rows = trial % 2 == 1;
     for (size_t i = 0; i < kPlane;) {
-      const uint32_t id = rng() % 7 == 0 ? 0u : 1u + rng() % 5;
+      const uint32_t id = rng() % (one_state_rows ? 3 : 7) == 0 ? 0u : 1u + rng() % 5;
       for (size_t end = std::min(kPlane, i + 1 + rng() % 20); i < end; ++i) ids[i] = id;
     }
+    if (one_state_rows)
+      for (size_t row = 0; row < kPlane; row += kTileSize) {
+        const uint32_t id = 1u + rng() % 5;
+        for (size_t i = row; i < row + kTileSize; ++i) ids[i] = ids[i] != 0 ? id : 0u;
+      }
     for (size_t i = 0; i < kPlane; ++i) {
       for (int k = 0; k < 4; ++k) slots[static_cast<size_t>(k)][i] = pos(rng) * 1.2f - 0.1f;
       slots[4][i] = u(rng) * 2;
