@@ -16,9 +16,21 @@
 #pragma once
 
 #include <bit>
+#include <cstddef>
 #include <cstdint>
 
 namespace pf {
+
+namespace detail {
+// c[0] x^(N-1) + ... + c[N-1] by Horner's rule, highest coefficient first (a loop of constant
+// trip count: unrolled, and the same operations in the same order wherever it is inlined).
+template <size_t N>
+inline double horner(double x, const double (&c)[N]) {
+  double p = c[0];
+  for (size_t i = 1; i < N; ++i) p = p * x + c[i];
+  return p;
+}
+}  // namespace detail
 
 // x^y for x >= 0 (or NaN) and finite y, as C's powf gives it there: x^0 = 1 and 1^y = 1, 0^y = 0
 // for y > 0 and +inf for y < 0, +inf^y = +inf for y > 0 and 0 for y < 0, NaN in, NaN out. A
@@ -39,15 +51,9 @@ inline float lightPow(float x, float y) {
   const double md = m;
   const double s = (md - 1.0) / (md + 1.0);
   const double s2 = s * s;
-  double series = 1.0 / 17.0;
-  series = series * s2 + 1.0 / 15.0;
-  series = series * s2 + 1.0 / 13.0;
-  series = series * s2 + 1.0 / 11.0;
-  series = series * s2 + 1.0 / 9.0;
-  series = series * s2 + 1.0 / 7.0;
-  series = series * s2 + 1.0 / 5.0;
-  series = series * s2 + 1.0 / 3.0;
-  series = series * s2 + 1.0;
+  constexpr double kAtanhSeries[] = {1.0 / 17, 1.0 / 15, 1.0 / 13, 1.0 / 11, 1.0 / 9,
+                                     1.0 / 7,  1.0 / 5,  1.0 / 3,  1.0};
+  const double series = detail::horner(s2, kAtanhSeries);
   constexpr double kLn2 = 0x1.62e42fefa39efp-1;
   const double ln_x = static_cast<double>(e) * kLn2 + 2.0 * s * series;
   // exp(t) = 2^k exp(r), k = round(t / ln 2), r = t - k ln 2 (ln 2 split in two so that k ln2_hi
@@ -67,18 +73,10 @@ inline float lightPow(float x, float y) {
   // k + 1023 is 2^k's biased exponent (unsigned arithmetic: a NaN's bits wrap harmlessly).
   const uint32_t biased = static_cast<uint32_t>(std::bit_cast<uint64_t>(kr)) + 1023u;
   const double r = (t - k * kLn2Hi) - k * kLn2Lo;
-  double p = 1.0 / 39916800.0;  // 1/11!
-  p = p * r + 1.0 / 3628800.0;
-  p = p * r + 1.0 / 362880.0;
-  p = p * r + 1.0 / 40320.0;
-  p = p * r + 1.0 / 5040.0;
-  p = p * r + 1.0 / 720.0;
-  p = p * r + 1.0 / 120.0;
-  p = p * r + 1.0 / 24.0;
-  p = p * r + 1.0 / 6.0;
-  p = p * r + 0.5;
-  p = p * r + 1.0;
-  p = p * r + 1.0;
+  constexpr double kExpTaylor[] = {1.0 / 39916800, 1.0 / 3628800, 1.0 / 362880, 1.0 / 40320,
+                                   1.0 / 5040,     1.0 / 720,     1.0 / 120,    1.0 / 24,
+                                   1.0 / 6,        1.0 / 2,       1.0,          1.0};  // 1/11! .. 1/0!
+  const double p = detail::horner(r, kExpTaylor);
   const double scale = std::bit_cast<double>(static_cast<uint64_t>(biased) << 52);
   const float power = static_cast<float>(p * scale);
   // The edges, as powf has them.

@@ -158,12 +158,21 @@ struct TileShading {
   const LightingEquation* equations;
 };
 
-// Pixels [x, end) of a tile row with one shading state `id`: all of them (a run), or -- `holes`,
+// Pixels [x, end) of tile row y, with one shading state `id`: all of them (a run), or -- `holes`,
 // a row whose pixels all have that state or none -- those with that id, the gaps computed and not
-// written. Returns the pixels shaded. (Inlined into each of shadeTile's clones.)
-[[gnu::always_inline]] inline uint64_t shadeSpan(const TileShading& in, const ShadeTarget& t, int y,
-                                                 const uint32_t* ids, int x, int end, uint32_t id, bool holes,
-                                                 float c[4][kTileSize]) {
+// written.
+struct RowSpan {
+  int y, x, end;
+  uint32_t id;
+  bool holes;
+};
+
+// Shades a span of the row whose ids are `ids`; returns the pixels shaded. (Inlined into each
+// of shadeTile's clones.)
+[[gnu::always_inline]] inline uint64_t shadeSpan(const TileShading& in, const ShadeTarget& t, const uint32_t* ids,
+                                                 const RowSpan& r, float c[4][kTileSize]) {
+  const int y = r.y, x = r.x, end = r.end;
+  const bool holes = r.holes;
   const int n = end - x;
   // The colour and the lighting run over the span widened to whole groups of kLaneGroup pixels
   // of the row (the G-buffer's rows are kTileSize wide whatever the tile's width), so that their
@@ -173,7 +182,7 @@ struct TileShading {
   const int span = std::min((end + kLaneGroup - 1) & ~(kLaneGroup - 1), kTileSize) - first;
   const int skip = x - first;
   const size_t i0 = static_cast<size_t>(y) * kTileSize + static_cast<size_t>(first);
-  const ShadeState& s = in.shades[id - 1];
+  const ShadeState& s = in.shades[r.id - 1];
   runColour(s, in.slots, i0, span, c);
   if (s.lighting >= 0) lightRun(s, in.lightings[s.lighting], in.equations[s.lighting], in.slots, i0, span, c);
   uint8_t* px = t.color + (static_cast<size_t>(t.y0 + y) * t.stride + t.x0 + x) * 4;
@@ -247,7 +256,7 @@ PF_SHADING_CLONES uint64_t shadeTile(const uint32_t* shade_ids, const float* con
     uint32_t mixed = 0;
     for (int x = x0; x < x1; ++x) mixed |= ids[x] != 0 ? ids[x] ^ first_id : 0u;
     if (mixed == 0) {
-      shaded += shadeSpan(in, t, y, ids, x0, x1, first_id, true, c);
+      shaded += shadeSpan(in, t, ids, RowSpan{y, x0, x1, first_id, true}, c);
       continue;
     }
     // Several states: run by run.
@@ -262,7 +271,7 @@ PF_SHADING_CLONES uint64_t shadeTile(const uint32_t* shade_ids, const float* con
         if (differ != 0) break;
       }
       while (end < x1 && ids[end] == id) ++end;
-      shaded += shadeSpan(in, t, y, ids, x, end, id, false, c);
+      shaded += shadeSpan(in, t, ids, RowSpan{y, x, end, id, false}, c);
       x = end;
     }
   }
