@@ -268,3 +268,92 @@ TEST(CoarseDepth, NothingIsCulledWhereTheDepthTestCannotRejectARange) {
   EXPECT_GT(never.stats.blocks_depth_culled, 0u);
   expectSameImages(never, drawCloud(false, GL_NEVER, 1.0, 0.0, 1.0));
 }
+
+// Triangles state depth_bound() too (primitives/triangles.pfl: the z plane at the snapped
+// vertices, widened past its rounding; some vertices a hair off pixel centres, snapped onto
+// them). Drawn twice, the second pass with GL_EQUAL in another
+// colour, every pixel of the first is redrawn only if its depth lies in the bound: a small
+// triangle's pixels are each tested against the bound (packed lanes), so a bound that misses
+// one pixel's depth by an ulp loses that pixel.
+namespace {
+
+enum class Projection { Ortho, Frustum };
+
+Frame drawTriangles(bool cull, Projection projection, GLenum func, double clear_z, double near, double far,
+                    unsigned seed) {
+  return pf::test::renderFrame(kSize, 2, [&](pf::Renderer& r) { r.setDepthCulling(cull); }, [&] {
+    pfglMatrixMode(GL_PROJECTION);
+    if (projection == Projection::Ortho)
+      pfglOrtho(-1, 1, -1, 1, -1, 1);
+    else
+      pfglFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 12.0);
+    pfglMatrixMode(GL_MODELVIEW);
+    if (projection == Projection::Frustum) pfglTranslated(0.0, 0.0, -3.0);
+    pfglEnable(GL_DEPTH_TEST);
+    pfglDepthRange(near, far);
+    pfglClearDepth(clear_z);
+    pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    // Positions in normalised units: some on pixel centres (each pixel 2 / kSize wide), sizes
+    // from a pixel to a third of the frame, depths spread from flat to as steep as the view
+    // volume allows across a few pixels.
+    struct Tri {
+      float v[3][3];
+    };
+    std::vector<Tri> tris;
+    const float pixel = 2.0f / kSize;
+    for (int i = 0; i < 1500; ++i) {
+      const float size = i % 3 == 0 ? pixel * (1 + 3 * u(rng)) : i % 3 == 1 ? pixel * (5 + 40 * u(rng)) : 0.7f * u(rng);
+      const float cx = 2 * u(rng) - 1, cy = 2 * u(rng) - 1, cz = 1.6f * u(rng) - 0.8f;
+      const float slope = i % 4 == 0 ? 0.0f : (u(rng) - 0.5f) * (i % 4 == 1 ? 0.1f : 2.0f) / size;
+      Tri t;
+      for (int k = 0; k < 3; ++k) {
+        float x = cx + size * (u(rng) - 0.5f), y = cy + size * (u(rng) - 0.5f);
+        if (i % 5 == 0) {  // within 1/1024 pixel of a pixel centre: snapped onto it
+          const float off = (u(rng) - 0.5f) * pixel / 512;
+          x = (std::floor((x + 1) / pixel) + 0.5f) * pixel - 1 + off;
+          y = (std::floor((y + 1) / pixel) + 0.5f) * pixel - 1 - off;
+        }
+        t.v[k][0] = x;
+        t.v[k][1] = y;
+        t.v[k][2] = std::clamp(cz + slope * (x - cx) * (k == 2 ? -1.0f : 1.0f), -0.99f, 0.99f);
+      }
+      tris.push_back(t);
+    }
+    for (int pass = 0; pass < 2; ++pass) {
+      pfglDepthFunc(pass == 0 ? func : GL_EQUAL);
+      pfglBegin(GL_TRIANGLES);
+      for (const Tri& t : tris) {
+        pfglColor3f(u(rng), u(rng), u(rng));
+        for (const auto& p : t.v) pfglVertex3f(p[0], p[1], p[2]);
+      }
+      pfglEnd();
+      pfglFinish();
+    }
+  });
+}
+
+}  // namespace
+
+TEST(CoarseDepth, TriangleFramesAreTheSameToTheBitWithCullingOff) {
+  struct Case {
+    Projection projection;
+    GLenum func;
+    double clear_z, near, far;
+  };
+  unsigned seed = 1;
+  for (const Case k : {Case{Projection::Ortho, GL_LESS, 1.0, 0.0, 1.0}, Case{Projection::Frustum, GL_LESS, 1.0, 0.0, 1.0},
+                       Case{Projection::Ortho, GL_LEQUAL, 1.0, 0.0, 1.0}, Case{Projection::Ortho, GL_GREATER, 0.0, 1.0, 0.0},
+                       Case{Projection::Frustum, GL_GEQUAL, 0.0, 1.0, 0.0}, Case{Projection::Frustum, GL_LESS, 1.0, 0.2, 0.7}}) {
+    SCOPED_TRACE(::testing::Message() << "projection " << static_cast<int>(k.projection) << " func 0x" << std::hex
+                                      << k.func << std::dec << " range " << k.near << ".." << k.far);
+    const Frame culled = drawTriangles(true, k.projection, k.func, k.clear_z, k.near, k.far, seed);
+    const Frame plain = drawTriangles(false, k.projection, k.func, k.clear_z, k.near, k.far, seed);
+    ++seed;
+    expectSameImages(culled, plain);
+    EXPECT_GT(culled.stats.blocks_depth_culled, 0u);
+    EXPECT_GT(culled.stats.pixels_depth_culled, 0u);
+    EXPECT_LT(culled.stats.blocks_run, plain.stats.blocks_run);
+  }
+}
