@@ -1,9 +1,9 @@
 // Coarse depth culling (raster/coarse_depth.h): the verdict of a depth range against a block's
 // stored range is checked against every pair of depths it covers, a tile's block ranges
-// against a brute-force min/max of the buffer, and whole frames of sphere impostors (which
-// state depth_bound()) against the same frames with culling off: identical to the bit, under
-// each depth function, a reversed depth range and the depth test off, with blocks culled where
-// culling can apply and none where it cannot.
+// against a brute-force min/max of the buffer, and whole frames of the primitives that state
+// depth_bound() -- sphere impostors, ray-cast spheres, triangles -- against the same frames with
+// culling off: identical to the bit, under each depth function, a reversed depth range and the
+// depth test off, with blocks culled where culling can apply and none where it cannot.
 #include <gtest/gtest.h>
 
 #include <primflow/gl.h>
@@ -12,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <tuple>
 #include <vector>
 
 #include "rendered_frame.h"
@@ -158,8 +159,11 @@ using Frame = pf::test::RenderedFrame;
 // first's depth left in place, so whole instances find their blocks already nearer), drawn with
 // `func` (switched to `second_func`, if it is not 0, half-way through each frame's spheres),
 // `clear_z` and glDepthRange(near, far).
+// `primitive` draws the spheres; with `redraw_equal` the second frame draws the first's spheres
+// again under GL_EQUAL, in other colours, so each pixel's depth must lie in its bound.
 Frame drawCloud(bool cull, GLenum func, double clear_z, double near, double far, bool depth_test = true,
-                GLenum second_func = 0, int size = kSize) {
+                GLenum second_func = 0, int size = kSize, const char* primitive = "sphere_impostors",
+                bool redraw_equal = false) {
   return pf::test::renderFrame(size, 2, [&](pf::Renderer& r) { r.setDepthCulling(cull); }, [&] {
     pfglMatrixMode(GL_PROJECTION);
     pfglFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 12.0);
@@ -174,10 +178,14 @@ Frame drawCloud(bool cull, GLenum func, double clear_z, double near, double far,
     pfglEnable(GL_COLOR_MATERIAL);
     pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     const GLuint centre = pfglGetParamNameEXT("center"), radius = pfglGetParamNameEXT("radius");
-    const GLenum impostors = pfglGetPrimitiveEXT("sphere_impostors");
+    const GLenum impostors = pfglGetPrimitiveEXT(primitive);
     std::mt19937 rng(3);
     std::uniform_real_distribution<float> pos(-1.6f, 1.6f), col(0.0f, 1.0f);
     for (int frame = 0; frame < 2; ++frame) {
+      if (frame == 1 && redraw_equal) {
+        rng.seed(3);
+        pfglDepthFunc(GL_EQUAL);
+      }
       pfglBegin(GL_TRIANGLES);
       pfglColor3f(0.3f, 0.3f, 0.9f);
       pfglNormal3f(0, 0, 1);
@@ -192,7 +200,11 @@ Frame drawCloud(bool cull, GLenum func, double clear_z, double near, double far,
           pfglDepthFunc(second_func);
           pfglBegin(impostors);
         }
-        pfglColor3f(col(rng), col(rng), col(rng));
+        const float r = col(rng), g = col(rng), b = col(rng);
+        if (frame == 1 && redraw_equal)
+          pfglColor3f(1 - r, 1 - g, 1 - b);
+        else
+          pfglColor3f(r, g, b);
         pfglRastParamfEXT(radius, 0.05f + 0.15f * col(rng));
         pfglRastParam3fEXT(centre, pos(rng), pos(rng), pos(rng));
         pfglSequencePointEXT();
@@ -230,6 +242,22 @@ TEST(CoarseDepth, ImpostorFramesAreTheSameToTheBitWithCullingOff) {
     EXPECT_GT(culled.stats.pixels_depth_culled, 1000u);
     EXPECT_LT(culled.stats.blocks_run, plain.stats.blocks_run);
   }
+}
+
+TEST(CoarseDepth, RayCastSphereFramesAreTheSameToTheBitWithCullingOff) {
+  // `sphere` (primitives/sphere.pfl) bounds its depths by its object-space cube's: redrawn under
+  // GL_EQUAL, a pixel whose depth fell outside would be lost.
+  for (const bool redraw : {false, true})
+    for (const auto& [func, clear_z, near, far] :
+         {std::tuple{GL_LESS, 1.0, 0.0, 1.0}, std::tuple{GL_GREATER, 0.0, 1.0, 0.0}, std::tuple{GL_LEQUAL, 1.0, 0.2, 0.7}}) {
+      SCOPED_TRACE(::testing::Message() << "func 0x" << std::hex << func << std::dec << " range " << near << ".." << far
+                                        << (redraw ? ", redrawn under GL_EQUAL" : ""));
+      const Frame culled = drawCloud(true, func, clear_z, near, far, true, 0, kSize, "sphere", redraw);
+      const Frame plain = drawCloud(false, func, clear_z, near, far, true, 0, kSize, "sphere", redraw);
+      expectSameImages(culled, plain);
+      EXPECT_GT(culled.stats.blocks_depth_culled, culled.stats.blocks_run / 4);
+      EXPECT_GT(culled.stats.pixels_depth_culled, 1000u);
+    }
 }
 
 TEST(CoarseDepth, BlockRangesFollowWhatWasDrawnWhenTheDepthFunctionTurns) {
