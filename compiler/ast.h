@@ -25,6 +25,9 @@ struct Expr {
   double number = 0;         // literals
   bool boolean = false;
   std::vector<ExprPtr> args;  // operands / call arguments / [base, index] / [cond, a, b]
+  // Nodes on the longest path from here down to a leaf: the parser bounds it, with the nesting
+  // above, so that every later pass may recurse over the tree (`1 + 1 + ...` is one level a term).
+  int height = 1;
 
   // Call of `fixed<bits,frac>(x)`, a conversion: the type converted to.
   Type conversion;

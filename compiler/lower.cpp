@@ -262,21 +262,54 @@ std::vector<int> Lowerer::convert(const Binding& from, const Type& to) {
   return out;
 }
 
+Lowerer::NestingGuard::NestingGuard(Lowerer& lowerer, SourceLoc loc) : l(lowerer) {
+  if (++l.nesting_ > kMaxLoweredNesting)
+    l.refuse(loc, "nesting too deep once functions are inlined (more than " + std::to_string(kMaxLoweredNesting) +
+                      " levels)");
+}
+
+void Lowerer::refuse(SourceLoc loc, const std::string& what) {
+  std::string msg = what;
+  if (!inlining_.empty()) {
+    // The chain of inlined calls, its ends when it is long: "p -> f9 -> f8 -> ... -> f1 -> f0".
+    msg += ": " + f_.name;
+    const size_t n = inlining_.size();
+    for (size_t i = 0; i < n; ++i) {
+      if (n > 8 && i == 4) {
+        msg += " -> ... (" + std::to_string(n - 8) + " more)";
+        i = n - 4;
+      }
+      msg += " -> " + inlining_[i]->name;
+    }
+  }
+  log_.error(loc, msg);
+  throw LoweringAbort{};
+}
+
 }  // namespace lowering
 
 using lowering::Lowerer;
+using lowering::LoweringAbort;
 
 bool lowerPrimitive(const Unit& unit, const std::map<std::string, const Unit*>& functions,
                     const PrimitiveTable& primitives, IrFunction& out, DiagnosticLog& log) {
   Lowerer l(out, log, functions, primitives);
-  return l.run(unit);
+  try {
+    return l.run(unit);
+  } catch (const LoweringAbort&) {
+    return false;
+  }
 }
 
 bool lowerField(const Unit& unit, const std::map<std::string, const Unit*>& functions, IrFunction& out,
                 DiagnosticLog& log) {
   const PrimitiveTable none;
   Lowerer l(out, log, functions, none);
-  return l.runField(unit);
+  try {
+    return l.runField(unit);
+  } catch (const LoweringAbort&) {
+    return false;
+  }
 }
 
 }  // namespace pf

@@ -19,6 +19,10 @@ Binding Lowerer::scalar(Type t, int v) {
 }
 
 Binding Lowerer::expr(const Expr& e) {
+  NestingGuard guard(*this, e.loc);
+  if (++lowered_expressions_ > kMaxLoweredExpressions)
+    refuse(e.loc, "the program grows past " + std::to_string(kMaxLoweredExpressions) +
+                      " operations once its functions are inlined");
   SourceLoc saved = cur_loc_;
   cur_loc_ = e.loc;  // instructions carry the expression they come from
   Binding b = exprAt(e);

@@ -61,6 +61,7 @@ bool Lowerer::scoped(const std::vector<StmtPtr>& body) {
 }
 
 bool Lowerer::statement(const Stmt& s) {
+  NestingGuard guard(*this, s.loc);
   // Instructions no expression accounts for (the conversion of a value into a variable's type,
   // say) carry the statement's location.
   const SourceLoc saved = cur_loc_;
@@ -237,6 +238,14 @@ bool Lowerer::functionReturn(const Stmt& s) {
 void Lowerer::lowerLoop(const LoopSpec& spec) {
   bool loop_varying = spec.varying;
   std::vector<bool> forced;
+  // Lowered before (an enclosing loop is being lowered again): what it found then still holds,
+  // since a second attempt only ever finds more values varying.
+  std::vector<const void*> key = call_sites_;
+  key.push_back(spec.site);
+  if (auto m = loop_memo_.find(key); spec.site && m != loop_memo_.end()) {
+    loop_varying = loop_varying || m->second.varying;
+    forced = m->second.forced;
+  }
   for (int attempt = 0;; ++attempt) {
     std::vector<Binding> saved = bindings_;
     size_t saved_size = blocks_.back()->size();
@@ -305,6 +314,7 @@ void Lowerer::lowerLoop(const LoopSpec& spec) {
     for (size_t i = 0; i < done.slots.size(); ++i)  // after the loop
       bindings_[done.slots[i].first].comps[done.slots[i].second] = done.merge[i];
     blocks_.back()->push_back(std::move(node));
+    if (spec.site) loop_memo_[std::move(key)] = LoopMemo{loop_varying, std::move(forced)};
     return;
   }
 }
@@ -325,6 +335,7 @@ void Lowerer::loop(const Stmt& s) {
   assignedNames(s, names);
   LoopSpec spec;
   spec.loc = s.loc;
+  spec.site = &s;
   spec.varying = s.varying_loop;
   spec.carried_bindings = visibleBindings(names);
   if (s.value) spec.cond = [&] { return expr(*s.value).comps[0]; };
@@ -339,7 +350,10 @@ void Lowerer::loop(const Stmt& s) {
 Binding Lowerer::callFunction(const Expr& e, const Unit& fn) {
   std::vector<Binding> args;
   for (const ExprPtr& a : e.args) args.push_back(expr(*a));
-  return inlineFunction(fn, args, e.loc);
+  call_sites_.push_back(&e);
+  Binding out = inlineFunction(fn, args, e.loc);
+  call_sites_.pop_back();
+  return out;
 }
 
 Binding Lowerer::inlineFunction(const Unit& fn, const std::vector<Binding>& args, SourceLoc call_loc) {
@@ -349,6 +363,14 @@ Binding Lowerer::inlineFunction(const Unit& fn, const std::vector<Binding>& args
     log_.error(call_loc, "functions cannot return interpolator_data in this version of the language");
     return result;
   }
+  inlining_.push_back(&fn);
+  struct Leave {
+    std::vector<const Unit*>& v;
+    ~Leave() { v.pop_back(); }
+  } leave{inlining_};
+  // The parameters and the result are bound past the caller's variables and dropped on return:
+  // branches copy every binding, so left behind they would make each later one slower.
+  const size_t caller_bindings = bindings_.size();
   // The function sees the built-ins (scope 0) and its own parameters, nothing of the caller.
   std::vector<std::map<std::string, int>> saved_scopes = std::move(scopes_);
   scopes_.clear();
@@ -378,6 +400,7 @@ Binding Lowerer::inlineFunction(const Unit& fn, const std::vector<Binding>& args
     out.comps = convert(value, out.type);
     out.writable = true;
     scopes_ = std::move(saved_scopes);
+    bindings_.erase(bindings_.begin() + static_cast<std::ptrdiff_t>(caller_bindings), bindings_.end());
     return out;
   }
   std::vector<std::string> names = {"$result"};
@@ -385,6 +408,7 @@ Binding Lowerer::inlineFunction(const Unit& fn, const std::vector<Binding>& args
   LoopSpec spec;
   spec.loc = call_loc;
   spec.function = true;
+  spec.site = &fn;
   spec.carried_bindings = visibleBindings(names);
   spec.body = [&] {
     if (!scoped(fn.body)) {  // sema makes every path return; stay safe regardless
@@ -396,6 +420,7 @@ Binding Lowerer::inlineFunction(const Unit& fn, const std::vector<Binding>& args
   Binding out = bindings_[lookup("$result")];
   out.writable = true;
   scopes_ = std::move(saved_scopes);
+  bindings_.erase(bindings_.begin() + static_cast<std::ptrdiff_t>(caller_bindings), bindings_.end());
   return out;
 }
 

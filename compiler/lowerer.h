@@ -28,6 +28,15 @@ struct Binding {
 };
 constexpr int kSizedInterpData = -2;  // Binding::sized_param of `interpolator_data name[]`
 
+// How deep lowering may recurse (statements and expressions, through inlined calls): the
+// parser's limit (256) bounds one unit, this the units inlined into each other.
+constexpr int kMaxLoweredNesting = 384;
+// How many expressions one unit may lower, its inlined calls' included.
+constexpr uint64_t kMaxLoweredExpressions = uint64_t{1} << 20;
+
+// Thrown by Lowerer::refuse, after its error, to abandon the unit.
+struct LoweringAbort {};
+
 // A loop being lowered: the values it carries from one iteration to the next, and what
 // lowering learned about it (which decides whether it must be lowered again).
 struct LoopContext {
@@ -45,6 +54,7 @@ struct LoopSpec {
   bool varying = false;               // sema's first guess
   std::vector<int> carried_bindings;  // variables assigned in the loop
   bool function = false;
+  const void* site = nullptr;         // the loop statement or the call it lowers (LoopMemo's key)
   std::function<int()> cond;          // emits the condition, returns its value (-1: always true)
   std::function<void()> body, step;
 };
@@ -89,6 +99,30 @@ class Lowerer {
   std::map<std::pair<int, uint32_t>, int> constants_;
   int zero_interp_ = -1;
   bool interpolator_ = false;  // lowering a shared interpolator: interpolator_return is its value
+
+  // What lowering a loop found (lowerLoop): whether it is varying and which carried values are.
+  // Kept per loop and call site, so that a loop lowered again -- inside an outer loop lowered
+  // again, or an inlined function's -- starts from it instead of finding it anew: without it each
+  // level of nested loops (an early `return` makes each inlined call one) doubles the work.
+  struct LoopMemo {
+    bool varying = false;
+    std::vector<bool> forced;
+  };
+  std::map<std::vector<const void*>, LoopMemo> loop_memo_;
+  std::vector<const void*> call_sites_;  // the calls being inlined, outermost first (as Expr*)
+  std::vector<const Unit*> inlining_;    // and the functions they inline
+
+  // Bounds on what inlining builds (docs/reliability.md): how deep lowering recurses, through
+  // inlined calls too, and how many expressions it lowers in all (a function that calls another
+  // twice, 24 deep, is 2^24 copies). Past either, lowering stops with an error naming the chain.
+  int nesting_ = 0;
+  uint64_t lowered_expressions_ = 0;
+  struct NestingGuard {
+    Lowerer& l;
+    NestingGuard(Lowerer& lowerer, SourceLoc loc);
+    ~NestingGuard() { --l.nesting_; }
+  };
+  [[noreturn]] void refuse(SourceLoc loc, const std::string& what);
 
   // ---- bindings and values (lower.cpp) ----
   int newValue(const Value& v);

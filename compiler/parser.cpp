@@ -2,6 +2,7 @@
 // Precedence, loosest first: ?:  ||  &&  == !=  < <= > >=  + -  * / %  unary  postfix.
 #include "compiler/parser.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 
@@ -9,7 +10,11 @@ namespace pf {
 namespace {
 
 constexpr int kMaxErrors = 20;
-constexpr int kMaxDepth = 200;  // nesting limit: deep input is an error, not a stack overflow
+// The nesting limit: deep input is an error, not a stack overflow. It bounds every path from a
+// unit's root to a leaf -- statements, parentheses, calls and each operator applied to another's
+// result -- so that sema and lowering, which recurse over the tree, stay within a thread's stack
+// (docs/reliability.md).
+constexpr int kMaxDepth = 256;
 
 class Parser {
  public:
@@ -475,6 +480,20 @@ class Parser {
     return e;
   }
 
+  // Makes `child` an operand of `parent`. A tree taller than the nesting limit (with the
+  // nesting above it) is refused here, where it grows: a long flat chain such as `a + b + c ...`
+  // or `v[0][0]...` never nests the parser's own calls, but every later pass recurses down it.
+  void adopt(Expr& parent, ExprPtr child) {
+    parent.height = std::max(parent.height, child->height + 1);
+    parent.args.push_back(std::move(child));
+    if (depth_ + parent.height > kMaxDepth) {
+      depth_ = 0;
+      error(parent.loc, "expression nested too deep (more than " + std::to_string(kMaxDepth) +
+                            " levels; each operator of a chain such as a + b + c is one): split it with local variables");
+      throw CompileAbort{};
+    }
+  }
+
   ExprPtr expression() {
     DepthGuard guard(*this, cur().loc);
     return ternary();
@@ -485,10 +504,10 @@ class Parser {
     if (at(Tok::Question)) {
       SourceLoc loc = take().loc;
       auto e = makeExpr(ExprKind::Ternary, loc);
-      e->args.push_back(std::move(c));
-      e->args.push_back(expression());
+      adopt(*e, std::move(c));
+      adopt(*e, expression());
       expect(Tok::Colon, "in the conditional expression");
-      e->args.push_back(expression());
+      adopt(*e, expression());
       return e;
     }
     return c;
@@ -515,22 +534,22 @@ class Parser {
       ExprPtr rhs = binary(p + 1);
       auto e = makeExpr(ExprKind::Binary, op.loc);
       e->name = op.text;
-      e->args.push_back(std::move(lhs));
-      e->args.push_back(std::move(rhs));
+      adopt(*e, std::move(lhs));
+      adopt(*e, std::move(rhs));
       lhs = std::move(e);
     }
     return lhs;
   }
 
   ExprPtr unary() {
-    DepthGuard guard(*this, cur().loc);
     if (at(Tok::Minus) || at(Tok::Bang) || at(Tok::Plus)) {
+      DepthGuard guard(*this, cur().loc);
       Token op = take();
       ExprPtr operand = unary();
       if (op.kind == Tok::Plus) return operand;
       auto e = makeExpr(ExprKind::Unary, op.loc);
       e->name = op.text;
-      e->args.push_back(std::move(operand));
+      adopt(*e, std::move(operand));
       return e;
     }
     return postfix(primary());
@@ -541,8 +560,8 @@ class Parser {
       if (at(Tok::LBracket)) {
         take();
         auto ix = makeExpr(ExprKind::Index, e->loc);  // located where the indexed value starts
-        ix->args.push_back(std::move(e));
-        ix->args.push_back(expression());
+        adopt(*ix, std::move(e));
+        adopt(*ix, expression());
         expect(Tok::RBracket, "after the index");
         e = std::move(ix);
       } else if (at(Tok::Dot)) {
@@ -550,7 +569,7 @@ class Parser {
         Token f = expect(Tok::Ident, "after '.' (a component such as x, y, z, w or r, g, b, a)");
         auto m = makeExpr(ExprKind::Member, f.loc);
         m->name = f.text;
-        m->args.push_back(std::move(e));
+        adopt(*m, std::move(e));
         e = std::move(m);
       } else {
         return e;
@@ -614,7 +633,7 @@ class Parser {
     expect(Tok::LParen, "to open the argument list");
     if (!at(Tok::RParen)) {
       do {
-        e->args.push_back(expression());
+        adopt(*e, expression());
       } while (accept(Tok::Comma));
     }
     expect(Tok::RParen, "to close the argument list");

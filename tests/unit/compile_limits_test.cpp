@@ -1,0 +1,134 @@
+// The compiler's limits (docs/reliability.md): input that nests past them -- long flat chains,
+// deep parentheses, long call chains, inlining that fans out -- is a clear error, never a stack
+// overflow or a compile that runs for minutes; input within them compiles. Every compile here
+// runs on a thread with a 1 MB stack, an application's worker thread's, not the main thread's 8 MB.
+#include <gtest/gtest.h>
+#include <pthread.h>
+
+#include <functional>
+#include <string>
+
+#include "compile_helpers.h"
+
+namespace pf::test {
+namespace {
+
+// Runs `work` on a new thread whose stack is `bytes`, and waits for it.
+void onStack(size_t bytes, const std::function<void()>& work) {
+  pthread_attr_t attr;
+  ASSERT_EQ(pthread_attr_init(&attr), 0);
+  ASSERT_EQ(pthread_attr_setstacksize(&attr, bytes), 0);
+  pthread_t thread;
+  auto run = [](void* arg) -> void* {
+    (*static_cast<const std::function<void()>*>(arg))();
+    return nullptr;
+  };
+  ASSERT_EQ(pthread_create(&thread, &attr, run, const_cast<std::function<void()>*>(&work)), 0);
+  pthread_join(thread, nullptr);
+  pthread_attr_destroy(&attr);
+}
+
+Compiled compileOnSmallStack(const std::string& source) {
+  Compiled c;
+  onStack(size_t{1} << 20, [&] { c = compile(source); });
+  return c;
+}
+
+std::string primitiveWith(const std::string& body) {
+  return "primitive p(varying float X, Y; inout varying float Z) {\n" + body + "\n}\n";
+}
+
+std::string repeated(const std::string& s, int n) {
+  std::string out;
+  for (int i = 0; i < n; ++i) out += s;
+  return out;
+}
+
+std::string sumOf(int terms) {
+  std::string e = "Z";
+  for (int i = 1; i < terms; ++i) e += " + 1.0";
+  return e;
+}
+
+TEST(CompileLimits, ALongSumIsAnErrorAtItsLineNotAStackOverflow) {
+  const Compiled c = compileOnSmallStack(primitiveWith("  Z = " + sumOf(10000) + ";"));
+  EXPECT_FALSE(c.ok);
+  EXPECT_NE(c.diagnostics.find("test.pfl:2:"), std::string::npos) << c.diagnostics;
+  EXPECT_NE(c.diagnostics.find("expression nested too deep (more than 256 levels"), std::string::npos)
+      << c.diagnostics;
+}
+
+TEST(CompileLimits, SumsAndParenthesesWithinTheLimitCompile) {
+  for (const std::string& e : {sumOf(250), repeated("(", 250) + "Z" + repeated(")", 250),
+                               repeated("-", 250) + "Z", repeated("abs(", 120) + "Z" + repeated(")", 120)}) {
+    const Compiled c = compileOnSmallStack(primitiveWith("  Z = " + e + ";"));
+    EXPECT_TRUE(c.ok) << e.substr(0, 40) << ": " << c.diagnostics;
+  }
+}
+
+TEST(CompileLimits, DeepParenthesesAndPostfixChainsAreErrors) {
+  for (const std::string& e : {repeated("(", 5000) + "Z" + repeated(")", 5000), repeated("-", 5000) + "Z",
+                               "a" + repeated("[0]", 100000), "v" + repeated(".x", 100000)}) {
+    const Compiled c = compileOnSmallStack(primitiveWith("  float a[2]; a[0] = Z; a[1] = Z; vector v = vector(Z);\n  Z = " + e + ";"));
+    EXPECT_FALSE(c.ok) << e.substr(0, 40);
+    EXPECT_NE(c.diagnostics.find("too deep (more than 256 levels"), std::string::npos) << c.diagnostics.substr(0, 400);
+  }
+}
+
+TEST(CompileLimits, AUniformElseIfChainOf200BranchesCompiles) {
+  std::string body = "  float a = 0;\n  if (Z < 0) a = 1;\n";
+  for (int i = 1; i < 200; ++i) body += "  else if (Z < " + std::to_string(i) + ") a = " + std::to_string(i) + ";\n";
+  // Z is varying: the chain nests 200 masks, past the executors' 64 -- a clear error of its own.
+  Compiled c = compileOnSmallStack(primitiveWith(body + "  Z = a;"));
+  EXPECT_FALSE(c.ok);
+  EXPECT_NE(c.diagnostics.find("at most 64 fit"), std::string::npos) << c.diagnostics;
+  // On a uniform value the same chain is no nesting at run time: it compiles.
+  std::string uniform = "primitive p(float k[1]; varying float X, Y; inout varying float Z) {\n  float a = 0;\n  if (k[0] < 0) a = 1;\n";
+  for (int i = 1; i < 200; ++i) uniform += "  else if (k[0] < " + std::to_string(i) + ") a = " + std::to_string(i) + ";\n";
+  c = compileOnSmallStack(uniform + "  Z = a;\n}\n");
+  EXPECT_TRUE(c.ok) << c.diagnostics;
+}
+
+// f0 ... f(n-1), each calling the one before: `early` gives each an early return (an inlined
+// call with a return before its end is a one-iteration loop), `twice` makes each call it twice.
+std::string callChain(int n, bool early, bool twice) {
+  std::string s = "float f0(float x) { return x * 0.5; }\n";
+  for (int i = 1; i < n; ++i) {
+    const std::string prev = "f" + std::to_string(i - 1);
+    const std::string call = twice ? prev + "(x) + " + prev + "(x + 1.0)" : prev + "(x + 1.0)";
+    s += "float f" + std::to_string(i) + "(float x) { ";
+    if (early) s += "if (x > " + std::to_string(i) + ") return x; ";
+    s += "return " + call + "; }\n";
+  }
+  return s + primitiveWith("  Z = f" + std::to_string(n - 1) + "(Z);");
+}
+
+TEST(CompileLimits, ALongCallChainIsAnErrorNamingTheChain) {
+  const Compiled c = compileOnSmallStack(callChain(5000, false, false));
+  EXPECT_FALSE(c.ok);
+  EXPECT_NE(c.diagnostics.find("nesting too deep once functions are inlined"), std::string::npos) << c.diagnostics;
+  EXPECT_NE(c.diagnostics.find("p -> f4999 -> f4998"), std::string::npos) << c.diagnostics;
+  EXPECT_TRUE(compileOnSmallStack(callChain(100, false, false)).ok);
+}
+
+// Lowering an early-returning function is a loop, lowered again when it turns out varying; the
+// loops of the functions it calls start from what they found before, or each level of the chain
+// doubles the work (24 levels: 2^24 lowerings, past the program size limit below).
+TEST(CompileLimits, EarlyReturnsDoNotDoubleTheWorkPerCallLevel) {
+  const Compiled c = compileOnSmallStack(callChain(24, true, false));
+  EXPECT_TRUE(c.ok) << c.diagnostics;
+}
+
+TEST(CompileLimits, InliningThatFansOutStopsAtTheSizeLimitNamingTheChain) {
+  for (bool early : {false, true}) {
+    const Compiled c = compileOnSmallStack(callChain(24, early, true));
+    EXPECT_FALSE(c.ok);
+    EXPECT_NE(c.diagnostics.find("the program grows past 1048576 operations once its functions are inlined: p -> f23 -> f22"),
+              std::string::npos)
+        << c.diagnostics;
+  }
+  EXPECT_TRUE(compileOnSmallStack(callChain(10, true, true)).ok);
+}
+
+}  // namespace
+}  // namespace pf::test
