@@ -337,7 +337,10 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const PixelProgra
           u[k] = asF(w ? v[lane] : v[0]);
         }
         alignas(64) float t[kLanes];
+        const uint64_t capped_before = counters.iteration_cap_lanes;
         fieldHit(state, bx, by, exec, u[0], u[1], u[2], t);
+        // Rays the search stopped at the cap are this primitive's runaway lanes, named in its report.
+        if (counters.iteration_cap_lanes != capped_before) counters.cap_primitive = &prim;
         std::memcpy(tmp, t, sizeof t);
         isa.masks.blend(R + static_cast<size_t>(operandIndex(ins.dst)) * kLanes, tmp, exec);
         continue;

@@ -620,7 +620,7 @@ void Renderer::flush() {
     stats_.unknown_field_lanes += s->executor.counters.unknown_field_lanes;
     if (s->executor.counters.iteration_cap_lanes) {
       cap_report_.pixels += s->executor.counters.iteration_cap_lanes;
-      cap_report_.primitive = s->executor.counters.cap_primitive->name;
+      if (const CompiledPrimitive* who = s->executor.counters.cap_primitive) cap_report_.primitive = who->name;
     }
     stats_.gbuffer_bytes += s->tiles_run * (static_cast<uint64_t>(scene_.gbuffer_slots) + 1) * kPlaneBytes;
     stats_.tiles_skipped -= s->tiles_run;

@@ -15,6 +15,8 @@
 #include <iostream>
 #include <sstream>
 
+#include "tools/text_file.h"
+
 #include "compiler/builtin_primitives.h"
 #include "compiler/compiler.h"
 #include "compiler/field/field_unit.h"
@@ -51,13 +53,11 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
   }
-  std::ifstream in(file, std::ios::binary);
-  if (!in) {
-    std::cerr << "pfc: cannot read '" << file << "'\n";
+  std::string source, why;
+  if (!pf::tools::readTextFile(file, source, why)) {
+    std::cerr << "pfc: cannot read '" << file << "': " << why << "\n";
     return 1;
   }
-  std::stringstream ss;
-  ss << in.rdbuf();
   pf::EmitStage stage = emit == "ast" ? pf::EmitStage::Ast : emit == "ir" ? pf::EmitStage::Ir
                         : emit == "setup" ? pf::EmitStage::Setup : emit == "pixel" ? pf::EmitStage::Pixel
                                                                    : pf::EmitStage::None;
@@ -69,7 +69,7 @@ int main(int argc, char** argv) {
   const pf::BuiltinPrimitives& builtins = pf::builtinPrimitives();
   std::set<std::string> interpolators;
   for (const auto& p : builtins.interpolators) interpolators.insert(p->name);
-  bool ok = pf::compileSource(file, ss.str(), module, log, stage, &listing, !no_opt, &builtins.by_name, &interpolators);
+  bool ok = pf::compileSource(file, source, module, log, stage, &listing, !no_opt, &builtins.by_name, &interpolators);
   std::cerr << log.format();
   if (!ok) return 1;
   std::cout << listing;
@@ -107,7 +107,7 @@ int main(int argc, char** argv) {
   }
   // The field units, as tapes: what a point-dependent branch or an unsupported operation stops.
   pf::DiagnosticLog units_log;
-  const pf::Program program = pf::parse(units_log.addSource(file, ss.str()), units_log);
+  const pf::Program program = pf::parse(units_log.addSource(file, source), units_log);
   bool named_found = field_name.empty();
   for (const pf::Unit& u : program.units) {
     if (u.kind != pf::UnitKind::Field) continue;
@@ -115,7 +115,7 @@ int main(int argc, char** argv) {
     named_found = named_found || named;
     if (u.params.size() > 1 && !named) continue;  // its parameters' values are not known here
     pf::DiagnosticLog field_log;
-    const auto tape = pf::field::compileFieldUnit(file, ss.str(), u.name, named ? params : std::vector<float>{}, field_log);
+    const auto tape = pf::field::compileFieldUnit(file, source, u.name, named ? params : std::vector<float>{}, field_log);
     std::cerr << field_log.format();
     if (!tape) return 1;
     if (emit == "tape")

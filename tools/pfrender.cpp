@@ -5,6 +5,8 @@
 // A scene file (docs/scenes.md); with no scene, the built-in showcase (tools/showcase.cpp).
 // A model (tools/model/model_file.h, docs/models.md) is drawn as an implicit surface.
 // --size overrides the scene's own image size.
+// Exit status: 0 drawn and written; 1 a bad scene or model, a GL error while drawing (the image,
+// incomplete, is still written), out of memory, or an unwritable output; 2 a bad command line.
 #include <CLI/CLI.hpp>
 
 #include <primflow/gl.h>
@@ -117,9 +119,42 @@ bool parseBox(const std::string& text, glm::dvec3& lo, glm::dvec3& hi) {
   return lo.x < hi.x && lo.y < hi.y && lo.z < hi.z;
 }
 
+// "WxH" with each side in 1..8192 (digits only: no sign, no overflow past int).
+bool parseSize(const std::string& text, int& w, int& h) {
+  const size_t x = text.find('x');
+  if (x == std::string::npos) return false;
+  auto side = [](const std::string& digits, int& out) {
+    if (digits.empty() || digits.size() > 4 || digits.find_first_not_of("0123456789") != std::string::npos) return false;
+    out = std::stoi(digits);
+    return out >= 1 && out <= 8192;
+  };
+  return side(text.substr(0, x), w) && side(text.substr(x + 1), h);
+}
+
+// CLI11's check that a number option is finite (its Range lets NaN through).
+const CLI::Validator kFinite(
+    [](std::string& v) {
+      double d = 0;
+      return CLI::detail::lexical_cast(v, d) && std::isfinite(d) ? std::string() : "must be a finite number, not '" + v + "'";
+    },
+    "FINITE");
+
+int run(int argc, char** argv);
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const std::bad_alloc&) {
+    std::cerr << "pfrender: out of memory\n";
+    return 1;
+  }
+}
+
+namespace {
+
+int run(int argc, char** argv) {
   CLI::App app{"pfrender: render a scene with primflow (no scene: the built-in showcase)"};
   std::string scene_path;
   std::string out;
@@ -138,13 +173,14 @@ int main(int argc, char** argv) {
   auto* o_ortho = app.add_flag("--ortho", ortho, "model: look down -z from above the box, the image covering its x and y");
   auto* o_method = app.add_option("--method", method_name, "model: auto, analytic, interval, march or sphere");
   auto* o_steps = app.add_option("--steps", steps, "model: march's steps M, or sphere tracing's Lipschitz bound")
-                      ->check(CLI::Range(0.0, 1e6));
+                      ->check(kFinite & CLI::Range(0.0, 1e6));
   auto* o_depth = app.add_option("--depth-out", depth_out, "model: write the visible surface's world z as a PFM (NaN: none)");
-  auto* o_time = app.add_option("--time", time, "model: HyperFun's time x[4] (Fidget models have none and ignore it)");
+  auto* o_time = app.add_option("--time", time, "model: HyperFun's time x[4] (Fidget models have none and ignore it)")
+                     ->check(kFinite);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    return app.exit(e) == 0 ? 0 : 2;  // --help: 0; every other parse error is a bad command line
   }
   const bool is_model = !scene_path.empty() && pf::model::isModelPath(scene_path);
   if (!is_model) {
@@ -196,9 +232,7 @@ int main(int argc, char** argv) {
   }
   if (out.empty()) out = !scene_path.empty() ? std::filesystem::path(scene_path).stem().string() + ".png" : "showcase.png";
   int w = scene ? scene->width : model ? 512 : 960, h = scene ? scene->height : model ? 512 : 640;
-  char tail = 0;
-  if (!size.empty() &&
-      (std::sscanf(size.c_str(), "%dx%d%c", &w, &h, &tail) != 2 || w < 1 || h < 1 || w > 8192 || h > 8192)) {
+  if (!size.empty() && !parseSize(size, w, h)) {
     std::cerr << "pfrender: --size must be WxH with each side in 1..8192, not '" << size << "'\n";
     return 2;
   }
@@ -208,7 +242,14 @@ int main(int argc, char** argv) {
     std::cerr << "pfrender: could not create a context\n";
     return 1;
   }
-  std::vector<unsigned char> pixels(static_cast<size_t>(w) * h * 4);
+  std::vector<unsigned char> pixels;
+  try {
+    pixels.resize(static_cast<size_t>(w) * h * 4);
+  } catch (const std::bad_alloc&) {
+    std::cerr << "pfrender: out of memory for a " << w << "x" << h << " image\n";
+    pfDestroyContext(ctx);
+    return 1;
+  }
   if (!pfMakeCurrent(ctx, pixels.data(), GL_UNSIGNED_BYTE, w, h)) {
     std::cerr << "pfrender: could not bind a " << w << "x" << h << " buffer\n";
     pfDestroyContext(ctx);
@@ -238,7 +279,8 @@ int main(int argc, char** argv) {
   }
   auto t1 = std::chrono::steady_clock::now();
   GLenum err = pfglGetError();
-  if (err != GL_NO_ERROR) std::cerr << "pfrender: GL error 0x" << std::hex << err << std::dec << "\n";
+  if (err != GL_NO_ERROR)
+    std::cerr << "pfrender: GL error 0x" << std::hex << err << std::dec << " while drawing: the image is incomplete\n";
   if (stats) printStats(ctx, std::chrono::duration<double, std::milli>(t1 - t0).count());
   if (model && !depth_out.empty()) {
     GLint dw = 0, dh = 0, bytes = 0;
@@ -262,5 +304,7 @@ int main(int argc, char** argv) {
     std::cerr << "pfrender: " << error << "\n";
     return 1;
   }
-  return 0;
+  return err == GL_NO_ERROR ? 0 : 1;
 }
+
+}  // namespace

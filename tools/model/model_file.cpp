@@ -1,6 +1,8 @@
 // Models (see model_file.h): reading, the model command line's camera, drawing, depth output.
 #include "model/model_file.h"
 
+#include "text_file.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
@@ -17,13 +19,10 @@ namespace pf::model {
 bool isModelPath(const std::string& path) { return field::fieldFormatOfPath(path).has_value(); }
 
 Model loadModel(const std::string& path, double time) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ModelError(path + ": error: cannot open the model file");
-  std::stringstream ss;
-  ss << in.rdbuf();
   Model m;
+  std::string why;
+  if (!tools::readTextFile(path, m.text, why)) throw ModelError(path + ": error: cannot open the model file: " + why);
   m.path = path;
-  m.text = ss.str();
   // Checked here, before any drawing, so that a bad file is reported with its line.
   DiagnosticLog log;
   m.format = field::fieldFormatOfPath(path).value_or(field::FieldFormat::Fidget);

@@ -14,6 +14,7 @@
 #include "scene/json_lines.h"
 #include "scene/obj_mesh.h"
 #include "scene/scene.h"
+#include "text_file.h"
 
 #include "compiler/field/field_source.h"
 
@@ -23,13 +24,6 @@ namespace {
 
 using nlohmann::json;
 
-std::string readFile(const std::string& path, bool& ok) {
-  std::ifstream in(path, std::ios::binary);
-  ok = static_cast<bool>(in);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 // "/objects/3/params/radius" -> "objects[3].params.radius"
 std::string keyName(const std::string& pointer) {
@@ -355,9 +349,8 @@ void readFields(const Reader& r, const json& j, Scene& s) {
       if (!format)
         r.fail(p + "/file", "'" + src.file + "': fields are read from Fidget .vm, HyperFun .hf or language .pfl files");
       src.format = *format;
-      bool ok = false;
-      src.text = readFile(src.file, ok);
-      if (!ok) r.fail(p + "/file", "cannot read '" + src.file + "'");
+      std::string why;
+      if (!tools::readTextFile(src.file, src.text, why)) r.fail(p + "/file", "cannot read '" + src.file + "': " + why);
     } else {
       const char* key = f.contains("fidget") ? "fidget" : f.contains("hyperfun") ? "hyperfun" : "language";
       src.format = f.contains("fidget") ? FieldFormat::Fidget : f.contains("hyperfun") ? FieldFormat::HyperFun : FieldFormat::Language;
@@ -425,9 +418,8 @@ Scene parseScene(const std::string& text, const std::string& path, bool allow_fi
     for (size_t i = 0; i < src.size(); ++i) {
       const std::string q = "/primitives/" + std::to_string(i);
       const std::string file = r.relativePath(r.string(src[i], q), q);
-      bool ok = false;
-      std::string body = readFile(file, ok);
-      if (!ok) r.fail(q, "cannot read '" + file + "'");
+      std::string body, why;
+      if (!tools::readTextFile(file, body, why)) r.fail(q, "cannot read '" + file + "': " + why);
       s.sources.emplace_back(file, std::move(body));
     }
   }
@@ -448,9 +440,8 @@ int lineOf(const Scene& scene, const Origin& origin) {
 }
 
 Scene loadScene(const std::string& path) {
-  bool ok = false;
-  const std::string text = readFile(path, ok);
-  if (!ok) throw SceneError(path + ": error: cannot read the scene file");
+  std::string text, why;
+  if (!tools::readTextFile(path, text, why)) throw SceneError(path + ": error: cannot read the scene file: " + why);
   return parseScene(text, path);
 }
 
