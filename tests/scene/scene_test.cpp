@@ -46,6 +46,19 @@ TEST(JsonLines, ValuesAreFoundByPointer) {
   EXPECT_EQ(lines.lineOf("/list/0/nothing"), 4);  // its nearest known ancestor
 }
 
+// Deep nesting: the scan keeps one frame a level and no path but the one asked for (a map of
+// every value's path, as it once built, is quadratic in the depth: 60 GB here).
+TEST(JsonLines, DeepNestingIsScannedInLinearMemory) {
+  const int depth = 200000;
+  const std::string text = std::string(depth, '[') + "\n1" + std::string(depth, ']');
+  const pf::scene::JsonLines lines(text);
+  std::string pointer;
+  for (int i = 0; i < depth; ++i) pointer += "/0";
+  EXPECT_EQ(lines.lineOf(pointer), 2);
+  EXPECT_EQ(lines.lineOf("/0/0/1"), 1);  // not there: its longest prefix, /0/0
+  EXPECT_EQ(pf::scene::jsonNesting(text).depth, depth);
+}
+
 // The message a scene gets, or "" if it loads.
 std::string errorOf(const std::string& text) {
   try {
@@ -68,6 +81,9 @@ TEST(SceneErrors, NameTheFileLineAndKey) {
       {"{\"objects\": [],\n \"camera\": {\"fov\": -0.5e4444446}}",
        "t.json:2: error: not valid JSON: number overflow parsing '-0.5e4444446'"},
       {"{\"objects\": []}\n", ""},
+      // nesting far past a scene's: refused before parsing, at the line where it gets too deep
+      {"{\"objects\": [],\n\"x\": [[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[",
+       "t.json:2: error: arrays and objects nest more than 64 deep here"},
       {"{}", "t.json:1: error: (the document): a scene needs \"objects\""},
       {"{\"objects\": [],\n \"camra\": {}}", "t.json:2: error: camra: unknown key 'camra'"},
       {"{\"objects\": [\n {\"primitive\": \"sphere\",\n  \"params\": {\"radius\": \"big\"}}]}",

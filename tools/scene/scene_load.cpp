@@ -373,6 +373,12 @@ void readFields(const Reader& r, const json& j, Scene& s) {
 }
 
 Scene parseScene(const std::string& text, const std::string& path, bool allow_files) {
+  // A scene nests a few levels (objects, a mesh's arrays): far deeper is refused before parsing,
+  // whose trees and error lines would take memory in proportion to the depth and more.
+  constexpr int kMaxNesting = 64;
+  if (const JsonNesting n = jsonNesting(text); n.depth > kMaxNesting)
+    throw SceneError(path + ":" + std::to_string(n.line) + ": error: arrays and objects nest more than " +
+                     std::to_string(kMaxNesting) + " deep here (a scene needs a few levels)");
   json doc;
   try {
     doc = json::parse(text);
