@@ -4,6 +4,8 @@
 #include "raster/worker_pool.h"
 
 #include <cstdlib>
+#include <new>
+#include <system_error>
 #include <utility>
 
 namespace pf {
@@ -20,7 +22,14 @@ int defaultThreadCount() {
 
 WorkerPool::WorkerPool(int threads) {
   if (threads < 1) threads = 1;
-  for (int i = 1; i < threads; ++i) workers_.emplace_back([this, i] { workerLoop(i); });
+  // The system may refuse threads (a process or memory limit: std::system_error): the pool then
+  // runs with those it could start -- the frames are the same with any number of threads.
+  try {
+    workers_.reserve(static_cast<size_t>(threads - 1));
+    for (int i = 1; i < threads; ++i) workers_.emplace_back([this, i] { workerLoop(i); });
+  } catch (const std::system_error&) {
+  } catch (const std::bad_alloc&) {
+  }
 }
 
 WorkerPool::~WorkerPool() {

@@ -14,7 +14,8 @@ namespace pf {
 
 class WorkerPool {
  public:
-  explicit WorkerPool(int threads);  // total threads including the caller (>= 1)
+  // `threads` in all, the caller's included (>= 1); fewer where the system cannot start them all.
+  explicit WorkerPool(int threads);
   ~WorkerPool();
   WorkerPool(const WorkerPool&) = delete;
   WorkerPool& operator=(const WorkerPool&) = delete;

@@ -2,6 +2,7 @@
 // Built-in primitives are compiled here from their embedded source (primitives/*.pfl).
 #include <cstdio>
 #include <new>
+#include <system_error>
 #include <vector>
 
 #include "api/src/context_state.h"
@@ -121,6 +122,8 @@ PFcontext pfCreateContextAttribs(const int* attribs) {
     }
     return ctx;
   } catch (const std::bad_alloc&) {
+    return nullptr;
+  } catch (const std::system_error&) {  // a resource the system refuses (the pool itself copes with threads)
     return nullptr;
   }
 }
