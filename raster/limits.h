@@ -12,8 +12,9 @@ constexpr int kTileSize = 64;          // screen tiles: the unit of binning and 
 constexpr int kBlockSize = 8;          // pixel blocks: the unit of SIMD execution
 constexpr int kLanes = kBlockSize * kBlockSize;  // lanes of a wide register
 constexpr int kMaxFramebufferSize = 8192;
-// Instances one submission may make by calling primitives (a strip of 2M triangles fits);
-// past it the calls are dropped and reported as a runaway (GL_TOO_MANY_ITERATIONS_EXT).
+// Instances one submission may make by calling primitives, besides four a sequence point (a
+// strip's or polygon's triangles); past it the calls are dropped and reported as a runaway
+// (GL_TOO_MANY_ITERATIONS_EXT).
 constexpr uint64_t kMaxCallsPerSubmission = 1u << 21;
 // Uniform-record words a scene holds before a submission flushes it (offsets are 32-bit).
 constexpr size_t kMaxRecordWords = size_t(1) << 30;

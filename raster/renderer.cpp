@@ -137,6 +137,7 @@ bool Renderer::beginSubmission(const ChannelLayout& layout, const RasterState& s
     return beginSubmission(layout, state, shade, per_pixel_lighting);
   }
   calls_this_submission_ = 0;
+  calls_budget_ = kMaxCallsPerSubmission;
   return true;
 }
 
@@ -165,7 +166,11 @@ bool Renderer::submit(const CompiledPrimitive& prim, const uint32_t* params, con
                       const LightingState* per_pixel_lighting) {
   if (!beginSubmission(layout, state, shade, per_pixel_lighting)) return false;
   runShared(layout, shared_params);
-  return submitAt(prim, params, vertex_channels, sequence_points < 0 ? prim.sequence_points : sequence_points, 0);
+  const int points = sequence_points < 0 ? prim.sequence_points : sequence_points;
+  // A strip or polygon calls `triangles` once a vertex, each quad twice: calls in proportion to
+  // the vertices are the input's, never a runaway's.
+  calls_budget_ = kMaxCallsPerSubmission + 4 * static_cast<uint64_t>(std::max(points, 0));
+  return submitAt(prim, params, vertex_channels, points, 0);
 }
 
 void Renderer::submitInstances(const CompiledPrimitive& prim, int instances, const uint32_t* params,
@@ -256,7 +261,7 @@ void Renderer::submitCall(const CompiledPrimitive& callee, const uint32_t* param
                           int depth) {
   // Calls inside setup loops multiply: past the budget, the rest of the submission's calls are
   // dropped and reported like a runaway loop (never a hang, never memory without end).
-  if (++calls_this_submission_ > kMaxCallsPerSubmission || scene_.records.size() > kMaxRecordWords) {
+  if (++calls_this_submission_ > calls_budget_ || scene_.records.size() > kMaxRecordWords) {
     ++stats_.iteration_cap_instances;
     ++cap_report_.instances;
     cap_report_.primitive = callee.name;

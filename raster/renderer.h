@@ -175,6 +175,7 @@ class Renderer : private SubInstanceSink {
   uint64_t flushes_ = 0;
   uint32_t shared_offset_ = kNoShared;  // the shared records of the submission in progress
   uint64_t calls_this_submission_ = 0;  // instances its primitive calls made (submitCall)
+  uint64_t calls_budget_ = 0;           // and how many it may make before they are a runaway's
   std::vector<std::unique_ptr<WorkerScratch>> scratch_;
   uint8_t* color_ = nullptr;
   float* depth_ = nullptr;

@@ -195,3 +195,32 @@ TEST(Extensions, LongStripsAreNoRunaway) {
   EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
   EXPECT_NE(c.px[(8 * 16 + 15) * 4 + 3], 0) << "the strip's far end (past 50 triangles) is drawn";
 }
+
+// Calls in proportion to the vertices are no runaway either: a strip, a fan and a polygon of
+// more than 2^21 + 2 vertices (where calls of `triangles` once stopped, reported as a runaway
+// loop) draw their last triangles. All but the last three vertices sit at one point.
+TEST(Extensions, StripsFansAndPolygonsPast2To21VerticesAreDrawnWhole) {
+  for (GLenum mode : {GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_POLYGON}) {
+    SCOPED_TRACE(mode);
+    Ctx c;
+    pfglClearColor(0, 0, 0, 0);
+    pfglClear(GL_COLOR_BUFFER_BIT);
+    const int n = (1 << 21) + 100;
+    pfglBegin(mode);
+    if (mode == GL_TRIANGLE_STRIP) {
+      for (int i = 0; i < n - 3; ++i) pfglVertex2f(0.5f, 0.5f);
+      pfglVertex2f(4, 4);
+      pfglVertex2f(12, 4);
+      pfglVertex2f(8, 12);
+    } else {  // the fan's centre and the polygon's first vertex are shared by every triangle
+      pfglVertex2f(4, 4);
+      for (int i = 1; i < n - 2; ++i) pfglVertex2f(4, 4);
+      pfglVertex2f(12, 4);
+      pfglVertex2f(8, 12);
+    }
+    pfglEnd();
+    pfglFinish();
+    EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    EXPECT_NE(c.px[(7 * 16 + 8) * 4 + 3], 0) << "the last triangle is drawn";
+  }
+}
