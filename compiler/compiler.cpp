@@ -2,6 +2,7 @@
 #include "compiler/compiler.h"
 
 #include <algorithm>
+#include <cctype>
 #include <set>
 
 #include "compiler/ast_print.h"
@@ -57,6 +58,24 @@ const StandardLibraryIndex& standardLibraryIndex() {
     return out;
   }();
   return index;
+}
+// Every identifier-shaped word of a source text, comments and all.
+std::set<std::string> identifiersIn(const std::string& text) {
+  std::set<std::string> out;
+  auto starts = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; };
+  auto continues = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for (size_t i = 0; i < text.size();) {
+    if (!starts(text[i])) {
+      // (a word never starts inside a number or another word)
+      while (i < text.size() && continues(text[i])) ++i;
+      if (i < text.size() && !starts(text[i])) ++i;
+      continue;
+    }
+    const size_t from = i;
+    while (i < text.size() && continues(text[i])) ++i;
+    out.insert(text.substr(from, i - from));
+  }
+  return out;
 }
 }  // namespace
 
@@ -116,8 +135,13 @@ bool compileSource(const std::string& filename, const std::string& text, Compile
   std::map<std::string, PrimitiveSignature> signatures;
   PrimitiveTable primitives;  // what the primitive being compiled may call
   if (callable) {
-    primitives = *callable;
-    for (const auto& [name, p] : *callable) signatures[name] = p->signature;
+    // Only those the source names (any identifier: a superset of its calls). Copying every one
+    // registered would make each compilation in a context slower than the one before.
+    for (const std::string& name : identifiersIn(text))
+      if (auto it = callable->find(name); it != callable->end()) {
+        primitives.insert(*it);
+        signatures[name] = it->second->signature;
+      }
   }
   Program program;
   if (!analyzeSource(filename, text, log, program, signatures, emit, listing,

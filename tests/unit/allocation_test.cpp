@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <new>
+#include <string>
 #include <vector>
 
 #include "compiler/field/field_tape.h"
@@ -318,5 +319,39 @@ TEST(OutOfMemory, FailedAllocationsAreGlOutOfMemoryAndTheContextGoesOn) {
 
   pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
   pfDestroyContext(fresh);
+  pfDestroyContext(ctx);
+}
+
+// Registering a primitive costs the same however many a context holds (each of 10,000 separate
+// pfglCompilePrimitivesEXT calls was once slower than the last: every compile copied the whole
+// table of callable primitives). Counted in heap allocations of one compile, after 50 and after
+// 2,000 primitives.
+TEST(Allocation, CompilingAPrimitiveCostsTheSameWithManyRegistered) {
+  std::vector<unsigned char> px(16 * 16 * 4);
+  const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, 0};
+  PFcontext ctx = pfCreateContextAttribs(attribs);
+  ASSERT_NE(ctx, nullptr);
+  pfMakeCurrent(ctx, px.data(), GL_UNSIGNED_BYTE, 16, 16);
+  auto source = [](int i) {
+    return "primitive user" + std::to_string(i) + "(varying float X, Y; inout varying float Z) { Z = 0.5; }\n";
+  };
+  long counts[2];
+  int registered = 0;
+  for (int k = 0; k < 2; ++k) {
+    for (; registered < (k == 0 ? 50 : 2000); ++registered)
+      ASSERT_NE(pfglCompilePrimitivesEXT(source(registered).c_str()), 0u);
+    // The same length of name each time, so the strings allocate alike.
+    const std::string probe = "primitive probe" + std::to_string(1000 + k) +
+                              "(varying float X, Y; inout varying float Z) { Z = 0.5; }\n";
+    g_allocations = 0;
+    g_counting = true;
+    const GLuint module = pfglCompilePrimitivesEXT(probe.c_str());
+    g_counting = false;
+    ASSERT_NE(module, 0u);
+    counts[k] = g_allocations.load();
+  }
+  // (The registry's own containers may grow by one step between the two.)
+  EXPECT_LE(counts[1], counts[0] + 4) << "after 50: " << counts[0] << " allocations, after 2000: " << counts[1];
+  pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
   pfDestroyContext(ctx);
 }
