@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
+#include <limits>
 #include <cstdlib>
 
 namespace pf {
@@ -592,6 +594,9 @@ class Parser {
       case Tok::FloatLit: {
         auto e = makeExpr(ExprKind::FloatLit, tk.loc);
         e->number = std::strtod(tk.text.c_str(), nullptr);
+        // Floats are 32-bit: a literal past the largest is a mistake, not infinity.
+        if (!(std::fabs(e->number) <= static_cast<double>(std::numeric_limits<float>::max())))
+          error(tk.loc, "floating-point literal '" + tk.text + "' is out of range (the largest float is 3.4e38)");
         take();
         return e;
       }
