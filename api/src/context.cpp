@@ -59,6 +59,8 @@ PFcontextRec* contextOutsideBegin() {
 void PrimitiveRegistry::addInterpolator(std::shared_ptr<const CompiledPrimitive> p) {
   auto known = interpolator_ids.find(p->name);
   if (known == interpolator_ids.end()) {
+    // Ids stop below the primitive modes' range: past it, the table is full (GL_OUT_OF_MEMORY).
+    if (interpolators.size() >= kMaxInterpolators) throw std::bad_alloc();
     interpolator_ids[p->name] = GL_FIRST_INTERPOLATOR_EXT + static_cast<GLuint>(interpolators.size());
     interpolators.push_back(std::move(p));
     return;
@@ -70,6 +72,8 @@ void PrimitiveRegistry::addInterpolator(std::shared_ptr<const CompiledPrimitive>
 
 void PrimitiveRegistry::add(std::shared_ptr<const CompiledPrimitive> p, GLenum mode) {
   auto known = mode_of.find(p->name);
+  // Modes stop below the parameter names' range: past it, the table is full (GL_OUT_OF_MEMORY).
+  if (mode == kAnyMode && known == mode_of.end() && next_mode >= GL_FIRST_PARAM_NAME_EXT) throw std::bad_alloc();
   if (mode == kAnyMode) mode = known != mode_of.end() ? known->second : next_mode++;
   if (known != mode_of.end()) {
     replaced.push_back(by_name[p->name]);
@@ -151,6 +155,8 @@ GLboolean pfMakeCurrent(PFcontext ctx, void* buffer, GLenum type, GLsizei width,
     ctx->renderer.setTarget(static_cast<uint8_t*>(buffer), ctx->depth_bits > 0 ? depth.data() : nullptr, width, height);
   } catch (const std::bad_alloc&) {
     ctx->setError(GL_OUT_OF_MEMORY);
+    std::fprintf(stderr, "primflow: pfMakeCurrent: out of memory for a %dx%d drawable: the context keeps its previous one\n",
+                 static_cast<int>(width), static_cast<int>(height));
     return GL_FALSE;
   }
   ctx->depth.swap(depth);  // the storage moves with the swap: the renderer's pointer stays valid

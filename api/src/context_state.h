@@ -83,6 +83,7 @@ struct PrimitiveRegistry {
 
   // Shared interpolators: by id (GL_FIRST_INTERPOLATOR_EXT + index); a recompiled name keeps
   // its id and gets the new program (the old one stays alive in `replaced`).
+  static constexpr size_t kMaxInterpolators = GL_FIRST_PRIMITIVE_MODE_EXT - GL_FIRST_INTERPOLATOR_EXT;
   std::map<std::string, GLuint> interpolator_ids;
   std::vector<std::shared_ptr<const CompiledPrimitive>> interpolators;
   void addInterpolator(std::shared_ptr<const CompiledPrimitive> p);
@@ -150,7 +151,10 @@ struct PFcontextRec {
   std::vector<std::string> param_names;
   std::vector<pf::ParamValue> current_params;
   GLuint vertex_param = 0, normal_param = 0, texcoord_param = 0, color_param = 0;
-  GLuint paramId(const std::string& name);  // interns the name
+  // Interns the name. Ids end at 0x3FFFF, primflow's range (docs/api.md): past 32,768 names the
+  // table is full and it throws std::bad_alloc (GL_OUT_OF_MEMORY where a command catches it).
+  static constexpr size_t kMaxParamNames = 0x40000 - GL_FIRST_PARAM_NAME_EXT;
+  GLuint paramId(const std::string& name);
   // Sets a parameter's current value (`count` values; "color" also sets current_color).
   void setParamValue(GLuint id, int count, const double* v);
   bool isParam(GLuint id) const { return id >= kParamNameBase && id - kParamNameBase < current_params.size(); }

@@ -31,7 +31,8 @@ pf::DepthFunc toDepthFunc(GLenum f) {
   }
 }
 
-float clamp01(double v) { return v < 0 ? 0.0f : v > 1 ? 1.0f : static_cast<float>(v); }
+// GL's clamp to [0, 1], NaN to 0 as Mesa stores it (glClearColor, glClearDepth, glDepthRange).
+float clamp01(double v) { return v > 0 ? (v < 1 ? static_cast<float>(v) : 1.0f) : 0.0f; }
 
 }  // namespace
 

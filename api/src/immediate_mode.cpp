@@ -374,6 +374,7 @@ void PFcontextRec::setParamValue(GLuint id, int count, const double* v) {
 GLuint PFcontextRec::paramId(const std::string& name) {
   auto it = param_ids.find(name);
   if (it != param_ids.end()) return it->second;
+  if (param_names.size() >= kMaxParamNames) throw std::bad_alloc();
   param_names.push_back(name);
   current_params.emplace_back();
   GLuint id = kParamNameBase + static_cast<GLuint>(param_names.size()) - 1;
@@ -532,7 +533,12 @@ GLuint pfglGetParamNameEXT(const GLchar* name) {
     ctx->setError(GL_INVALID_VALUE);
     return 0;
   }
-  return ctx->paramId(name);
+  try {
+    return ctx->paramId(name);
+  } catch (const std::bad_alloc&) {  // out of memory, or all 32,768 ids taken
+    ctx->setError(GL_OUT_OF_MEMORY);
+    return 0;
+  }
 }
 
 void pfglRastParamfEXT(GLuint name, GLfloat v) {

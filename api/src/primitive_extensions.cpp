@@ -67,6 +67,8 @@ GLuint pfglCompilePrimitivesEXT(const GLchar* source) {
     ctx->primitives.module_logs.push_back(log.format());
   } catch (const std::bad_alloc&) {  // (primitives registered before it stay usable)
     ctx->setError(GL_OUT_OF_MEMORY);
+    ctx->primitives.failed_log = name + ": error: out of memory registering its units, or the context's table of "
+                                        "primitive modes (26,624) or shared interpolators (1,024) is full";
     return 0;
   }
   return static_cast<GLuint>(ctx->primitives.module_logs.size());
