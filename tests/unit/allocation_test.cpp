@@ -309,8 +309,11 @@ TEST(OutOfMemory, FailedAllocationsAreGlOutOfMemoryAndTheContextGoesOn) {
   // A framebuffer past memory: pfMakeCurrent fails, the context keeps its drawable.
   std::vector<unsigned char> big(16);
   g_fail_from_bytes = 64 * 1024;
+  testing::internal::CaptureStderr();
   EXPECT_FALSE(pfMakeCurrent(fresh, big.data(), GL_UNSIGNED_BYTE, 8192, 8192));
   g_fail_from_bytes = 0;
+  EXPECT_EQ(testing::internal::GetCapturedStderr(),
+            "primflow: pfMakeCurrent: out of memory for a 8192x8192 drawable: the context keeps its previous one\n");
   EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_OUT_OF_MEMORY));
   pfglClear(GL_COLOR_BUFFER_BIT);
   drawRedTriangle();
