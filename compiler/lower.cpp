@@ -9,6 +9,7 @@
 #include "compiler/lower.h"
 
 #include "compiler/lowerer.h"
+#include "compiler/stack_guard.h"
 
 #include <map>
 
@@ -266,6 +267,7 @@ Lowerer::NestingGuard::NestingGuard(Lowerer& lowerer, SourceLoc loc) : l(lowerer
   if (++l.nesting_ > kMaxLoweredNesting)
     l.refuse(loc, "nesting too deep once functions are inlined (more than " + std::to_string(kMaxLoweredNesting) +
                       " levels)");
+  if (stackNearlyExhausted()) l.refuse(loc, "nesting too deep for this thread's stack once functions are inlined");
 }
 
 void Lowerer::refuse(SourceLoc loc, const std::string& what) {

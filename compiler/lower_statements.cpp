@@ -364,6 +364,8 @@ Binding Lowerer::inlineFunction(const Unit& fn, const std::vector<Binding>& args
     return result;
   }
   inlining_.push_back(&fn);
+  if (inlining_.size() > kMaxInlineDepth)
+    refuse(call_loc, "calls nest more than " + std::to_string(kMaxInlineDepth) + " deep once functions are inlined");
   struct Leave {
     std::vector<const Unit*>& v;
     ~Leave() { v.pop_back(); }

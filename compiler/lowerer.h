@@ -31,6 +31,8 @@ constexpr int kSizedInterpData = -2;  // Binding::sized_param of `interpolator_d
 // How deep lowering may recurse (statements and expressions, through inlined calls): the
 // parser's limit (256) bounds one unit, this the units inlined into each other.
 constexpr int kMaxLoweredNesting = 384;
+// How deep calls of functions may nest once inlined (each costs lowering several frames).
+constexpr size_t kMaxInlineDepth = 64;
 // How many expressions one unit may lower, its inlined calls' included.
 constexpr uint64_t kMaxLoweredExpressions = uint64_t{1} << 20;
 

@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
-#include <limits>
 #include <cstdlib>
+#include <limits>
+
+#include "compiler/stack_guard.h"
 
 namespace pf {
 namespace {
@@ -129,9 +131,11 @@ class Parser {
   struct DepthGuard {
     Parser& p;
     DepthGuard(Parser& parser, SourceLoc loc) : p(parser) {
-      if (++p.depth_ > kMaxDepth) {
+      const bool too_deep = ++p.depth_ > kMaxDepth;
+      if (too_deep || stackNearlyExhausted()) {
         p.depth_ = 0;
-        p.error(loc, "nesting too deep (more than " + std::to_string(kMaxDepth) + " levels)");
+        p.error(loc, too_deep ? "nesting too deep (more than " + std::to_string(kMaxDepth) + " levels)"
+                              : std::string("nesting too deep for this thread's stack"));
         throw CompileAbort{};
       }
     }

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "compiler/field/hyperfun_library.h"
+#include "compiler/stack_guard.h"
 
 namespace pf::field::hyperfun {
 namespace {
@@ -66,6 +67,7 @@ class Parser {
     Nested(Parser& parser, const Token& at) : p(parser) {
       if (++p.nesting_ > kMaxNesting)
         p.fail(at, "nested more than " + std::to_string(kMaxNesting) + " levels deep (split it with variables)");
+      if (stackNearlyExhausted()) p.fail(at, "nested too deep for this thread's stack (split it with variables)");
     }
     ~Nested() { --p.nesting_; }
   };
