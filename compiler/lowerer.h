@@ -34,7 +34,7 @@ constexpr int kMaxLoweredNesting = 384;
 // How deep calls of functions may nest once inlined (each costs lowering several frames).
 constexpr size_t kMaxInlineDepth = 64;
 // How many expressions one unit may lower, its inlined calls' included.
-constexpr uint64_t kMaxLoweredExpressions = uint64_t{1} << 20;
+constexpr uint64_t kMaxLoweredExpressions = uint64_t{1} << 18;
 
 // Thrown by Lowerer::refuse, after its error, to abandon the unit.
 struct LoweringAbort {};

@@ -267,8 +267,25 @@ PrimitiveSignature signatureOf(const Unit& u) {
   return sig;
 }
 
+namespace {
+bool analyzeAll(Program& program, DiagnosticLog& log, const std::map<std::string, PrimitiveSignature>& callable,
+                const std::set<std::string>& interpolators);
+}  // namespace
+
 bool analyze(Program& program, DiagnosticLog& log, const std::map<std::string, PrimitiveSignature>& callable,
              const std::set<std::string>& interpolators) {
+  try {
+    return analyzeAll(program, log, callable, interpolators);
+  } catch (const CompileAbort&) {  // the thread's stack nearly used up (its error is logged)
+    if (!log.hasErrors()) log.error({}, "nesting too deep for this thread's stack");
+    return false;
+  }
+}
+
+namespace {
+
+bool analyzeAll(Program& program, DiagnosticLog& log, const std::map<std::string, PrimitiveSignature>& callable,
+                const std::set<std::string>& interpolators) {
   FunctionTable functions;
   functions.primitives = callable;
   functions.interpolators = interpolators;
@@ -311,4 +328,5 @@ bool analyze(Program& program, DiagnosticLog& log, const std::map<std::string, P
   return !log.hasErrors();
 }
 
+}  // namespace
 }  // namespace pf

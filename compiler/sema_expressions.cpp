@@ -4,6 +4,7 @@
 // primitives, whose calls must be uniform statements.
 #include "compiler/analyzer.h"
 #include "compiler/builtins.h"
+#include "compiler/stack_guard.h"
 
 #include <string>
 
@@ -39,6 +40,10 @@ void fixedAsFloat(ExprPtr& e) {
 }
 
 void Analyzer::expr(Expr& e) {
+  if (stackNearlyExhausted()) {
+    err(e.loc, "nesting too deep for this thread's stack");
+    throw CompileAbort{};  // (analyze catches it)
+  }
   e.type = Type::of(BaseType::Void);
   e.varying = false;
   switch (e.kind) {

@@ -3,6 +3,7 @@
 // and assignments, where values flow into variables (varying inference, and the errors of a
 // uniform variable receiving a varying value); and whyOf, which explains why a value is varying.
 #include "compiler/analyzer.h"
+#include "compiler/stack_guard.h"
 
 #include <string>
 
@@ -19,6 +20,10 @@ void Analyzer::scoped(std::vector<StmtPtr>& body) {
 }
 
 void Analyzer::statement(Stmt& s) {
+  if (stackNearlyExhausted()) {
+    err(s.loc, "nesting too deep for this thread's stack");
+    throw CompileAbort{};  // (analyze catches it)
+  }
   switch (s.kind) {
     case StmtKind::Block:
       if (s.op == "decls") statements(s.body);
