@@ -17,6 +17,7 @@
 #include "compiler/field/hyperfun_lexer.h"
 #include "compiler/field/hyperfun_library.h"
 #include "compiler/field/hyperfun_parser.h"
+#include "compiler/stack_guard.h"
 
 namespace pf::field {
 namespace hyperfun {
@@ -190,6 +191,7 @@ class Compiler {
   // EPS), and/or/not read their operands' truth. Known operands fold now, in double; the rest
   // become the tape's Less/LessEq (0 or 1 per point) combined by min, max and 1 - v.
   Truth conditionTruth(Frame& f, const Expr& e) {
+    if (stackNearlyExhausted()) tooDeepForTheStack(e);
     TapeAlgebra& m = alg_;
     if (e.kind == Expr::Kind::Unary && e.op == Op::Not) {
       const Truth a = conditionTruth(f, e.args[0]);
@@ -294,6 +296,7 @@ class Compiler {
   // built for an error, is in a function of its own (never inlined into it) -- under
   // AddressSanitizer a std::string temporary costs a padded stack slot per level.
   Real real(Frame& f, const Expr& e) {
+    if (stackNearlyExhausted()) tooDeepForTheStack(e);
     switch (e.kind) {
       case Expr::Kind::Number:
         return Real::known(e.number);
@@ -312,6 +315,11 @@ class Compiler {
         return call(f, e);
     }
     failUnexpected(e, "unexpected expression");
+  }
+
+  // (A thread with a small stack: the parser's limit assumes 1 MB.)
+  [[noreturn, gnu::noinline]] void tooDeepForTheStack(const Expr& e) {
+    fail(e, "nested too deep for this thread's stack (split it with variables)");
   }
 
   [[gnu::noinline]] Real element(Frame& f, const Expr& e) {

@@ -1,6 +1,9 @@
 // libFuzzer target for the primitive language: every input is compiled as source, listed at
 // every stage, and -- when it compiles -- each of its primitives is run once (setup, and the
-// pixel program over one 8x8 block). Nothing may crash, hang, or trip ASan/UBSan.
+// pixel program over one 8x8 block). The same bytes also choose a generated source of a shape
+// that breaks compilers (adversarial.h: long chains, deep nesting, call chains, inlining that
+// fans out, extreme literals), compiled once at a stage they choose. Every compile runs on a
+// 1 MB stack. Nothing may crash, hang (-timeout), or trip ASan/UBSan.
 //
 // Build and run locally (clang, libclang-rt-14-dev):
 //   cmake -S . -B build-fuzz -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
@@ -13,26 +16,22 @@
 #include <string>
 #include <vector>
 
+#include "adversarial.h"
 #include "compiler/compiler.h"
 #include "raster/pixel_executor.h"
 #include "raster/setup_executor.h"
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  if (size > 64 * 1024) return 0;
-  const std::string text(reinterpret_cast<const char*>(data), size);
-  for (pf::EmitStage stage : {pf::EmitStage::Ast, pf::EmitStage::Ir, pf::EmitStage::Setup,
-                              pf::EmitStage::Pixel, pf::EmitStage::Explain}) {
-    pf::CompiledModule m;
-    pf::DiagnosticLog log;
-    std::string listing;
-    pf::compileSource("fuzz.pfl", text, m, log, stage, &listing);
-    (void)log.format();
-  }
+namespace {
+
+// Compiles `text` (listing `stage`); compiled without a listing, runs each primitive once, with
+// small parameter values taken from `data`.
+void compileAndRun(const std::string& text, pf::EmitStage stage, const uint8_t* data, size_t size) {
   pf::CompiledModule module;
   pf::DiagnosticLog log;
-  if (!pf::compileSource("fuzz.pfl", text, module, log)) return 0;
-
-  // Run each primitive once, with small parameter values taken from the input.
+  std::string listing;
+  const bool ok = pf::compileSource("fuzz.pfl", text, module, log, stage, &listing);
+  (void)log.format();
+  if (!ok || stage != pf::EmitStage::None) return;
   const pf::ChannelLayout layout = pf::ChannelLayout::ofKind(4, pf::InterpKind::PerspectiveLinear);
   pf::RasterState state;
   state.vp_scale_x = state.vp_offset_x = state.vp_scale_y = state.vp_offset_y = 4.0f;
@@ -42,7 +41,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   for (const auto& prim : module.primitives) {
     std::vector<uint32_t> params(static_cast<size_t>(prim->param_floats));
     for (size_t i = 0; i < params.size(); ++i) {
-      float v = static_cast<float>(data[i % size]) / 16.0f - 4.0f;
+      float v = size ? static_cast<float>(data[i % size]) / 16.0f - 4.0f : 0.5f;
       params[i] = std::bit_cast<uint32_t>(v);
     }
     std::vector<float> channels(static_cast<size_t>(prim->sequence_points) * 4, 0.5f);
@@ -62,5 +61,22 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     pf::PixelExecutor pixels;
     pixels.runBlock(*prim, record.data(), layout, state, 1, 0, 0, ~0ull, target);
   }
+}
+
+constexpr pf::EmitStage kStages[] = {pf::EmitStage::None, pf::EmitStage::Ast, pf::EmitStage::Ir,
+                                     pf::EmitStage::Setup, pf::EmitStage::Pixel, pf::EmitStage::Explain};
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  pf::fuzz::onSmallStack([&] {
+    if (size <= 64 * 1024) {
+      const std::string text(reinterpret_cast<const char*>(data), size);
+      for (pf::EmitStage stage : kStages) compileAndRun(text, stage, data, size);
+    }
+    FuzzedDataProvider in(data, size);
+    const pf::EmitStage stage = kStages[in.ConsumeIntegralInRange<size_t>(0, 5)];
+    compileAndRun(pf::fuzz::languageSource(in), stage, data, size);
+  });
   return 0;
 }

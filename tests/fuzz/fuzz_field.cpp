@@ -4,6 +4,9 @@
 // evaluated as floats, intervals (with tape simplification), gradients and ray polynomials at a
 // few points and boxes, and one 8x8 block of rays is cast by every method. Nothing may crash,
 // hang, or trip ASan/UBSan: a bad model is a diagnostic with file:line:col.
+// The same bytes also choose a generated field (adversarial.h: NaN, infinite, very long) and a
+// way to draw it through the API -- method, steps from 0 to 10^4 and NaN, an iteration cap from
+// 1 -- into a small context, glFinish included (where rays stopped at the cap once crashed it).
 //
 // Build and run locally: as fuzz_compile.cpp says, with --target fuzz_field and the corpus
 // tests/fuzz/corpus/field.
@@ -12,6 +15,12 @@
 #include <string>
 #include <vector>
 
+#include <primflow/gl.h>
+
+#include <cmath>
+#include <limits>
+
+#include "adversarial.h"
 #include "compiler/field/field_source.h"
 #include "raster/field/float_evaluator.h"
 #include "raster/field/gradient_evaluator.h"
@@ -19,7 +28,60 @@
 #include "raster/field/ray_caster.h"
 #include "raster/field/ray_polynomial.h"
 
+namespace {
+
+// Draws `source` through the API as drawModel does (tools/model): one instance of `implicit`
+// over the box [-1, 1]^3, seen from +z, in a 16x16 context with the iteration cap `cap`.
+void drawThroughTheApi(int format, const std::string& source, int method, float steps, int cap) {
+  const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_ITERATION_CAP, cap, PF_THREADS, 1, 0};
+  PFcontext ctx = pfCreateContextAttribs(attribs);
+  if (!ctx) return;
+  std::vector<unsigned char> px(16 * 16 * 4);
+  if (pfMakeCurrent(ctx, px.data(), GL_UNSIGNED_BYTE, 16, 16)) {
+    const GLenum formats[] = {GL_FIELD_FIDGET_EXT, GL_FIELD_HYPERFUN_EXT, GL_FIELD_LANGUAGE_EXT};
+    const GLuint field = pfglCompileFieldEXT(formats[format], "fuzz", source.c_str(), 0.0f);
+    if (field != 0) {
+      pfglEnable(GL_DEPTH_TEST);
+      pfglMatrixMode(GL_PROJECTION);
+      pfglLoadIdentity();
+      pfglFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 10.0);
+      pfglMatrixMode(GL_MODELVIEW);
+      pfglLoadIdentity();
+      pfglTranslatef(0.0f, 0.0f, -4.0f);
+      pfglBegin(pfglGetPrimitiveEXT("implicit"));
+      pfglRastParamfEXT(pfglGetParamNameEXT("field"), static_cast<GLfloat>(field));
+      pfglRastParam3fEXT(pfglGetParamNameEXT("box_min"), -1, -1, -1);
+      pfglRastParam3fEXT(pfglGetParamNameEXT("box_max"), 1, 1, 1);
+      pfglRastParamfEXT(pfglGetParamNameEXT("method"), static_cast<GLfloat>(method));
+      pfglRastParamfEXT(pfglGetParamNameEXT("steps"), steps);
+      pfglSequencePointEXT();
+      pfglEnd();
+      pfglFinish();
+    }
+    (void)pfglGetError();
+    pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
+  }
+  pfDestroyContext(ctx);
+}
+
+void generatedFieldDrawn(FuzzedDataProvider& in) {
+  int format = 0;
+  const std::string source = pf::fuzz::fieldSource(in, format);
+  const int method = in.ConsumeIntegralInRange<int>(-1, pf::field::kRootMethodCount);
+  static const float kSteps[] = {0.0f, 1.0f, 16.0f, 10000.0f, std::numeric_limits<float>::quiet_NaN(),
+                                 std::numeric_limits<float>::infinity(), -5.0f, 1e30f};
+  const float steps = kSteps[in.ConsumeIntegralInRange<size_t>(0, 7)];
+  const int cap = in.ConsumeBool() ? in.ConsumeIntegralInRange<int>(1, 64) : 0;  // 0: the default
+  drawThroughTheApi(format, source, method, steps, cap);
+}
+
+}  // namespace
+
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  {
+    FuzzedDataProvider in(data, size);
+    pf::fuzz::onSmallStack([&] { generatedFieldDrawn(in); });
+  }
   if (size < 1 || size > 4 * 1024) return 0;
   using pf::field::FieldFormat;
   const FieldFormat format = data[0] % 3 == 0 ? FieldFormat::Fidget : data[0] % 3 == 1 ? FieldFormat::HyperFun : FieldFormat::Language;

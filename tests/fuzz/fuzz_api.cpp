@@ -1,0 +1,155 @@
+// libFuzzer target for sequences of API calls (docs/reliability.md): the bytes are a program of
+// GL-1.x and extension calls -- glBegin of every mode (and of no mode), vertices and values that
+// are NaN, infinite or huge, matrix stacks pushed and popped past their ends, degenerate
+// projections, bad enums and names, sequence points, compiles, clears and finishes -- run on a
+// small context. Nothing may crash, hang or trip ASan/UBSan, and GL's rule for commands between
+// glBegin and glEnd is checked: a glBegin whose only erring command is one GL does not allow
+// there leaves exactly GL_INVALID_OPERATION at glEnd (the check traps, which libFuzzer reports).
+//
+// Build and run locally: as fuzz_compile.cpp says, with --target fuzz_api and the corpus
+// tests/fuzz/corpus/api.
+#include <fuzzer/FuzzedDataProvider.h>
+#include <primflow/gl.h>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "adversarial.h"
+
+namespace {
+
+constexpr int kSize = 24;
+
+float aFloat(FuzzedDataProvider& in) {
+  switch (in.ConsumeIntegralInRange<int>(0, 7)) {
+    case 0: return std::numeric_limits<float>::quiet_NaN();
+    case 1: return std::numeric_limits<float>::infinity();
+    case 2: return -1e30f;
+    case 3: return 1e-30f;
+    default: return in.ConsumeFloatingPointInRange<float>(-3.0f, 3.0f);
+  }
+}
+
+GLenum aMode(FuzzedDataProvider& in) {
+  static const GLenum kModes[] = {GL_POINTS, GL_LINES, GL_LINE_STRIP, GL_LINE_LOOP, GL_TRIANGLES, GL_TRIANGLE_STRIP,
+                                  GL_TRIANGLE_FAN, GL_QUADS, GL_QUAD_STRIP, GL_POLYGON};
+  return kModes[in.ConsumeIntegralInRange<size_t>(0, 9)];
+}
+
+GLenum aCapability(FuzzedDataProvider& in) {
+  static const GLenum kCaps[] = {GL_DEPTH_TEST, GL_CULL_FACE, GL_LIGHTING, GL_LIGHT0, GL_LIGHT7, GL_NORMALIZE,
+                                 GL_COLOR_MATERIAL, GL_SCISSOR_TEST, GL_TEXTURE_2D, 0x1234};
+  return kCaps[in.ConsumeIntegralInRange<size_t>(0, 9)];
+}
+
+// A command GL forbids between glBegin and glEnd.
+void forbiddenInBegin(FuzzedDataProvider& in) {
+  switch (in.ConsumeIntegralInRange<int>(0, 5)) {
+    case 0: pfglEnable(GL_DEPTH_TEST); break;
+    case 1: pfglViewport(0, 0, kSize, kSize); break;
+    case 2: pfglClear(GL_COLOR_BUFFER_BIT); break;
+    case 3: pfglMatrixMode(GL_MODELVIEW); break;
+    case 4: pfglPushMatrix(); break;
+    default: pfglBegin(GL_TRIANGLES); break;
+  }
+}
+
+// One glBegin / glEnd of a GL mode; with `forbidden`, a command GL does not allow there.
+void oneBegin(FuzzedDataProvider& in, bool forbidden) {
+  // Out of any glBegin left open, the recorded drawing done (a flush at glEnd could raise an
+  // earlier primitive's error) and the flag clear: the check below sees this glBegin's only.
+  pfglEnd();
+  pfglFinish();
+  (void)pfglGetError();
+  pfglBegin(aMode(in));
+  const size_t n = in.ConsumeIntegralInRange<size_t>(0, 12);
+  const size_t bad_at = forbidden ? in.ConsumeIntegralInRange<size_t>(0, n) : n + 1;
+  for (size_t i = 0; i <= n; ++i) {
+    if (i == bad_at) forbiddenInBegin(in);
+    if (i == n) break;
+    switch (in.ConsumeIntegralInRange<int>(0, 3)) {
+      case 0: pfglColor4f(aFloat(in), aFloat(in), aFloat(in), aFloat(in)); break;
+      case 1: pfglNormal3f(aFloat(in), aFloat(in), aFloat(in)); break;
+      default: break;
+    }
+    pfglVertex3f(aFloat(in), aFloat(in), aFloat(in));
+  }
+  pfglEnd();
+  const GLenum err = pfglGetError();
+  if (err != static_cast<GLenum>(forbidden ? GL_INVALID_OPERATION : GL_NO_ERROR)) __builtin_trap();
+}
+
+void oneCall(FuzzedDataProvider& in) {
+  switch (in.ConsumeIntegralInRange<int>(0, 19)) {
+    case 0: oneBegin(in, in.ConsumeBool()); break;
+    case 1: pfglBegin(in.ConsumeIntegral<GLenum>()); break;  // any enum, a primitive's mode or none
+    case 2: pfglEnd(); break;
+    case 3: pfglVertex4f(aFloat(in), aFloat(in), aFloat(in), aFloat(in)); break;
+    case 4: (in.ConsumeBool() ? pfglEnable : pfglDisable)(aCapability(in)); break;
+    case 5: pfglMatrixMode(in.ConsumeBool() ? GL_PROJECTION : in.ConsumeBool() ? GL_MODELVIEW : 0x1234); break;
+    case 6: for (int k = in.ConsumeIntegralInRange<int>(0, 40); k > 0; --k) pfglPushMatrix(); break;
+    case 7: for (int k = in.ConsumeIntegralInRange<int>(0, 40); k > 0; --k) pfglPopMatrix(); break;
+    case 8: pfglRotatef(aFloat(in), aFloat(in), aFloat(in), aFloat(in)); break;
+    case 9: pfglScalef(aFloat(in), aFloat(in), aFloat(in)); break;
+    case 10:
+      pfglFrustum(aFloat(in), aFloat(in), aFloat(in), aFloat(in), aFloat(in), aFloat(in));
+      break;
+    case 11: pfglOrtho(aFloat(in), aFloat(in), aFloat(in), aFloat(in), aFloat(in), aFloat(in)); break;
+    case 12:
+      pfglViewport(in.ConsumeIntegralInRange<int>(-100, 100), in.ConsumeIntegralInRange<int>(-100, 100),
+                   in.ConsumeIntegralInRange<int>(-10, 100), in.ConsumeIntegralInRange<int>(-10, 100));
+      break;
+    case 13: pfglClearColor(aFloat(in), aFloat(in), aFloat(in), aFloat(in)); pfglClearDepth(aFloat(in)); break;
+    case 14: pfglClear(in.ConsumeIntegral<GLbitfield>()); break;
+    case 15: pfglDepthFunc(in.ConsumeIntegralInRange<GLenum>(GL_NEVER - 1, GL_ALWAYS + 1)); break;
+    case 16: {
+      const float v[4] = {aFloat(in), aFloat(in), aFloat(in), aFloat(in)};
+      pfglLightfv(GL_LIGHT0 + in.ConsumeIntegralInRange<GLenum>(0, 8), in.ConsumeIntegralInRange<GLenum>(0x1200, 0x1209), v);
+      pfglMaterialfv(GL_FRONT_AND_BACK, in.ConsumeIntegralInRange<GLenum>(0x1200, 0x1602), v);
+      break;
+    }
+    case 17: {  // a named parameter (a known one, a new one, or no id at all) and a sequence point
+      const GLuint name = in.ConsumeBool() ? pfglGetParamNameEXT(in.ConsumeBool() ? "radius" : "center")
+                                           : in.ConsumeIntegral<GLuint>();
+      pfglRastParamfEXT(name, aFloat(in));
+      pfglSequencePointEXT();
+      break;
+    }
+    case 18: {  // a sphere, of random parameters
+      pfglBegin(pfglGetPrimitiveEXT("sphere"));
+      pfglRastParam3fEXT(pfglGetParamNameEXT("center"), aFloat(in), aFloat(in), aFloat(in));
+      pfglRastParamfEXT(pfglGetParamNameEXT("radius"), aFloat(in));
+      pfglSequencePointEXT();
+      pfglEnd();
+      break;
+    }
+    default: pfglFinish(); break;
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  static std::vector<unsigned char> pixels(kSize * kSize * 4);
+  const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_THREADS, 2, PF_ITERATION_CAP, 256, 0};
+  PFcontext ctx = pfCreateContextAttribs(attribs);
+  if (!ctx) return 0;
+  // The calls on a 1 MB stack, an application's worker thread's (the current context is the
+  // calling thread's: made current there).
+  pf::fuzz::onSmallStack([&] {
+    if (pfMakeCurrent(ctx, pixels.data(), GL_UNSIGNED_BYTE, kSize, kSize)) {
+      FuzzedDataProvider in(data, size);
+      for (int calls = 0; calls < 400 && in.remaining_bytes() > 0; ++calls) oneCall(in);
+      pfglEnd();  // (a glBegin left open)
+      pfglFinish();
+      (void)pfglGetError();
+    }
+    pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
+  });
+  pfDestroyContext(ctx);
+  return 0;
+}
