@@ -212,6 +212,14 @@ void FieldRayCaster::castBlock(const CastRequest& r, int bx, int by, uint64_t ma
       const int steps = !variesAlongRays(r) ? 0
                         : r.param >= 1.0f   ? static_cast<int>(std::min(r.param, 1e6f))
                                             : kDefaultMarchSteps;
+      // More steps a ray than the iteration cap allows is a runaway, as a sphere-traced ray past
+      // the cap is: stopped before it starts, reported, drawn as a miss (1e6 steps of 256 rays
+      // took minutes).
+      if (static_cast<uint64_t>(steps) > r.iteration_cap) {
+        c.iteration_cap_lanes += std::popcount(lanes.pending);
+        lanes.pending = 0;
+        break;
+      }
       sampleAndBisect(fullEvaluator(*r.field), lanes, lanes.pending, from, to, steps, c);
       break;
     }

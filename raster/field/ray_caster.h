@@ -51,7 +51,7 @@ struct FieldCounters {
   uint64_t tape_ops_run = 0;          // ... and those its simplified tape kept
   uint64_t lipschitz_overshoots = 0;  // sphere tracing steps that showed the bound too small
   uint64_t analytic_fallbacks = 0;    // analytic lanes without a polynomial form
-  uint64_t iteration_cap_lanes = 0;   // lanes stopped by the iteration cap (sphere tracing)
+  uint64_t iteration_cap_lanes = 0;   // lanes stopped by the iteration cap (sphere tracing, march)
   void add(const FieldCounters& o);
 };
 
@@ -78,7 +78,7 @@ struct CastRequest {
   // march: the number of steps M (0: 64); sphere: the Lipschitz bound (0: the field's declared
   // one); analytic and interval: unused.
   float param = 0.0f;
-  unsigned iteration_cap = 65536;  // sphere tracing steps per lane
+  unsigned iteration_cap = 65536;  // steps per lane: sphere tracing stops there, a march of more is refused
 };
 
 class FieldRayCaster {
