@@ -5,14 +5,35 @@
 // fuzzer's bytes choose. Each shape is one that once crashed, hung or ate memory here.
 #pragma once
 
-#include <fuzzer/FuzzedDataProvider.h>
 #include <pthread.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <random>
 #include <string>
 
 namespace pf::fuzz {
+
+// The generators' choices, from a generator seeded with a hash of the whole input: any mutation
+// anywhere in it changes them (a FuzzedDataProvider reads its choices off the input's last few
+// bytes, which a corpus of text files and libFuzzer's mutations seldom vary).
+class Choices {
+ public:
+  Choices(const uint8_t* data, size_t size) {
+    uint64_t h = 1469598103934665603ull;  // FNV-1a
+    for (size_t i = 0; i < size; ++i) h = (h ^ data[i]) * 1099511628211ull;
+    rng_.seed(h);
+  }
+  template <typename T>
+  T ConsumeIntegralInRange(T lo, T hi) {
+    return std::uniform_int_distribution<T>(lo, hi)(rng_);
+  }
+  bool ConsumeBool() { return (rng_() & 1) != 0; }
+
+ private:
+  std::mt19937_64 rng_;
+};
 
 inline std::string repeat(const std::string& s, size_t n) {
   std::string out;
@@ -41,7 +62,7 @@ inline void onSmallStack(const std::function<void()>& work) {
 }
 
 // A size: mostly small, sometimes past the limits (256 levels, 384 inlined, 2^20 operations).
-inline size_t sizeOf(FuzzedDataProvider& in, size_t most) {
+inline size_t sizeOf(Choices& in, size_t most) {
   switch (in.ConsumeIntegralInRange<int>(0, 3)) {
     case 0: return in.ConsumeIntegralInRange<size_t>(0, 16);
     case 1: return in.ConsumeIntegralInRange<size_t>(200, 420);
@@ -49,7 +70,7 @@ inline size_t sizeOf(FuzzedDataProvider& in, size_t most) {
   }
 }
 
-inline const char* anOperator(FuzzedDataProvider& in) {
+inline const char* anOperator(Choices& in) {
   static const char* const kOps[] = {" + ", " - ", " * ", " / ", " < ", " && ", " == "};
   return kOps[in.ConsumeIntegralInRange<size_t>(0, 6)];
 }
@@ -59,7 +80,7 @@ inline std::string primitiveWith(const std::string& body, const std::string& fun
 }
 
 // A primitive-language source of one of the shapes that break compilers.
-inline std::string languageSource(FuzzedDataProvider& in) {
+inline std::string languageSource(Choices& in) {
   const int shape = in.ConsumeIntegralInRange<int>(0, 10);
   const bool early = in.ConsumeBool();
   const std::string leaf = in.ConsumeBool() ? "Z" : "k[0]";
@@ -134,12 +155,15 @@ inline std::string languageSource(FuzzedDataProvider& in) {
   }
 }
 
-// A JSON scene text nested deep (an error inside or not), or with extreme numbers and sizes.
-inline std::string sceneJson(FuzzedDataProvider& in) {
-  const int shape = in.ConsumeIntegralInRange<int>(0, 3);
+// A JSON scene text nested deep -- valid JSON whose scene is wrong (its error names a line:
+// the line search once took memory quadratic in the depth), or cut off -- or with extreme
+// numbers and sizes.
+inline std::string sceneJson(Choices& in) {
+  const int shape = in.ConsumeIntegralInRange<int>(0, 4);
   const size_t n = sizeOf(in, 2000000);
   switch (shape) {
-    case 0: return "{\"objects\": [" + repeat("[", n) + (in.ConsumeBool() ? "1" : "") + repeat("]", n / 2);
+    case 0: return "{\"objects\": [" + repeat("[", n) + "1" + repeat("]", n) + "]}";
+    case 4: return "{\"objects\": [" + repeat("[", n) + (in.ConsumeBool() ? "1" : "") + repeat("]", n / 2);
     case 1: return "{\"objects\": []" + repeat(", \"x\": {\"y\": [", n % 100000) + "}";
     case 2: return "{\"objects\": [{\"primitive\": \"sphere\", \"params\": {\"radius\": " +
                    std::string(in.ConsumeBool() ? "1e999" : "-0.5e4444446") + "}}]}";
@@ -149,7 +173,7 @@ inline std::string sceneJson(FuzzedDataProvider& in) {
 
 // A field source of one of three formats ('format': 0 Fidget, 1 HyperFun, 2 language) whose
 // values go NaN or infinite, or whose tape is very long, for every root-finding method.
-inline std::string fieldSource(FuzzedDataProvider& in, int& format) {
+inline std::string fieldSource(Choices& in, int& format) {
   format = in.ConsumeIntegralInRange<int>(0, 2);
   const int shape = in.ConsumeIntegralInRange<int>(0, 2);
   const size_t n = sizeOf(in, 20000);

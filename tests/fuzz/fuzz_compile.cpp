@@ -74,7 +74,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       const std::string text(reinterpret_cast<const char*>(data), size);
       for (pf::EmitStage stage : kStages) compileAndRun(text, stage, data, size);
     }
-    FuzzedDataProvider in(data, size);
+    pf::fuzz::Choices in(data, size);
     const pf::EmitStage stage = kStages[in.ConsumeIntegralInRange<size_t>(0, 5)];
     compileAndRun(pf::fuzz::languageSource(in), stage, data, size);
   });

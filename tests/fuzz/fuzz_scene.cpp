@@ -39,7 +39,7 @@ void parseAndDraw(const std::string& text) {
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   pf::fuzz::onSmallStack([&] {
     if (size <= 8 * 1024) parseAndDraw(std::string(reinterpret_cast<const char*>(data), size));
-    FuzzedDataProvider in(data, size);
+    pf::fuzz::Choices in(data, size);
     parseAndDraw(pf::fuzz::sceneJson(in));
   });
   return 0;
