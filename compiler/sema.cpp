@@ -12,6 +12,7 @@
 #include "compiler/builtins.h"
 
 #include <algorithm>
+#include <deque>
 #include <functional>
 #include <set>
 #include <vector>
@@ -300,19 +301,30 @@ bool analyzeAll(Program& program, DiagnosticLog& log, const std::map<std::string
     functions.units[u.name] = &u;
   }
   // Which functions can return varying values for uniform arguments: to a fixpoint, since
-  // functions call each other.
-  for (size_t round = 0; round <= functions.units.size(); ++round) {
-    bool changed = false;
-    for (auto& [name, unit] : functions.units) {
-      DiagnosticLog quiet;
-      Analyzer a(quiet, functions, false);
-      a.unit(*unit);
-      if (a.returns_varying && !functions.intrinsically_varying[name]) {
-        functions.intrinsically_varying[name] = true;
-        changed = true;
-      }
+  // functions call each other. A worklist: each function is analyzed once, and again only when
+  // one it calls turns out varying. (Rounds over every function in the order of their names
+  // were quadratic in a chain of calls that runs against that order: 5,000 functions, 30 s.)
+  std::deque<std::string> work;
+  std::set<std::string> queued;
+  for (const auto& [name, unit] : functions.units) {
+    work.push_back(name);
+    queued.insert(name);
+  }
+  std::map<std::string, std::set<std::string>> callers;  // callee -> the functions calling it
+  while (!work.empty()) {
+    const std::string name = std::move(work.front());
+    work.pop_front();
+    queued.erase(name);
+    functions.calls[name].clear();
+    DiagnosticLog quiet;
+    Analyzer a(quiet, functions, false);
+    a.unit(*functions.units[name]);
+    for (const auto& [callee, loc] : functions.calls[name]) callers[callee].insert(name);
+    if (a.returns_varying && !functions.intrinsically_varying[name]) {
+      functions.intrinsically_varying[name] = true;
+      for (const std::string& caller : callers[name])
+        if (queued.insert(caller).second) work.push_back(caller);
     }
-    if (!changed) break;
   }
   functions.calls.clear();
   for (Unit& u : program.units) {

@@ -326,7 +326,7 @@ void Analyzer::call(Expr& e) {
     return;
   }
   const Unit& fn = *f->second;
-  if (reporting_) functions_.calls[unit_->name].push_back({fn.name, e.loc});
+  functions_.calls[unit_->name].push_back({fn.name, e.loc});  // (the varying analysis reads them too)
   e.type = fn.return_type;
   e.varying = functions_.intrinsically_varying[fn.name];
   if (e.args.size() != fn.params.size()) {

@@ -136,6 +136,21 @@ TEST(CompileLimits, ASmallerStackStillGivesAnErrorNotAnOverflow) {
   }
 }
 
+// Which functions return varying values is found by a worklist over the calls: rounds over all
+// functions in the order of their names were quadratic in a chain that runs against that order
+// (g0 calls g1 ... calls g19999, whose value is varying: 30 s for 5,000, minutes for 20,000;
+// ctest's timeout catches a return of it). The chain is then refused as too deep to inline.
+TEST(CompileLimits, AChainOfCallsAgainstTheNameOrderIsAnalyzedInLinearTime) {
+  const int n = 20000;
+  std::string s = "float g" + std::to_string(n - 1) + "(float x) { return X; }\n";
+  for (int i = n - 2; i >= 0; --i)
+    s += "float g" + std::to_string(i) + "(float x) { return g" + std::to_string(i + 1) + "(x); }\n";
+  const Compiled c = compileOnSmallStack(s + primitiveWith("  Z = g0(Z);"));
+  EXPECT_FALSE(c.ok);
+  EXPECT_NE(c.diagnostics.find("calls nest more than 64 deep once functions are inlined: p -> g0 -> g1"), std::string::npos)
+      << c.diagnostics;
+}
+
 // Lowering an early-returning function is a loop, lowered again when it turns out varying; the
 // loops of the functions it calls start from what they found before, or each level of the chain
 // doubles the work (24 levels: 2^24 lowerings, far past the program size limit below).
