@@ -246,7 +246,9 @@ void checkRecursion(const FunctionTable& t, DiagnosticLog& log) {
         path.pop_back();
         continue;
       }
-      const auto& [callee, loc] = (*top.calls)[top.next++];
+      const auto& call = (*top.calls)[top.next++];
+      const std::string& callee = call.first;
+      const SourceLoc loc = call.second;
       if (!t.units.count(callee)) continue;
       if (state[callee] == 1) {
         std::string chain;

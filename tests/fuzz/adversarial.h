@@ -106,15 +106,19 @@ inline std::string languageSource(Choices& in) {
     case 3: case 4: {  // a call chain, each calling the one before once (3) or several times (4)
       const size_t n = shape == 3 ? sizeOf(in, 6000) : in.ConsumeIntegralInRange<size_t>(1, 30);
       const size_t calls = shape == 3 ? 1 : in.ConsumeIntegralInRange<size_t>(1, 3);
-      std::string fs = "float f0(float x) { return x * 0.5; }\n";
+      // Named along the chain or against it (analyses that go in name order meet it backwards),
+      // the innermost uniform or varying.
+      const bool against = in.ConsumeBool();
+      auto name = [&](size_t i) { return "f" + std::to_string(against ? n - i : i); };
+      std::string fs = "float " + name(0) + "(float x) { return " + (in.ConsumeBool() ? "X" : "x * 0.5") + "; }\n";
       for (size_t i = 1; i <= n; ++i) {
-        const std::string prev = "f" + std::to_string(i - 1);
+        const std::string prev = name(i - 1);
         std::string sum = prev + "(x)";
         for (size_t c = 1; c < calls; ++c) sum += " + " + prev + "(x + " + std::to_string(c) + ".0)";
-        fs += "float f" + std::to_string(i) + "(float x) { " +
+        fs += "float " + name(i) + "(float x) { " +
               (early ? "if (x > " + std::to_string(i) + ") return x; " : std::string()) + "return " + sum + "; }\n";
       }
-      return primitiveWith("  Z = f" + std::to_string(n) + "(" + leaf + ");", fs);
+      return primitiveWith("  Z = " + name(n) + "(" + leaf + ");", fs);
     }
     case 5: {  // an else-if chain, on a varying or a uniform value
       const size_t n = sizeOf(in, 5000);
