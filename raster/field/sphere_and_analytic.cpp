@@ -44,6 +44,7 @@ void FieldRayCaster::castSphere(const CastRequest& r, int bx, int by, Lanes& lan
         lanes.hit(i, lanes.ray[i].entry);
         continue;
       }
+      if (std::isnan(f[j])) continue;  // no distance to step by: a miss (it stepped NaN to the cap)
       t[i] = lanes.ray[i].entry;
       f0[i] = f[j];
       speed[i] = norm(lanes.ray[i].direction);  // object units per unit of t
@@ -74,6 +75,12 @@ void FieldRayCaster::castSphere(const CastRequest& r, int bx, int by, Lanes& lan
       const PixelRay& ray = lanes.ray[i];
       const double fm = f[2 * j], fe = f[2 * j + 1];
       const double dist = 0.5 * step[i] * speed[i];
+      if (std::isnan(fm) || std::isnan(fe)) {  // into a region where f is NaN: inside nothing, a miss
+        if (!(fm >= 0.0 || fe >= 0.0)) {
+          tracing &= ~bit;
+          continue;
+        }
+      }
       if (fm >= 0.0 || fe >= 0.0) {  // a crossing in this step
         tracing &= ~bit;
         if (fm >= 0.0 || fe > 1e-5) ++c.lipschitz_overshoots;  // the step went past the surface

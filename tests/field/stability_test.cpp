@@ -186,6 +186,18 @@ TEST(FieldStability, NaNAndInfinityInsideAField) {
       EXPECT_LT(c.max_depth_error, 1e-6);
     }
   }
+  // Sphere tracing a field that is NaN where the rays run (sqrt(-1 - x^2)): no distance to step
+  // by, so every ray is a miss at once -- it used to step NaN until the iteration cap, 65536
+  // evaluations a ray, and report them all as runaways.
+  B n;
+  const uint32_t x2 = n.unary(FieldOp::Square, n.x());
+  const ImplicitField nowhere("sqrt(-1 - x^2)", n.finish(n.unary(FieldOp::Sqrt, n.binary(FieldOp::Sub, n.constant(-1.0f), x2))), 2.0f);
+  const Comparison c = compare(nowhere, rays, 32, 8, RootMethod::Sphere, 0.0f, 200);
+  report(nowhere.name.c_str(), RootMethod::Sphere, 0.0f, c);
+  EXPECT_EQ(c.coverage_mismatches, 0);
+  EXPECT_EQ(c.counters.hits, 0u);
+  EXPECT_EQ(c.counters.iteration_cap_lanes, 0u);
+  EXPECT_LE(c.counters.point_evaluations, 2u * 32 * 8) << "rays stepped on through NaN";
 }
 
 }  // namespace
