@@ -26,7 +26,6 @@ std::string_view SourceFile::line(int line_number) const {
 
 namespace {
 
-constexpr int kMaxShownErrors = 20;       // errors past these are counted, not shown
 constexpr size_t kMaxMessageBytes = 400;  // a message quoting a huge token is cut
 constexpr size_t kShownLineBytes = 120;   // of a long source line, this much around the column
 
@@ -54,12 +53,12 @@ std::string printable(const std::string& message) {
 
 void DiagnosticLog::error(SourceLoc loc, std::string message) {
   ++error_count_;
-  if (error_count_ > kMaxShownErrors) return;
+  if (error_count_ > DiagnosticLog::kMaxErrors) return;
   diagnostics_.push_back({Severity::Error, loc, printable(message)});
 }
 
 void DiagnosticLog::note(SourceLoc loc, std::string message) {
-  if (error_count_ > kMaxShownErrors) return;
+  if (error_count_ > DiagnosticLog::kMaxErrors) return;
   diagnostics_.push_back({Severity::Note, loc, printable(message)});
 }
 
@@ -95,8 +94,8 @@ std::string formatDiagnostic(const Diagnostic& d) {
 std::string DiagnosticLog::format() const {
   std::string out;
   for (const Diagnostic& d : diagnostics_) out += formatDiagnostic(d);
-  if (error_count_ > kMaxShownErrors)
-    out += "error: " + std::to_string(error_count_ - kMaxShownErrors) + " more error(s) not shown\n";
+  if (error_count_ > DiagnosticLog::kMaxErrors)
+    out += "error: " + std::to_string(error_count_ - DiagnosticLog::kMaxErrors) + " more error(s) not shown\n";
   return out;
 }
 

@@ -39,6 +39,8 @@ struct Diagnostic {
 
 class DiagnosticLog {
  public:
+  // Errors shown: past these they are counted, not kept (the parser stops there too).
+  static constexpr int kMaxErrors = 20;
   void error(SourceLoc loc, std::string message);
   void note(SourceLoc loc, std::string message);
   bool hasErrors() const { return error_count_ > 0; }

@@ -13,7 +13,6 @@
 namespace pf {
 namespace {
 
-constexpr int kMaxErrors = 20;
 // The nesting limit: deep input is an error, not a stack overflow. It bounds every path from a
 // unit's root to a leaf -- statements, parentheses, calls and each operator applied to another's
 // result -- so that sema and lowering, which recurse over the tree, stay within a thread's stack
@@ -96,7 +95,7 @@ class Parser {
   }
   void error(SourceLoc loc, const std::string& msg) {
     log_.error(loc, msg);
-    if (log_.errorCount() >= kMaxErrors) throw CompileAbort{};
+    if (log_.errorCount() >= DiagnosticLog::kMaxErrors) throw CompileAbort{};
   }
   Token expect(Tok k, const char* context) {
     if (!at(k))

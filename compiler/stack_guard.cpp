@@ -10,14 +10,14 @@
 namespace pf {
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr uintptr_t kReserve = 256 * 1024;
-#elif defined(__has_feature)
+// GCC says __SANITIZE_ADDRESS__; clang says __has_feature(address_sanitizer).
+#if defined(__has_feature)
 #if __has_feature(address_sanitizer)
-constexpr uintptr_t kReserve = 256 * 1024;
-#else
-constexpr uintptr_t kReserve = 64 * 1024;
+#define PF_UNDER_ASAN 1
 #endif
+#endif
+#if defined(__SANITIZE_ADDRESS__) || defined(PF_UNDER_ASAN)
+constexpr uintptr_t kReserve = 256 * 1024;
 #else
 constexpr uintptr_t kReserve = 64 * 1024;
 #endif

@@ -41,15 +41,13 @@ constexpr OpSpelling kOps[] = {
     {"min", FieldOp::Min},  {"max", FieldOp::Max},
 };
 
-constexpr int kMaxErrors = 20;
-
 }  // namespace
 
 std::optional<FieldTape> readFidgetModel(const std::string& name, std::string text, DiagnosticLog& log) {
   const SourceFile& file = log.addSource(name, std::move(text));
   const int errors_before = log.errorCount();
   auto error = [&](int line, int col, std::string message) {
-    if (log.errorCount() - errors_before < kMaxErrors) log.error({&file, line, col}, std::move(message));
+    if (log.errorCount() - errors_before < DiagnosticLog::kMaxErrors) log.error({&file, line, col}, std::move(message));
   };
   FieldTapeBuilder builder;
   std::unordered_map<std::string_view, uint32_t> values;

@@ -8,7 +8,6 @@
 namespace pf::field::hyperfun {
 namespace {
 
-constexpr int kMaxErrors = 20;
 constexpr size_t kMaxIdentifier = 256;  // HyperFun's MAX_LENGTH_OF_STRING
 
 struct Reserved {
@@ -57,7 +56,7 @@ class Scanner {
     ++pos_;
   }
   void error(int line, int col, std::string message) {
-    if (errors_++ < kMaxErrors) log_.error({&file_, line, col}, std::move(message));
+    if (errors_++ < DiagnosticLog::kMaxErrors) log_.error({&file_, line, col}, std::move(message));
   }
 
   void skipBlanksAndComments() {
