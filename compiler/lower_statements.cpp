@@ -426,9 +426,64 @@ Binding Lowerer::inlineFunction(const Unit& fn, const std::vector<Binding>& args
   return out;
 }
 
+// The `else if` links that follow `s`: each statement whose else part is one if statement.
+static std::vector<const Stmt*> elseIfLinks(const Stmt& s) {
+  std::vector<const Stmt*> links{&s};
+  for (const Stmt* at = &s; at->else_body.size() == 1 && at->else_body[0]->kind == StmtKind::If;)
+    links.push_back(at = at->else_body[0].get());
+  return links;
+}
+
 bool Lowerer::ifStatement(const Stmt& s) {
   int cond = expr(*s.value).comps[0];
+  if (isVarying(cond)) {
+    std::vector<const Stmt*> links = elseIfLinks(s);
+    if (links.size() >= kFlatElseIfLinks) return ifChain(links, cond);
+  }
   return branch(cond, s.loc, [&] { return scoped(s.body); }, [&] { return scoped(s.else_body); });
+}
+
+// A varying chain `if (a) A else if (b) B … else E` nested as written opens one mask per link
+// (a program nests at most 64). Lowered instead as a row of ifs one deep each, with a flag of
+// the lanes some branch took:
+//   taken = a;  if (a) A;
+//   c = false;  if (!taken) c = b;  if (c) B;  taken = taken || c;  …
+//   if (!taken) E
+// so each condition still runs only in the lanes no earlier branch took, as nested ifs would.
+bool Lowerer::ifChain(const std::vector<const Stmt*>& links, int first_cond) {
+  const size_t flag = bindings_.size();  // the condition of the link being lowered
+  Binding b;
+  b.type.base = BaseType::Bool;
+  b.comps = {first_cond};
+  bindings_.push_back(b);
+  int taken = first_cond;
+  bool all_return = true;
+  auto body = [&](int cond, SourceLoc loc, const std::vector<StmtPtr>& stmts) {
+    bool returns = false;
+    branch(cond, loc, [&] { return returns = scoped(stmts); }, [] { return false; });
+    all_return = all_return && returns;
+  };
+  body(first_cond, links[0]->loc, links[0]->body);
+  for (size_t i = 1; i < links.size(); ++i) {
+    const Stmt& link = *links[i];
+    const int not_taken = emit(Op::BNot, ValueClass::Bool, false, taken);
+    bindings_[flag].comps[0] = constB(false);
+    branch(not_taken, link.loc, [&] {
+      bindings_[flag].comps[0] = expr(*link.value).comps[0];
+      return false;
+    }, [] { return false; });
+    const int cond = bindings_[flag].comps[0];
+    body(cond, link.loc, link.body);
+    taken = emit(Op::BOr, ValueClass::Bool, false, taken, cond);
+  }
+  const Stmt& last = *links.back();
+  if (last.else_body.empty()) {
+    all_return = false;
+  } else {
+    body(emit(Op::BNot, ValueClass::Bool, false, taken), last.loc, last.else_body);
+  }
+  bindings_.erase(bindings_.begin() + static_cast<std::ptrdiff_t>(flag), bindings_.end());
+  return all_return;
 }
 
 bool Lowerer::branch(int cond, SourceLoc loc, const std::function<bool()>& then_part, const std::function<bool()>& else_part) {

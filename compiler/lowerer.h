@@ -35,6 +35,9 @@ constexpr int kMaxLoweredNesting = 384;
 constexpr size_t kMaxInlineDepth = 64;
 // How many expressions one unit may lower, its inlined calls' included.
 constexpr uint64_t kMaxLoweredExpressions = uint64_t{1} << 18;
+// Varying else-if chains of this many links or more lower flat (Lowerer::ifChain): a few
+// instructions more a link, and no limit on their length from the masks a program nests.
+constexpr size_t kFlatElseIfLinks = 4;
 
 // Thrown by Lowerer::refuse, after its error, to abandon the unit.
 struct LoweringAbort {};
@@ -200,6 +203,9 @@ class Lowerer {
 
   bool namedBranches(const InterpolationCase& c);
   bool ifStatement(const Stmt& s);
+  // A varying else-if chain of `links` (the first one's condition lowered as `first_cond`) as
+  // ifs one mask deep each.
+  bool ifChain(const std::vector<const Stmt*>& links, int first_cond);
 
   // An if node on `cond`: each part lowers its branch and says whether it always returns;
   // variables the branches leave different get merge copies.

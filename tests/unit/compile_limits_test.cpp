@@ -85,18 +85,66 @@ TEST(CompileLimits, DeepParenthesesAndPostfixChainsAreErrors) {
   }
 }
 
-TEST(CompileLimits, AUniformElseIfChainOf200BranchesCompiles) {
-  std::string body = "  float a = 0;\n  if (Z < 0) a = 1;\n";
-  for (int i = 1; i < 200; ++i) body += "  else if (Z < " + std::to_string(i) + ") a = " + std::to_string(i) + ";\n";
-  // Z is varying: the chain nests 200 masks, past the executors' 64 -- a clear error of its own.
-  Compiled c = compileOnSmallStack(primitiveWith(body + "  Z = a;"));
-  EXPECT_FALSE(c.ok);
-  EXPECT_NE(c.diagnostics.find("at most 64 fit"), std::string::npos) << c.diagnostics;
-  // On a uniform value the same chain is no nesting at run time: it compiles.
+// X + 8 Y: the lane's index in the 8x8 block, 0 .. 63.
+const char* kLaneIndex = "  int k = int(X) + 8 * int(Y);\n";
+
+TEST(CompileLimits, AVaryingElseIfChainOf200BranchesRunsAsWritten) {
+  // The first condition that holds wins: lane k takes `k < k + 1`, so a = k + 1. Nested as
+  // written the chain would open 200 masks, past the 64 a program nests; it lowers flat.
+  std::string body = std::string(kLaneIndex) + "  float a = 0;\n  if (k < 0) a = 1000;\n";
+  for (int i = 1; i < 200; ++i) body += "  else if (k < " + std::to_string(i) + ") a = " + std::to_string(i) + ";\n";
+  const Compiled c = compileOnSmallStack(primitiveWith(body + "  else a = 2000;\n  Z = a / 256.0;"));
+  ASSERT_TRUE(c.ok) << c.diagnostics;
+  const BlockRun r = runBlock(*c.find("p"), {}, {}, 0);
+  for (int k = 0; k < 64; ++k) EXPECT_EQ(r.depth[k], static_cast<float>(k + 1) / 256.0f) << "lane " << k;
+  // On a uniform value the same chain is no nesting at run time either: it compiles.
   std::string uniform = "primitive p(float k[1]; varying float X, Y; inout varying float Z) {\n  float a = 0;\n  if (k[0] < 0) a = 1;\n";
   for (int i = 1; i < 200; ++i) uniform += "  else if (k[0] < " + std::to_string(i) + ") a = " + std::to_string(i) + ";\n";
-  c = compileOnSmallStack(uniform + "  Z = a;\n}\n");
-  EXPECT_TRUE(c.ok) << c.diagnostics;
+  const Compiled u = compileOnSmallStack(uniform + "  Z = a;\n}\n");
+  EXPECT_TRUE(u.ok) << u.diagnostics;
+}
+
+TEST(CompileLimits, AFlatElseIfChainTestsEachConditionOnlyWhereNoEarlierBranchWasTaken) {
+  // `stuck` loops forever where k < 32: were its link's condition run in the lanes the first
+  // branch took, those lanes would stop at the iteration cap and draw nothing.
+  const std::string source =
+      "float stuck(int k) { float n = 0; while (k < 32) n += 1.0; return n; }\n" +
+      primitiveWith(std::string(kLaneIndex) +
+                    "  float a = 0;\n"
+                    "  if (k < 32) { a = 1; k = 100; }\n"  // a branch's writes are not seen by later conditions
+                    "  else if (stuck(k) > 0.0) a = 2;\n"
+                    "  else if (k < 40) a = 3;\n"
+                    "  else if (k < 48) a = 4;\n"
+                    "  else if (k < 56) a = 5;\n"
+                    "  Z = (a + float(k) / 128.0) / 8.0;");
+  const Compiled c = compileOnSmallStack(source);
+  ASSERT_TRUE(c.ok) << c.diagnostics;
+  const BlockRun r = runBlock(*c.find("p"), {}, {}, 0, true, 1.0f, InterpKind::PerspectiveLinear, 1024);
+  EXPECT_EQ(r.counters.iteration_cap_lanes, 0u);
+  for (int k = 0; k < 64; ++k) {
+    const float a = k < 32 ? 1 : k < 40 ? 3 : k < 48 ? 4 : k < 56 ? 5 : 0;
+    const float kk = k < 32 ? 100 : static_cast<float>(k);
+    EXPECT_EQ(r.depth[k], (a + kk / 128.0f) / 8.0f) << "lane " << k;
+  }
+}
+
+TEST(CompileLimits, AFlatElseIfChainOfReturnsInAFunction) {
+  // Every branch returns (the chain's end is the function's), and a chain without an else falls
+  // through to the statement after it.
+  const std::string source =
+      "float every(int k) { if (k < 8) return 1.0; else if (k < 16) return 2.0; else if (k < 24) return 3.0;\n"
+      "  else if (k < 32) return 4.0; else return 5.0; }\n"
+      "float some(int k) { if (k < 8) return 1.0; else if (k < 16) return 2.0; else if (k < 24) return 3.0;\n"
+      "  else if (k < 32) return 4.0; return 6.0; }\n" +
+      primitiveWith(std::string(kLaneIndex) + "  Z = (every(k) + some(k) * 8.0) / 64.0;");
+  const Compiled c = compileOnSmallStack(source);
+  ASSERT_TRUE(c.ok) << c.diagnostics;
+  const BlockRun r = runBlock(*c.find("p"), {}, {}, 0);
+  for (int k = 0; k < 64; ++k) {
+    const float band = static_cast<float>(k / 8 + 1);
+    const float every = k < 32 ? band : 5.0f, some = k < 32 ? band : 6.0f;
+    EXPECT_EQ(r.depth[k], (every + some * 8.0f) / 64.0f) << "lane " << k;
+  }
 }
 
 // f0 ... f(n-1), each calling the one before: `early` gives each an early return (an inlined
