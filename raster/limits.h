@@ -12,10 +12,11 @@ constexpr int kTileSize = 64;          // screen tiles: the unit of binning and 
 constexpr int kBlockSize = 8;          // pixel blocks: the unit of SIMD execution
 constexpr int kLanes = kBlockSize * kBlockSize;  // lanes of a wide register
 constexpr int kMaxFramebufferSize = 8192;
-// Instances one submission may make by calling primitives, besides four a sequence point (a
+// Instances one submission may make by calling primitives: this many for each iteration the
+// context's iteration cap allows (2^21 at the default cap), besides four a sequence point (a
 // strip's or polygon's triangles); past it the calls are dropped and reported as a runaway
 // (GL_TOO_MANY_ITERATIONS_EXT).
-constexpr uint64_t kMaxCallsPerSubmission = 1u << 21;
+constexpr uint64_t kCallsPerIteration = 32;
 // Uniform-record words a scene holds before a submission flushes it (offsets are 32-bit).
 constexpr size_t kMaxRecordWords = size_t(1) << 30;
 constexpr int kMaxChannels = 64;       // per-vertex shading-parameter floats per instance

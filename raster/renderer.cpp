@@ -137,7 +137,7 @@ bool Renderer::beginSubmission(const ChannelLayout& layout, const RasterState& s
     return beginSubmission(layout, state, shade, per_pixel_lighting);
   }
   calls_this_submission_ = 0;
-  calls_budget_ = kMaxCallsPerSubmission;
+  calls_budget_ = kCallsPerIteration * state.iteration_cap;
   return true;
 }
 
@@ -169,7 +169,7 @@ bool Renderer::submit(const CompiledPrimitive& prim, const uint32_t* params, con
   const int points = sequence_points < 0 ? prim.sequence_points : sequence_points;
   // A strip or polygon calls `triangles` once a vertex, each quad twice: calls in proportion to
   // the vertices are the input's, never a runaway's.
-  calls_budget_ = kMaxCallsPerSubmission + 4 * static_cast<uint64_t>(std::max(points, 0));
+  calls_budget_ = kCallsPerIteration * state.iteration_cap + 4 * static_cast<uint64_t>(std::max(points, 0));
   return submitAt(prim, params, vertex_channels, points, 0);
 }
 

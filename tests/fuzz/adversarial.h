@@ -176,10 +176,11 @@ inline std::string sceneJson(Choices& in) {
 }
 
 // A field source of one of three formats ('format': 0 Fidget, 1 HyperFun, 2 language) whose
-// values go NaN or infinite, or whose tape is very long, for every root-finding method.
+// values go NaN or infinite, whose tape is very long, or (HyperFun and language) whose
+// expressions or statements nest deep, for every root-finding method.
 inline std::string fieldSource(Choices& in, int& format) {
   format = in.ConsumeIntegralInRange<int>(0, 2);
-  const int shape = in.ConsumeIntegralInRange<int>(0, 2);
+  const int shape = in.ConsumeIntegralInRange<int>(0, format == 0 ? 2 : 3);
   const size_t n = sizeOf(in, 20000);
   if (format == 0) {  // Fidget: a ball, made NaN (sqrt of a negative), infinite, or a long chain
     std::string s = "_0 var-x\n_1 var-y\n_2 var-z\n_3 square _0\n_4 square _1\n_5 add _3 _4\n_6 square _2\n_7 add _5 _6\n"
@@ -195,6 +196,24 @@ inline std::string fieldSource(Choices& in, int& format) {
       }
     }
     return s;
+  }
+  if (format == 1 && shape == 3) {  // HyperFun nested deep: parentheses, calls, if or while blocks
+    switch (in.ConsumeIntegralInRange<int>(0, 3)) {
+      case 0: return "my_model(x[3], a[1])\n{\n  my_model = " + repeat("(", n) + "1 - x[1]" + repeat(")", n) + ";\n}\n";
+      case 1: return "my_model(x[3], a[1])\n{\n  my_model = " + repeat("abs(", n) + "x[1]" + repeat(")", n) + " - 1" + ";\n}\n";
+      case 2:
+        return "my_model(x[3], a[1])\n{\n  t = 1;\n" + repeat("  if x[1] < 0.5 then\n", n) + "  t = x[2];\n" +
+               repeat("  endif;\n", n) + "  my_model = t - x[3];\n}\n";
+      default:
+        return "my_model(x[3], a[1])\n{\n  t = x[1];\n" + repeat("  while t > 2 loop\n", n) + "  t = t - 1;\n" +
+               repeat("  endloop;\n", n) + "  my_model = t;\n}\n";
+    }
+  }
+  if (format == 2 && shape == 3) {  // a language field nested deep
+    return in.ConsumeBool()
+               ? "field float f(point p) {\n  return " + repeat("(", n) + "1 - p.x" + repeat(")", n) + ";\n}\n"
+               : "field float f(point p) {\n  float t = p.x;\n  " + repeat("if (t < 0.5) { ", n) + "t = p.y;" +
+                     repeat(" }", n) + "\n  return t - p.z;\n}\n";
   }
   if (format == 1) {  // HyperFun
     const std::string extra = shape == 0 ? " + sqrt(-1)" : shape == 1 ? " / 0" : repeat(" + 0.001", n);

@@ -1,10 +1,11 @@
 // libFuzzer target for sequences of API calls (docs/reliability.md): the bytes are a program of
 // GL-1.x and extension calls -- glBegin of every mode (and of no mode), vertices and values that
 // are NaN, infinite or huge, matrix stacks pushed and popped past their ends, degenerate
-// projections, bad enums and names, sequence points, compiles, clears and finishes -- run on a
-// small context. Nothing may crash, hang or trip ASan/UBSan, and GL's rule for commands between
-// glBegin and glEnd is checked: a glBegin whose only erring command is one GL does not allow
-// there leaves exactly GL_INVALID_OPERATION at glEnd (the check traps, which libFuzzer reports).
+// projections, bad enums and names, sequence points, compiles, clears and finishes, a glBegin of
+// very many vertices -- run on a small context. Nothing may crash, hang or trip ASan/UBSan, and
+// GL's rules are checked (the checks trap, which libFuzzer reports): a glBegin whose only erring
+// command is one GL does not allow there leaves exactly GL_INVALID_OPERATION at glEnd, and the
+// glBegin of very many vertices leaves no error.
 //
 // Build and run locally: as fuzz_compile.cpp says, with --target fuzz_api and the corpus
 // tests/fuzz/corpus/api.
@@ -23,6 +24,7 @@
 namespace {
 
 constexpr int kSize = 24;
+constexpr size_t kIterationCap = 256;  // the context's
 
 float aFloat(FuzzedDataProvider& in) {
   switch (in.ConsumeIntegralInRange<int>(0, 7)) {
@@ -83,9 +85,33 @@ void oneBegin(FuzzedDataProvider& in, bool forbidden) {
   if (err != static_cast<GLenum>(forbidden ? GL_INVALID_OPERATION : GL_NO_ERROR)) __builtin_trap();
 }
 
-void oneCall(FuzzedDataProvider& in) {
-  switch (in.ConsumeIntegralInRange<int>(0, 19)) {
+// One glBegin / glEnd of any mode with about as many vertices as the calls a submission may
+// make (32 times the iteration cap, where the triangles of a strip once stopped, reported as a
+// runaway loop): drawn whole, no error. All but the last three vertices sit at one point. At
+// most one an input.
+void hugeBegin(FuzzedDataProvider& in, bool& drawn_one) {
+  if (drawn_one) return;
+  drawn_one = true;
+  pfglEnd();
+  pfglFinish();
+  (void)pfglGetError();
+  const GLenum mode = aMode(in);
+  const size_t n = 32 * kIterationCap + in.ConsumeIntegralInRange<size_t>(0, 12) - 4;
+  const float at = in.ConsumeFloatingPointInRange<float>(-1.0f, 1.0f);
+  pfglBegin(mode);
+  for (size_t i = 0; i + 3 < n; ++i) pfglVertex2f(at, at);
+  pfglVertex2f(-0.5f, -0.5f);
+  pfglVertex2f(0.5f, -0.5f);
+  pfglVertex2f(0.0f, 0.5f);
+  pfglEnd();
+  pfglFinish();
+  if (pfglGetError() != static_cast<GLenum>(GL_NO_ERROR)) __builtin_trap();
+}
+
+void oneCall(FuzzedDataProvider& in, bool& huge_drawn) {
+  switch (in.ConsumeIntegralInRange<int>(0, 20)) {
     case 0: oneBegin(in, in.ConsumeBool()); break;
+    case 19: hugeBegin(in, huge_drawn); break;
     case 1: pfglBegin(in.ConsumeIntegral<GLenum>()); break;  // any enum, a primitive's mode or none
     case 2: pfglEnd(); break;
     case 3: pfglVertex4f(aFloat(in), aFloat(in), aFloat(in), aFloat(in)); break;
@@ -135,7 +161,7 @@ void oneCall(FuzzedDataProvider& in) {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static std::vector<unsigned char> pixels(kSize * kSize * 4);
-  const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_THREADS, 2, PF_ITERATION_CAP, 256, 0};
+  const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_THREADS, 2, PF_ITERATION_CAP, static_cast<int>(kIterationCap), 0};
   PFcontext ctx = pfCreateContextAttribs(attribs);
   if (!ctx) return 0;
   // The calls on a 1 MB stack, an application's worker thread's (the current context is the
@@ -143,7 +169,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   pf::fuzz::onSmallStack([&] {
     if (pfMakeCurrent(ctx, pixels.data(), GL_UNSIGNED_BYTE, kSize, kSize)) {
       FuzzedDataProvider in(data, size);
-      for (int calls = 0; calls < 400 && in.remaining_bytes() > 0; ++calls) oneCall(in);
+      bool huge_drawn = false;
+      for (int calls = 0; calls < 400 && in.remaining_bytes() > 0; ++calls) oneCall(in, huge_drawn);
       pfglEnd();  // (a glBegin left open)
       pfglFinish();
       (void)pfglGetError();

@@ -182,6 +182,38 @@ TEST(Extensions, ExplodingPrimitiveCallsAreCutAndReported) {
   EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_TOO_MANY_ITERATIONS_EXT));
 }
 
+// The budget of calls scales with the iteration cap (32 calls an iteration): at a cap of 16,
+// two levels of 15 calls each (240 instances) stay within its 512 and three (3,615) pass it, while
+// no loop reaches the cap; a strip of more vertices than that is still drawn whole.
+TEST(Extensions, TheCallBudgetIsThirtyTwoTimesTheIterationCap) {
+  Ctx c(16);
+  ASSERT_NE(pfglCompilePrimitivesEXT(
+                "primitive dot(point vertex[1]; inout varying float Z) { bound(-9.0, -9.0, -8.0, -8.0); Z = 0.5; }\n"
+                "primitive two(point vertex[1]) { for (int i = 0; i < 15; i += 1) dot(vertex); }\n"
+                "primitive one(point vertex[1]) { for (int i = 0; i < 15; i += 1) two(vertex); }\n"
+                "primitive zero(point vertex[1]) { for (int i = 0; i < 15; i += 1) one(vertex); }\n"),
+            0u);
+  for (const char* name : {"one", "zero"}) {
+    SCOPED_TRACE(name);
+    pfglBegin(pfglGetPrimitiveEXT(name));
+    pfglVertex2f(0.5f, 0.5f);
+    pfglEnd();
+    pfglFinish();
+    EXPECT_EQ(pfglGetError(), static_cast<GLenum>(std::string(name) == "one" ? GL_NO_ERROR : GL_TOO_MANY_ITERATIONS_EXT));
+  }
+  pfglClearColor(0, 0, 0, 0);
+  pfglClear(GL_COLOR_BUFFER_BIT);
+  pfglBegin(GL_TRIANGLE_STRIP);
+  for (int i = 0; i < 32 * 16 + 100; ++i) pfglVertex2f(0.5f, 0.5f);
+  pfglVertex2f(4, 4);
+  pfglVertex2f(12, 4);
+  pfglVertex2f(8, 12);
+  pfglEnd();
+  pfglFinish();
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  EXPECT_NE(c.px[(7 * 16 + 8) * 4 + 3], 0) << "the strip's last triangle is drawn";
+}
+
 // A loop over a parameter-sized array runs once per sequence point, whatever the cap: a strip
 // longer than the iteration cap is drawn whole, without an error.
 TEST(Extensions, LongStripsAreNoRunaway) {
