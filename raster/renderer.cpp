@@ -14,6 +14,11 @@ namespace {
 // few lanes are left empty anyway.
 constexpr int kGangArea = 4 * kLanes;
 
+// Setup across the pool (Renderer::submitInstances): jobs of at least this many batches, and
+// this many jobs a thread (a thread that starts late still gets a share).
+constexpr int kMinBatchesPerJob = 16;
+constexpr int kSetupJobsPerThread = 2;
+
 // Whether the pixels [ix0, ix1) x [iy0, iy1) of the tile at (x0, y0) run in fewer blocks packed
 // (PixelExecutor::runPackedBlock) than on the aligned blocks they touch -- and none of those
 // blocks lies wholly inside them, where block rejection might skip it or run it without
@@ -187,12 +192,49 @@ void Renderer::submitInstances(const CompiledPrimitive& prim, int instances, con
              sequence_points, sharedOf(i), per_pixel_lighting);
     return;
   }
-  // Setup first, every batch of kSetupBatchLanes instances a job for the pool (it reads only
-  // the instances, the state and the layout, and writes its own scratch records and outputs:
-  // which thread ran it changes nothing); then each instance in order exactly as submit()
-  // would: the submission's bookkeeping, its shared interpolators, then its record and bins.
+  // Each instance's bookkeeping, in order, as submit() would do it: the state, layout and
+  // shade, then its shared interpolators. An instance whose bookkeeping appended nothing and
+  // flushed nothing leaves the scene as the next one's would find it: that one's would do
+  // nothing either (the comparisons are of the same values), unless the records outgrow
+  // their bound.
+  bool steady = false;
+  auto bookkeeping = [&](int i) {
+    if (steady && scene_.records.size() <= kMaxRecordWords) {
+      calls_this_submission_ = 0;
+    } else {
+      const size_t appended = scene_.states.size() + scene_.layouts.size() + scene_.shades.size() +
+                              scene_.lightings.size();
+      const uint64_t flushes = flushes_;
+      const uint32_t current_shade = scene_.current_shade;
+      if (!beginSubmission(layout, state, shade, per_pixel_lighting)) return false;
+      steady = flushes == flushes_ && current_shade == scene_.current_shade &&
+               appended == scene_.states.size() + scene_.layouts.size() + scene_.shades.size() +
+                               scene_.lightings.size();
+    }
+    runShared(layout, sharedOf(i));
+    return true;
+  };
+  // Setup, every few batches of kSetupBatchLanes instances a job for the pool (it reads only the
+  // instances, the state and the layout, and writes their records and outputs: which thread ran
+  // it changes nothing); then each instance in order exactly as submit() would: its
+  // bookkeeping, then its record and bins.
+  //
+  // Where the bookkeeping of the first instances leaves the scene steady and appends no shared
+  // records between instances, setup writes the records straight into the scene's, in order,
+  // and binning only closes the gaps the instances it drops leave (a copy of every record
+  // through a scratch buffer cost more than binning did). The bookkeeping runs first then: it
+  // reads nothing setup writes, and every instance here has the same state, layout and shade.
   const size_t words = SetupExecutor::recordWords(prim, layout.count);
-  batch_records_.resize(words * static_cast<size_t>(instances) + 1);
+  const size_t chunk_words = words * static_cast<size_t>(instances);
+  int booked = 0;  // instances whose bookkeeping is done
+  bool direct = nshared == 0 && !prim.pixel.code.empty() && prim.callees.empty();
+  while (direct && booked < instances && !steady) {
+    if (!bookkeeping(booked++)) return;
+  }
+  direct = direct && steady && scene_.records.size() + chunk_words <= kMaxRecordWords;
+  const size_t base = scene_.records.size();
+  uint32_t* const records_at = direct ? (scene_.records.resize(base + chunk_words), scene_.records.data() + base)
+                                      : (batch_records_.resize(chunk_words + 1), batch_records_.data());
   batch_outputs_.resize(static_cast<size_t>(instances));
   const int batches = (instances + kSetupBatchLanes - 1) / kSetupBatchLanes;
   const NativeSetupFunction native = batch_setups_[0]->nativeFunction(prim, layout, instances);
@@ -204,43 +246,57 @@ void Renderer::submitInstances(const CompiledPrimitive& prim, int instances, con
       const int i = first + l;
       in[l] = SetupInput{params + i * param_stride, vertex_channels + i * vertex_stride, &layout, &state,
                          sequence_points, nullptr, 0};
-      records[l] = batch_records_.data() + words * static_cast<size_t>(i);
+      records[l] = records_at + words * static_cast<size_t>(i);
     }
     batch_setups_[static_cast<size_t>(worker)]->run(prim, in, lanes, records, batch_outputs_.data() + first, native);
   };
-  if (batches > 1 && pool_.threadCount() > 1) {
+  // Jobs of contiguous batches, a few a thread: a job a batch took the pool's lock and shared
+  // cache lines between the threads at every batch, and was slower on two threads than on one.
+  const int threads = pool_.threadCount();
+  const int jobs = batches >= kMinBatchesPerJob * 2 && threads > 1
+                       ? std::min(batches / kMinBatchesPerJob, threads * kSetupJobsPerThread)
+                       : 1;
+  auto setupJob = [&](int job, int worker) {
+    const int from = static_cast<int>(static_cast<int64_t>(batches) * job / jobs);
+    const int to = static_cast<int>(static_cast<int64_t>(batches) * (job + 1) / jobs);
+    for (int b = from; b < to; ++b) setupBatch(b, worker);
+  };
+  if (jobs > 1) {
     // (A closure of one pointer: std::function keeps it without allocating.)
-    auto* run = &setupBatch;
-    pool_.parallelFor(batches, [run](int b, int worker) { (*run)(b, worker); });
-  } else
-    for (int b = 0; b < batches; ++b) setupBatch(b, 0);
+    auto* run = &setupJob;
+    pool_.parallelFor(jobs, [run](int job, int worker) { (*run)(job, worker); });
+  } else {
+    setupJob(0, 0);
+  }
 
-  bool steady = false;
-  for (int i = 0; i < instances; ++i) {
-    const SetupOutput& out = batch_outputs_[static_cast<size_t>(i)];
-    const uint32_t* record = batch_records_.data() + words * static_cast<size_t>(i);
-    // An instance whose bookkeeping appended nothing and flushed nothing leaves the scene as
-    // the next one's would find it: that one's would do nothing either (the comparisons are
-    // of the same values), unless the records outgrow their bound.
-    if (steady && scene_.records.size() <= kMaxRecordWords) {
-      calls_this_submission_ = 0;
-    } else {
-      const size_t appended = scene_.states.size() + scene_.layouts.size() + scene_.shades.size() +
-                              scene_.lightings.size();
-      const uint64_t flushes = flushes_;
-      const uint32_t current_shade = scene_.current_shade;
-      if (!beginSubmission(layout, state, shade, per_pixel_lighting)) return;
-      steady = flushes == flushes_ && current_shade == scene_.current_shade &&
-               appended == scene_.states.size() + scene_.layouts.size() + scene_.shades.size() +
-                               scene_.lightings.size();
+  if (direct) {
+    size_t end = base;  // the records kept so far end here
+    for (int i = 0; i < instances; ++i) {
+      if (i >= booked) calls_this_submission_ = 0;  // (the rest of the bookkeeping: the scene is steady)
+      const SetupOutput& out = batch_outputs_[static_cast<size_t>(i)];
+      ++stats_.instances_submitted;
+      stats_.setup_instructions += out.instructions;
+      if (out.killed) {
+        binInstance(prim, out, end);  // (counts it)
+        continue;
+      }
+      const size_t at = base + words * static_cast<size_t>(i);
+      if (at != end) std::memmove(scene_.records.data() + end, scene_.records.data() + at, words * sizeof(uint32_t));
+      if (binInstance(prim, out, end)) end += words;
     }
-    runShared(layout, sharedOf(i));
+    scene_.records.resize(end);
+    return;
+  }
+  for (int i = 0; i < instances; ++i) {
+    if (i >= booked && !bookkeeping(i)) return;
+    const SetupOutput& out = batch_outputs_[static_cast<size_t>(i)];
+    const uint32_t* record = records_at + words * static_cast<size_t>(i);
     ++stats_.instances_submitted;
     stats_.setup_instructions += out.instructions;
     if (!out.killed && prim.pixel.code.empty()) continue;
     const size_t offset = scene_.records.size();
     if (!out.killed) scene_.records.insert(scene_.records.end(), record, record + words);
-    binInstance(prim, out, offset);
+    if (!binInstance(prim, out, offset) && !out.killed) scene_.records.resize(offset);
   }
 }
 
@@ -296,11 +352,14 @@ bool Renderer::submitAt(const CompiledPrimitive& prim, const uint32_t* params, c
     offset = scene_.records.size();
     scene_.records.insert(scene_.records.end(), scratch.begin(), scratch.end());
   }
-  return binInstance(prim, out, offset);
+  const bool kept = binInstance(prim, out, offset);
+  if (!kept && !out.killed) scene_.records.resize(offset);  // its record, the last, goes
+  return kept;
 }
 
-// After setup: an instance it killed is counted; a live one, whose record is the last in the
-// scene at `offset`, is binned under the state, layout and shade last appended.
+// After setup: an instance it killed is counted; a live one, whose record is in the scene at
+// `offset`, is binned under the state, layout and shade last appended. False: it is not (killed,
+// or no pixel of it in the viewport), and its record is the caller's to drop.
 bool Renderer::binInstance(const CompiledPrimitive& prim, const SetupOutput& out, size_t offset) {
   const RasterState& state = scene_.states.back();
   const ChannelLayout& layout = scene_.layouts.back();
@@ -324,10 +383,7 @@ bool Renderer::binInstance(const CompiledPrimitive& prim, const SetupOutput& out
   // The pixels it may touch: its bound within the viewport and the framebuffer.
   int vx0 = std::max(state.vp_x0, 0), vy0 = std::max(state.vp_y0, 0);
   int vx1 = std::min(state.vp_x1, width_), vy1 = std::min(state.vp_y1, height_);
-  if (vx0 >= vx1 || vy0 >= vy1) {
-    scene_.records.resize(offset);
-    return false;
-  }
+  if (vx0 >= vx1 || vy0 >= vy1) return false;
   inst.x0 = vx0, inst.x1 = vx1, inst.y0 = vy0, inst.y1 = vy1;
   if (out.has_bound) {
     pixelRange(out.bound[0], out.bound[2], vx0, vx1, inst.x0, inst.x1);
@@ -343,10 +399,7 @@ bool Renderer::binInstance(const CompiledPrimitive& prim, const SetupOutput& out
     inst.z_min = out.depth_bound[0];
     inst.z_max = out.depth_bound[1];
   }
-  if (inst.x0 >= inst.x1 || inst.y0 >= inst.y1) {
-    scene_.records.resize(offset);
-    return false;
-  }
+  if (inst.x0 >= inst.x1 || inst.y0 >= inst.y1) return false;
   int max_slot = 0;
   for (int s : layout.gbuffer_slot) max_slot = std::max(max_slot, s + 1);
   if (shade.color_slot >= 0) max_slot = std::max(max_slot, shade.color_slot + 4);

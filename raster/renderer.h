@@ -165,7 +165,7 @@ class Renderer : private SubInstanceSink {
   std::vector<uint32_t> record_scratch_[kMaxPrimitiveCallDepth + 1];
   // One per thread: the batches of a submission are set up across the pool.
   std::vector<std::unique_ptr<BatchSetupExecutor>> batch_setups_;
-  std::vector<uint32_t> batch_records_;
+  std::vector<uint32_t> batch_records_;  // setup's records where they cannot go to the scene's directly
   std::vector<SetupOutput> batch_outputs_;
   bool setup_batching_ = true;
   bool pack_small_bounds_ = true;  // PF_PACKED_LANES=0: every instance on aligned blocks

@@ -118,8 +118,9 @@ void recordSequencePoint(PFcontextRec& ctx) {
 }
 
 // Instances handed to the renderer together (a multiple of its setup batch): enough batches
-// for the renderer to set them up across its threads.
-constexpr size_t kInstancesPerChunk = 64 * pf::kSetupBatchLanes;
+// for the renderer to set them up across its threads, each hand-over waking the pool once
+// (at 1,024 instances a chunk, the wake-ups of 200k triangles cost more than two threads saved).
+constexpr size_t kInstancesPerChunk = 1024 * pf::kSetupBatchLanes;
 
 // Hands the rows to the renderer: for a primitive with a fixed count, one instance per
 // `sequence_points` rows; for one with parameter-sized arrays, one instance holding them all.
