@@ -13,6 +13,7 @@
 #include <limits>
 #include <random>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "rendered_frame.h"
@@ -73,6 +74,33 @@ TEST(CoarseDepth, RangeVerdictIsExactlyWhetherNoPairPasses) {
     EXPECT_FALSE(pf::depthRangeFails(f, nan, nan, 0.5f, 0.5f));
     EXPECT_FALSE(pf::depthRangeFails(f, 0.5f, 0.5f, nan, nan));
   }
+}
+
+// depthPassMask (four depths at a time where SSE2 is, one at a time at a row's end) is bit i
+// = !depthRangeFails(func, zmin, zmax, d[i], d[i]), for every row length up to 64, stored
+// depths at, between and outside the range's ends, NaN and infinities among them.
+TEST(CoarseDepth, PassMaskIsTheRangeVerdictPerPixel) {
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  const float values[] = {-0.0f, 0.0f, 0.25f, 0.3f, 0.5f, 0.7f, 0.75f, 1.0f, nan, inf, -inf};
+  std::mt19937 rng(11);
+  std::vector<float> d(64);
+  int passed = 0, failed = 0;
+  for (DepthFunc f : kFuncs)
+    for (const auto& [zmin, zmax] : {std::pair{0.25f, 0.75f}, std::pair{0.5f, 0.5f}, std::pair{nan, nan},
+                                     std::pair{0.0f, 1.0f}, std::pair{0.75f, 0.25f}})
+      for (int n = 0; n <= 64; ++n)
+        for (int trial = 0; trial < 3; ++trial) {
+          for (float& v : d) v = values[rng() % std::size(values)];
+          const uint64_t m = pf::depthPassMask(f, zmin, zmax, d.data(), n);
+          for (int i = 0; i < 64; ++i) {
+            const bool want = i < n && !pf::depthRangeFails(f, zmin, zmax, d[i], d[i]);
+            ASSERT_EQ(((m >> i) & 1u) != 0, want) << static_cast<int>(f) << " [" << zmin << ", " << zmax << "] n "
+                                                  << n << " i " << i << " d " << d[i];
+            (want ? passed : failed) += i < n;
+          }
+        }
+  EXPECT_GT(passed, 1000);
+  EXPECT_GT(failed, 1000);
 }
 
 TEST(CoarseDepth, BlockRangesFollowTheBufferAsItIsWritten) {
