@@ -9,9 +9,28 @@
 
 namespace pf {
 
+namespace {
+
+// The properties glColorMaterial makes `face` track, set to `color` in `m` (in place: glColor
+// calls it at every vertex of a lit mesh).
+void trackInto(const LightingState& s, int face, const glm::vec4& color, Material& m) {
+  if (!s.color_material || (face == 0 && s.color_material_face == GL_BACK) ||
+      (face == 1 && s.color_material_face == GL_FRONT))
+    return;
+  switch (s.color_material_mode) {
+    case GL_AMBIENT: m.ambient = color; break;
+    case GL_DIFFUSE: m.diffuse = color; break;
+    case GL_SPECULAR: m.specular = color; break;
+    case GL_EMISSION: m.emission = color; break;
+    default: m.ambient = m.diffuse = color; break;
+  }
+}
+
+}  // namespace
+
 void LightingState::trackColor(const glm::vec4& color) {
   if (!color_material) return;
-  for (int face = 0; face < 2; ++face) material[face] = trackedMaterial(*this, face, color);
+  for (int face = 0; face < 2; ++face) trackInto(*this, face, color, material[face]);
 }
 
 glm::vec4 litColor(const LightingState& s, const glm::vec3& eye, const glm::vec3& normal_in, int face) {
@@ -20,16 +39,7 @@ glm::vec4 litColor(const LightingState& s, const glm::vec3& eye, const glm::vec3
 
 Material trackedMaterial(const LightingState& s, int face, const glm::vec4& color) {
   Material m = s.material[face];
-  if (!s.color_material || (face == 0 && s.color_material_face == GL_BACK) ||
-      (face == 1 && s.color_material_face == GL_FRONT))
-    return m;
-  switch (s.color_material_mode) {
-    case GL_AMBIENT: m.ambient = color; break;
-    case GL_DIFFUSE: m.diffuse = color; break;
-    case GL_SPECULAR: m.specular = color; break;
-    case GL_EMISSION: m.emission = color; break;
-    default: m.ambient = m.diffuse = color; break;
-  }
+  trackInto(s, face, color, m);
   return m;
 }
 

@@ -223,9 +223,11 @@ void PixelExecutor::noteCommitted(const PackedLanes* packed, int bx, int by, uin
   if (target.committed_pixels && alive) {
     constexpr int kBlocksPerRow = kTileSize / kBlockSize;
     if (packed) {
+      // (Unsigned: a lane's pixel lies in the tile, and the divisions by 8 become shifts.)
       for (uint64_t m = alive; m; m &= m - 1) {
         const int i = __builtin_ctzll(m);
-        const int x = packed->x[i] - target.tile_x0, y = packed->y[i] - target.tile_y0;
+        const unsigned x = static_cast<unsigned>(packed->x[i] - target.tile_x0);
+        const unsigned y = static_cast<unsigned>(packed->y[i] - target.tile_y0);
         target.committed_pixels[(y / kBlockSize) * kBlocksPerRow + x / kBlockSize] |=
             1ull << ((y % kBlockSize) * kBlockSize + x % kBlockSize);
       }
