@@ -182,6 +182,21 @@ TEST(Extensions, ExplodingPrimitiveCallsAreCutAndReported) {
   EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_TOO_MANY_ITERATIONS_EXT));
 }
 
+namespace {
+
+// A triangle strip of `n` vertices, all but the last three at one point (degenerate triangles),
+// the last three a triangle over pixel (8, 7).
+void degenerateStripThenATriangle(int n) {
+  pfglBegin(GL_TRIANGLE_STRIP);
+  for (int i = 0; i < n - 3; ++i) pfglVertex2f(0.5f, 0.5f);
+  pfglVertex2f(4, 4);
+  pfglVertex2f(12, 4);
+  pfglVertex2f(8, 12);
+  pfglEnd();
+}
+
+}  // namespace
+
 // The budget of calls scales with the iteration cap (32 calls an iteration): at a cap of 16,
 // two levels of 15 calls each (240 instances) stay within its 512 and three (3,615) pass it, while
 // no loop reaches the cap; a strip of more vertices than that is still drawn whole.
@@ -203,12 +218,7 @@ TEST(Extensions, TheCallBudgetIsThirtyTwoTimesTheIterationCap) {
   }
   pfglClearColor(0, 0, 0, 0);
   pfglClear(GL_COLOR_BUFFER_BIT);
-  pfglBegin(GL_TRIANGLE_STRIP);
-  for (int i = 0; i < 32 * 16 + 100; ++i) pfglVertex2f(0.5f, 0.5f);
-  pfglVertex2f(4, 4);
-  pfglVertex2f(12, 4);
-  pfglVertex2f(8, 12);
-  pfglEnd();
+  degenerateStripThenATriangle(32 * 16 + 103);
   pfglFinish();
   EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
   EXPECT_NE(c.px[(7 * 16 + 8) * 4 + 3], 0) << "the strip's last triangle is drawn";
@@ -238,19 +248,16 @@ TEST(Extensions, StripsFansAndPolygonsPast2To21VerticesAreDrawnWhole) {
     pfglClearColor(0, 0, 0, 0);
     pfglClear(GL_COLOR_BUFFER_BIT);
     const int n = (1 << 21) + 100;
-    pfglBegin(mode);
     if (mode == GL_TRIANGLE_STRIP) {
-      for (int i = 0; i < n - 3; ++i) pfglVertex2f(0.5f, 0.5f);
-      pfglVertex2f(4, 4);
-      pfglVertex2f(12, 4);
-      pfglVertex2f(8, 12);
+      degenerateStripThenATriangle(n);
     } else {  // the fan's centre and the polygon's first vertex are shared by every triangle
+      pfglBegin(mode);
       pfglVertex2f(4, 4);
       for (int i = 1; i < n - 2; ++i) pfglVertex2f(4, 4);
       pfglVertex2f(12, 4);
       pfglVertex2f(8, 12);
+      pfglEnd();
     }
-    pfglEnd();
     pfglFinish();
     EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
     EXPECT_NE(c.px[(7 * 16 + 8) * 4 + 3], 0) << "the last triangle is drawn";
