@@ -92,8 +92,10 @@ void printStats(PFcontext ctx, double ms) {
     std::printf("field evaluations  %llu points (%.1f per ray), %llu intervals\n",
                 static_cast<unsigned long long>(f.point_evaluations), double(f.point_evaluations) / double(f.rays),
                 static_cast<unsigned long long>(f.interval_evaluations));
-    std::printf("field slabs        %llu culled, %llu filled\n", static_cast<unsigned long long>(f.slabs_culled),
-                static_cast<unsigned long long>(f.slabs_filled));
+    std::printf("field slabs        %llu culled, %llu filled, %llu monotone; %llu ray segments searched, %llu left to samples\n",
+                static_cast<unsigned long long>(f.slabs_culled), static_cast<unsigned long long>(f.slabs_filled),
+                static_cast<unsigned long long>(f.slabs_monotone), static_cast<unsigned long long>(f.segments_searched),
+                static_cast<unsigned long long>(f.segments_left_to_samples));
     if (f.tape_ops_full)
       std::printf("tape ops pruned    %.1f%% (sampled slabs ran %llu of %llu instructions)\n",
                   100.0 * (1.0 - double(f.tape_ops_run) / double(f.tape_ops_full)),

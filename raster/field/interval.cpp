@@ -5,27 +5,8 @@
 #include <numbers>
 
 namespace pf::field {
+using namespace interval_detail;
 namespace {
-
-constexpr float kInf = std::numeric_limits<float>::infinity();
-
-// The largest float <= d (one step lower still when d is not exact).
-float roundDown(double d, bool exact) {
-  float f = static_cast<float>(d);
-  if (static_cast<double>(f) > d || (!exact && static_cast<double>(f) == d)) f = floatBelow(f);
-  return f;
-}
-float roundUp(double d, bool exact) {
-  float f = static_cast<float>(d);
-  if (static_cast<double>(f) < d || (!exact && static_cast<double>(f) == d)) f = floatAbove(f);
-  return f;
-}
-
-// [lo, hi] from double ends, or the whole line where either end is NaN.
-Interval outward(double lo, double hi, bool exact) {
-  if (std::isnan(lo) || std::isnan(hi)) return Interval::whole();
-  return {roundDown(lo, exact), roundUp(hi, exact)};
-}
 
 // A transcendental's double ends are within an ulp of double: one more float step each way.
 Interval outwardLibm(double lo, double hi) {
@@ -34,15 +15,7 @@ Interval outwardLibm(double lo, double hi) {
   return {floatBelow(r.lo), floatAbove(r.hi)};
 }
 
-// Whether a + b is exact in double (a and b floats, so the only loss is a large exponent gap).
-bool sumExact(double a, double b, double sum) {
-  if (std::fabs(a) < std::fabs(b)) std::swap(a, b);
-  return (sum - a) == b;  // Fast2Sum: the rounding error is b - (sum - a), computed exactly
-}
-
 }  // namespace
-
-Interval intervalNeg(Interval a) { return {-a.hi, -a.lo}; }
 
 Interval intervalAbs(Interval a) {
   if (a.lo >= 0.0f) return a;
@@ -105,22 +78,6 @@ static Interval periodicRange(Interval a, double phase_max, double (*fn)(double)
 Interval intervalSin(Interval a) { return periodicRange(a, std::numbers::pi / 2, [](double x) { return std::sin(x); }); }
 Interval intervalCos(Interval a) { return periodicRange(a, 0.0, [](double x) { return std::cos(x); }); }
 
-Interval intervalAdd(Interval a, Interval b) {
-  const double lo = static_cast<double>(a.lo) + b.lo, hi = static_cast<double>(a.hi) + b.hi;
-  if (std::isnan(lo) || std::isnan(hi)) return Interval::whole();
-  return {roundDown(lo, sumExact(a.lo, b.lo, lo)), roundUp(hi, sumExact(a.hi, b.hi, hi))};
-}
-
-Interval intervalSub(Interval a, Interval b) { return intervalAdd(a, intervalNeg(b)); }
-
-Interval intervalMul(Interval a, Interval b) {
-  const double p[4] = {static_cast<double>(a.lo) * b.lo, static_cast<double>(a.lo) * b.hi,
-                       static_cast<double>(a.hi) * b.lo, static_cast<double>(a.hi) * b.hi};
-  for (double v : p)
-    if (std::isnan(v)) return Interval::whole();
-  return outward(*std::min_element(p, p + 4), *std::max_element(p, p + 4), true);
-}
-
 Interval intervalDiv(Interval a, Interval b) {
   if (b.lo <= 0.0f && b.hi >= 0.0f) return Interval::whole();  // division by (possibly) zero
   const double q[4] = {static_cast<double>(a.lo) / b.lo, static_cast<double>(a.lo) / b.hi,
@@ -130,7 +87,5 @@ Interval intervalDiv(Interval a, Interval b) {
   return outward(*std::min_element(q, q + 4), *std::max_element(q, q + 4), false);
 }
 
-Interval intervalMin(Interval a, Interval b) { return {std::min(a.lo, b.lo), std::min(a.hi, b.hi)}; }
-Interval intervalMax(Interval a, Interval b) { return {std::max(a.lo, b.lo), std::max(a.hi, b.hi)}; }
 
 }  // namespace pf::field

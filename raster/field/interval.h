@@ -14,6 +14,7 @@
 // min and max of such an interval are still sound.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -46,7 +47,6 @@ inline float floatBelow(float v) {
 }
 inline float floatAbove(float v) { return -floatBelow(-v); }
 
-Interval intervalNeg(Interval a);
 Interval intervalAbs(Interval a);
 Interval intervalSquare(Interval a);
 Interval intervalSqrt(Interval a);
@@ -55,12 +55,65 @@ Interval intervalLog(Interval a);
 Interval intervalSin(Interval a);
 Interval intervalCos(Interval a);
 Interval intervalAtan(Interval a);
-Interval intervalAdd(Interval a, Interval b);
-Interval intervalSub(Interval a, Interval b);
-Interval intervalMul(Interval a, Interval b);
 Interval intervalDiv(Interval a, Interval b);
-Interval intervalMin(Interval a, Interval b);
-Interval intervalMax(Interval a, Interval b);
+
+// The operations every field is made of most, inline: the interval evaluators' inner loops.
+namespace interval_detail {
+
+// The largest float <= d (one step lower still when d is not exact).
+inline float roundDown(double d, bool exact) {
+  float f = static_cast<float>(d);
+  if (static_cast<double>(f) > d || (!exact && static_cast<double>(f) == d)) f = floatBelow(f);
+  return f;
+}
+inline float roundUp(double d, bool exact) {
+  float f = static_cast<float>(d);
+  if (static_cast<double>(f) < d || (!exact && static_cast<double>(f) == d)) f = floatAbove(f);
+  return f;
+}
+// [lo, hi] from double ends, or the whole line where either end is NaN.
+inline Interval outward(double lo, double hi, bool exact) {
+  if (std::isnan(lo) || std::isnan(hi)) return Interval::whole();
+  return {roundDown(lo, exact), roundUp(hi, exact)};
+}
+// Whether a + b is exact in double (a and b floats, so the only loss is a large exponent gap).
+inline bool sumExact(double a, double b, double sum) {
+  if (std::fabs(a) < std::fabs(b)) {
+    const double t = a;
+    a = b;
+    b = t;
+  }
+  return (sum - a) == b;  // Fast2Sum: the rounding error is b - (sum - a), computed exactly
+}
+
+}  // namespace interval_detail
+
+inline Interval intervalNeg(Interval a) { return {-a.hi, -a.lo}; }
+
+inline Interval intervalAdd(Interval a, Interval b) {
+  using namespace interval_detail;
+  const double lo = static_cast<double>(a.lo) + b.lo, hi = static_cast<double>(a.hi) + b.hi;
+  if (std::isnan(lo) || std::isnan(hi)) return Interval::whole();
+  return {roundDown(lo, sumExact(a.lo, b.lo, lo)), roundUp(hi, sumExact(a.hi, b.hi, hi))};
+}
+
+inline Interval intervalSub(Interval a, Interval b) { return intervalAdd(a, intervalNeg(b)); }
+
+// A product of two floats is exact in double; a NaN product (0 * inf) makes the whole line.
+inline Interval intervalMul(Interval a, Interval b) {
+  const double p0 = static_cast<double>(a.lo) * b.lo, p1 = static_cast<double>(a.lo) * b.hi,
+               p2 = static_cast<double>(a.hi) * b.lo, p3 = static_cast<double>(a.hi) * b.hi;
+  if (std::isnan(p0) || std::isnan(p1) || std::isnan(p2) || std::isnan(p3)) return Interval::whole();
+  double lo = p0, hi = p0;  // the first least and greatest, as std::min_element / max_element
+  for (double p : {p1, p2, p3}) {
+    if (p < lo) lo = p;
+    if (hi < p) hi = p;
+  }
+  return interval_detail::outward(lo, hi, true);
+}
+
+inline Interval intervalMin(Interval a, Interval b) { return {std::min(a.lo, b.lo), std::min(a.hi, b.hi)}; }
+inline Interval intervalMax(Interval a, Interval b) { return {std::max(a.lo, b.lo), std::max(a.hi, b.hi)}; }
 // The smallest interval holding both (either may be NaN, so the whole line if either is).
 inline Interval intervalHull(Interval a, Interval b) {
   if (a.isWhole() || b.isWhole()) return Interval::whole();

@@ -3,6 +3,9 @@
 #include "raster/field/ray_caster.h"
 
 #include "raster/field/cast_lanes.h"
+#include "raster/field/ray_box.h"
+#include "raster/field/interval_slope_evaluator.h"
+#include "raster/field/ray_search.h"
 
 #include <algorithm>
 #include <bit>
@@ -24,6 +27,9 @@ void FieldCounters::add(const FieldCounters& o) {
   lipschitz_overshoots += o.lipschitz_overshoots;
   analytic_fallbacks += o.analytic_fallbacks;
   iteration_cap_lanes += o.iteration_cap_lanes;
+  slabs_monotone += o.slabs_monotone;
+  segments_searched += o.segments_searched;
+  segments_left_to_samples += o.segments_left_to_samples;
 }
 
 struct FieldRayCaster::Slab {
@@ -45,61 +51,31 @@ namespace {
 constexpr int kMaxTileDepth = 6;    // tile slabs: at most 64 along t
 constexpr int kMaxBlockDepth = 16;  // block slabs: halvings along t below a tile slab
 constexpr int kLeafSize = 4;        // undecided regions stop splitting at 4x4 pixels (measured: 2x faster than 2x2 on the bear)
-constexpr int kBisections = 30;  // the bracket shrinks to 2^-30 of a sample step
-
-struct Box {
-  Interval x, y, z;
-  bool empty = false;
-};
-
-float down(double v) { return floatBelow(static_cast<float>(v)); }
-float up(double v) { return floatAbove(static_cast<float>(v)); }
-
-// The box of points o + t d, t in [a, b], of the given rays, intersected with the field's box
-// and rounded outward (one float step: the double points round to floats within half a step).
-template <int N>
-Box boxOf(const PixelRay* const (&rays)[N], double a, double b, const FieldRays& fr) {
-  double lo[3], hi[3];
-  for (int k = 0; k < 3; ++k) {
-    lo[k] = std::numeric_limits<double>::infinity();
-    hi[k] = -lo[k];
-  }
-  for (const PixelRay* r : rays) {
-    for (double t : {a, b}) {
-      const Vec3d p = r->at(t);
-      for (int k = 0; k < 3; ++k) {
-        lo[k] = std::min(lo[k], p[k]);
-        hi[k] = std::max(hi[k], p[k]);
-      }
-    }
-  }
-  Box box;
-  Interval* axes[3] = {&box.x, &box.y, &box.z};
-  for (int k = 0; k < 3; ++k) {
-    lo[k] = std::max(lo[k], fr.box_min[k]);
-    hi[k] = std::min(hi[k], fr.box_max[k]);
-    if (!(lo[k] <= hi[k])) box.empty = true;
-    *axes[k] = {down(lo[k]), up(hi[k])};
-  }
-  return box;
-}
+constexpr int kBisections = 40;  // a bracket shrinks to 2^-40 of its width, or to double precision
+// The interval method's stated width (ray_search.h): undecided segments of a ray are split down
+// to this fraction of the field box's diagonal; a solid thinner than that along the ray is the
+// only kind it can miss.
+constexpr double kStatedWidth = 1e-6;
+// A lane's share of interval evaluations in one slab's search (RaySearchLimits::soft_budget):
+// a crossing narrowed from a sample step to the stated width takes about 2 log2(1000), 20.
+constexpr uint64_t kSearchEvaluationsBase = 16, kSearchEvaluationsPerSample = 1;
 
 // The box of the rays through a rectangle of pixel centres [x0, x1] x [y0, y1] for t in
 // [a, b]: its four corner rays' points when the rays are affine in the pixel, else the field's
 // whole box (sound, and no culling along the ray).
-Box regionBox(const FieldRays& fr, double x0, double y0, double x1, double y1, double a, double b) {
+RayBox regionBox(const FieldRays& fr, double x0, double y0, double x1, double y1, double a, double b) {
   const PixelRay c[4] = {fr.unclipped(x0, y0), fr.unclipped(x1, y0), fr.unclipped(x0, y1), fr.unclipped(x1, y1)};
   bool ok = fr.affine();
   for (const PixelRay& r : c) ok = ok && !r.empty();
   if (!ok) {
-    Box whole;
-    whole.x = {down(fr.box_min[0]), up(fr.box_max[0])};
-    whole.y = {down(fr.box_min[1]), up(fr.box_max[1])};
-    whole.z = {down(fr.box_min[2]), up(fr.box_max[2])};
+    RayBox whole;
+    whole.x = {roundedDown(fr.box_min[0]), roundedUp(fr.box_max[0])};
+    whole.y = {roundedDown(fr.box_min[1]), roundedUp(fr.box_max[1])};
+    whole.z = {roundedDown(fr.box_min[2]), roundedUp(fr.box_max[2])};
     return whole;
   }
   const PixelRay* const corners[4] = {&c[0], &c[1], &c[2], &c[3]};
-  return boxOf(corners, a, b, fr);
+  return rayBoxOf(corners, a, b, fr);
 }
 
 double length(const Vec3d& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
@@ -130,9 +106,9 @@ std::shared_ptr<const FieldTape> simplifiedTape(const std::shared_ptr<const Fiel
   return tape;
 }
 
-HitBox hitBoxOf(const Box& b) { return {{b.x.lo, b.y.lo, b.z.lo}, {b.x.hi, b.y.hi, b.z.hi}}; }
+HitBox hitBoxOf(const RayBox& b) { return {{b.x.lo, b.y.lo, b.z.lo}, {b.x.hi, b.y.hi, b.z.hi}}; }
 
-Interval evaluateBox(IntervalEvaluator& ie, const Box& b, std::vector<Choice>* choices) {
+Interval evaluateBox(IntervalEvaluator& ie, const RayBox& b, std::vector<Choice>* choices) {
   return ie.evaluate(b.x, b.y, b.z, choices);
 }
 
@@ -141,7 +117,7 @@ Interval evaluateBox(IntervalEvaluator& ie, const Box& b, std::vector<Choice>* c
 // (f >= 0 throughout) or undecided; with the tape simplified for the region's box.
 struct RegionVerdict {
   enum Kind { Empty, Full, Undecided } kind = Empty;
-  Box box;
+  RayBox box;
   std::shared_ptr<const FieldTape> tape;
 };
 
@@ -161,6 +137,28 @@ RegionVerdict judgeRegion(const FieldRays& rays, double x0, double y0, double x1
   v.kind = f.allNonNegative() ? RegionVerdict::Full : RegionVerdict::Undecided;
   v.tape = simplifiedTape(tape, choices);
   return v;
+}
+
+// f and its rate along the rays through a rectangle of pixel centres, over the region's box and
+// the box of the rays' directions (the corner rays' hull: directions are affine in the pixel
+// where the rays are); the whole line for rays that are not affine.
+IntervalSlope regionSlope(IntervalSlopeEvaluator& se, const FieldRays& fr, const RayBox& box, double x0, double y0,
+                          double x1, double y1, FieldCounters& c) {
+  const IntervalSlope unknown{Interval::whole(), Interval::whole()};
+  if (!fr.affine()) return unknown;
+  const PixelRay corner[4] = {fr.unclipped(x0, y0), fr.unclipped(x1, y0), fr.unclipped(x0, y1), fr.unclipped(x1, y1)};
+  Interval d[3];
+  for (int k = 0; k < 3; ++k) {
+    double lo = corner[0].direction[k], hi = lo;
+    for (const PixelRay& ray : corner) {
+      if (ray.empty()) return unknown;
+      lo = std::min(lo, ray.direction[k]);
+      hi = std::max(hi, ray.direction[k]);
+    }
+    d[k] = {roundedDown(lo), roundedUp(hi)};
+  }
+  ++c.interval_evaluations;
+  return se.evaluate(box.x, box.y, box.z, d[0], d[1], d[2]);
 }
 
 // Whether some coordinate the field reads changes along the rays (checked on the centre ray of
@@ -300,7 +298,7 @@ void FieldRayCaster::regionSlab(const CastRequest& r, int bx, int by, const Lane
   const double x1 = x0 + rect.size - 1, y1 = y0 + rect.size - 1;
   const RegionVerdict v = judgeRegion(r.rays, x0, y0, x1, y1, ta, tb, tape, c);
   if (v.kind == RegionVerdict::Empty) return;
-  const Box& box = v.box;
+  const RayBox& box = v.box;
   const std::shared_ptr<const FieldTape>& simplified = v.tape;
   if (v.kind == RegionVerdict::Full) {
     ++c.slabs_filled;
@@ -328,8 +326,10 @@ void FieldRayCaster::regionSlab(const CastRequest& r, int bx, int by, const Lane
       regionSlab(r, bx, by, {rect.x + (q % 2) * h, rect.y + (q / 2) * h, h}, ta, tb, simplified, depth, lanes, c);
     return;
   }
-  // An undecided slab a few pixels wide: sample each lane's part of it at steps under half a
-  // pixel's footprint, then bisect the first sign change.
+  // An undecided slab a few pixels wide: each lane's part of it is sampled at steps under half
+  // a pixel's footprint (in batches across lanes), then searched soundly (ray_search.h): the
+  // samples before the first one inside are proven clear by intervals, and the bracket of the
+  // first sign change is narrowed with its front halves proven clear, down to the stated width.
   c.tape_ops_full += r.field->tape.size();
   c.tape_ops_run += simplified->size();
   const PixelRay mid = r.rays.unclipped(0.5 * (x0 + x1), 0.5 * (y0 + y1));
@@ -345,7 +345,7 @@ void FieldRayCaster::regionSlab(const CastRequest& r, int bx, int by, const Lane
   const int steps = !varies ? 0
                     : pixel > 0.0 ? static_cast<int>(std::clamp(std::ceil(depth_len / (0.5 * pixel)), 1.0, 256.0))
                                   : 16;
-  double from[kLanes], to[kLanes];
+  double from[kLanes], to[kLanes], lo[kLanes], hi[kLanes];
   for (uint64_t p = over; p; p &= p - 1) {
     const int i = std::countr_zero(p);
     from[i] = std::max(ta, lanes.ray[i].entry);
@@ -354,20 +354,76 @@ void FieldRayCaster::regionSlab(const CastRequest& r, int bx, int by, const Lane
   FloatEvaluator fe(*simplified);
   lanes.deciding_tape = simplified;
   lanes.deciding_box = hitBoxOf(box);
-  sampleAndBisect(fe, lanes, over, from, to, steps, c);
+  if (!varies) {
+    bisectBrackets(fe, lanes, sampleForBrackets(fe, lanes, over, from, to, 0, lo, hi, c), lo, hi, c);
+    lanes.deciding_tape = nullptr;
+    return;
+  }
+  IntervalSlopeEvaluator se(*simplified);
+  const IntervalSlope slope = regionSlope(se, r.rays, box, x0, y0, x1, y1, c);
+  // f proven monotone along every ray of the slab: one crossing at most per lane, found from
+  // the lane's two ends -- no samples, no search.
+  if (slope.monotone()) {
+    ++c.slabs_monotone;
+    bisectBrackets(fe, lanes, sampleForBrackets(fe, lanes, over, from, to, 1, lo, hi, c), lo, hi, c);
+    lanes.deciding_tape = nullptr;
+    return;
+  }
+  SampleGaps gaps;
+  const bool continuous = !slope.rate.isWhole() && std::isfinite(slope.value.lo) && std::isfinite(slope.value.hi);
+  gaps.rate_bound = continuous ? std::max(std::fabs(slope.rate.lo), std::fabs(slope.rate.hi))
+                               : std::numeric_limits<double>::infinity();
+
+  const uint64_t sampled = lanes.pending & over;
+  uint64_t bracketed = sampleForBrackets(fe, lanes, over, from, to, steps, lo, hi, c, &gaps);
+  IntervalEvaluator ie(*simplified);
+  RaySegmentSearch search(ie, se, fe, r.rays, c);
+  const double diagonal = length({r.rays.box_max[0] - r.rays.box_min[0], r.rays.box_max[1] - r.rays.box_min[1],
+                                  r.rays.box_max[2] - r.rays.box_min[2]});
+  // Lanes still pending after the samples: those with a bracket, and those with no sample
+  // inside. The gaps before the first one the rate bound cannot clear are clear.
+  for (uint64_t p = sampled & lanes.pending; p; p &= p - 1) {
+    const int i = std::countr_zero(p);
+    const PixelRay& ray = lanes.ray[i];
+    RaySearchLimits limits;
+    limits.stated_width = kStatedWidth * diagonal / length(ray.direction);
+    limits.sample_step = (to[i] - from[i]) / steps;
+    limits.budget = r.iteration_cap;
+    limits.rate_bound = gaps.rate_bound;
+    limits.soft_budget = kSearchEvaluationsPerSample * static_cast<uint64_t>(steps + 1) + kSearchEvaluationsBase;
+    const bool has_bracket = bracketed >> i & 1;
+    RaySearchOutcome found;
+    if (!std::isinf(gaps.open_t[i])) {
+      ++c.segments_searched;
+      found = search.clear(ray, gaps.open_t[i], gaps.open_f[i], lo[i], gaps.f_lo[i], limits);
+    }
+    if (found.kind == RaySearchOutcome::Nothing && has_bracket) found = search.refine(ray, lo[i], gaps.f_lo[i], hi[i], limits);
+    bracketed &= ~(uint64_t(1) << i);
+    switch (found.kind) {
+      case RaySearchOutcome::Nothing: break;  // stays pending: a later slab may hold its surface
+      case RaySearchOutcome::Surface: lanes.hit(i, found.lo); break;
+      case RaySearchOutcome::Runaway: lanes.pending &= ~(uint64_t(1) << i); break;  // a miss, counted
+      case RaySearchOutcome::Bracket:
+        lo[i] = found.lo;
+        hi[i] = found.hi;
+        bracketed |= uint64_t(1) << i;
+        break;
+    }
+  }
+  bisectBrackets(fe, lanes, bracketed, lo, hi, c);
   lanes.deciding_tape = nullptr;
 }
 
 // For each lane in `which`: samples t_k = from + k (to - from) / steps, k = 0..steps (steps = 0:
-// only `from`), in batches
-// across lanes; the first sample with f >= 0 ends the lane -- at `from` if it is the first, else
-// after bisecting the bracket [t_(k-1), t_k] to the double precision of t.
-void FieldRayCaster::sampleAndBisect(FloatEvaluator& eval, Lanes& lanes, uint64_t which, const double* from,
-                                     const double* to, int steps, FieldCounters& c) {
+// only `from`), in batches across lanes; the first sample with f >= 0 ends the lane at `from` if
+// it is the first, else brackets it: [lo, hi] = [t_(k-1), t_k], the lane's bit set in the result.
+// Lanes with no sample inside are neither. With `gaps`, also notes per lane f(lo) and the first
+// gap between outside samples that the rate bound does not prove clear (SampleGaps).
+uint64_t FieldRayCaster::sampleForBrackets(FloatEvaluator& eval, Lanes& lanes, uint64_t which, const double* from,
+                                           const double* to, int steps, double* lo, double* hi, FieldCounters& c,
+                                           SampleGaps* gaps) {
   float f[kLanes];
   int index[kLanes];
-  double lo[kLanes], hi[kLanes];  // bracket: f(lo) < 0 <= f(hi)
-  auto evaluateAt = [&](uint64_t set, const double* ts) { return lanes.evaluateAt(eval, set, ts, f, index, c); };
   uint64_t searching = which, bracketed = 0;
   double tk[kLanes];
   for (int k = 0; k <= steps && searching; ++k) {
@@ -375,7 +431,7 @@ void FieldRayCaster::sampleAndBisect(FloatEvaluator& eval, Lanes& lanes, uint64_
       const int i = std::countr_zero(p);
       tk[i] = k == 0 ? from[i] : k == steps ? to[i] : from[i] + (to[i] - from[i]) * (static_cast<double>(k) / steps);
     }
-    const int n = evaluateAt(searching, tk);
+    const int n = lanes.evaluateAt(eval, searching, tk, f, index, c);
     for (int j = 0; j < n; ++j) {
       const int i = index[j];
       if (f[j] >= 0.0f) {
@@ -386,18 +442,37 @@ void FieldRayCaster::sampleAndBisect(FloatEvaluator& eval, Lanes& lanes, uint64_
           hi[i] = tk[i];
           bracketed |= uint64_t(1) << i;
         }
-      } else {
-        lo[i] = tk[i];
+        continue;
       }
+      if (gaps) {
+        if (k == 0) {
+          gaps->open_t[i] = std::numeric_limits<double>::infinity();
+        } else if (std::isinf(gaps->open_t[i]) &&
+                   !clearByRateBound(gaps->f_lo[i], f[j], tk[i] - lo[i], gaps->rate_bound)) {
+          gaps->open_t[i] = lo[i];
+          gaps->open_f[i] = gaps->f_lo[i];
+        }
+        gaps->f_lo[i] = f[j];
+      }
+      lo[i] = tk[i];
     }
   }
+  return bracketed;
+}
+
+// Bisects each bracket f(lo) < 0 <= f(hi) of the lanes in `bracketed` to the double precision of
+// t (at most kBisections halvings) and ends the lane at its upper end.
+void FieldRayCaster::bisectBrackets(FloatEvaluator& eval, Lanes& lanes, uint64_t bracketed, double* lo, double* hi,
+                                    FieldCounters& c) {
+  float f[kLanes];
+  int index[kLanes];
   for (int it = 0; it < kBisections && bracketed; ++it) {
     double mid[kLanes];
     for (uint64_t p = bracketed; p; p &= p - 1) {
       const int i = std::countr_zero(p);
       mid[i] = 0.5 * (lo[i] + hi[i]);
     }
-    const int n = evaluateAt(bracketed, mid);
+    const int n = lanes.evaluateAt(eval, bracketed, mid, f, index, c);
     for (int j = 0; j < n; ++j) {
       const int i = index[j];
       if (f[j] >= 0.0f) hi[i] = mid[i];
@@ -409,7 +484,15 @@ void FieldRayCaster::sampleAndBisect(FloatEvaluator& eval, Lanes& lanes, uint64_
     }
   }
   for (uint64_t p = bracketed; p; p &= p - 1) lanes.hit(std::countr_zero(p), hi[std::countr_zero(p)]);
-  // Lanes that found nothing in [from, to] stay pending: a later slab may hold their surface.
+}
+
+// The march's search: the first sign change among the samples, bisected. Lanes that found
+// nothing in [from, to] stay pending: a later slab may hold their surface.
+void FieldRayCaster::sampleAndBisect(FloatEvaluator& eval, Lanes& lanes, uint64_t which, const double* from,
+                                     const double* to, int steps, FieldCounters& c) {
+  double lo[kLanes], hi[kLanes];
+  const uint64_t bracketed = sampleForBrackets(eval, lanes, which, from, to, steps, lo, hi, c);
+  bisectBrackets(eval, lanes, bracketed, lo, hi, c);
 }
 
 }  // namespace pf::field

@@ -47,6 +47,9 @@ struct FieldCounters {
   uint64_t interval_evaluations = 0;  // interval evaluations of a tape over a box
   uint64_t slabs_culled = 0;          // tile or block slabs proven empty
   uint64_t slabs_filled = 0;          // proven entirely inside
+  uint64_t slabs_monotone = 0;        // undecided 4x4-pixel slabs where f is proven monotone along the rays
+  uint64_t segments_searched = 0;     // lanes' parts of the other undecided slabs, searched ray by ray
+  uint64_t segments_left_to_samples = 0;  // ... where the enclosures did not shrink (ray_search.h)
   uint64_t tape_ops_full = 0;         // per sampled block slab: the field's instructions ...
   uint64_t tape_ops_run = 0;          // ... and those its simplified tape kept
   uint64_t lipschitz_overshoots = 0;  // sphere tracing steps that showed the bound too small
@@ -99,6 +102,14 @@ class FieldRayCaster {
  private:
   struct Slab;
   struct TileSlabs;
+  // Per lane of a sampled slab: f at its last outside sample (lo), and where the first gap
+  // between outside samples begins that the rate bound could not prove clear (+inf: none).
+  struct SampleGaps {
+    double rate_bound = 0.0;
+    double open_t[kLanes];
+    float open_f[kLanes];
+    float f_lo[kLanes];
+  };
   using Lanes = CastLanes;
 
   void castInterval(const CastRequest& r, int bx, int by, Lanes& lanes, FieldCounters& c);
@@ -110,6 +121,9 @@ class FieldRayCaster {
   const TileSlabs& tileSlabs(const CastRequest& r, int bx, int by, FieldCounters& c);
   void sampleAndBisect(FloatEvaluator& eval, Lanes& lanes, uint64_t which, const double* from, const double* to,
                        int steps, FieldCounters& c);
+  uint64_t sampleForBrackets(FloatEvaluator& eval, Lanes& lanes, uint64_t which, const double* from, const double* to,
+                             int steps, double* lo, double* hi, FieldCounters& c, SampleGaps* gaps = nullptr);
+  void bisectBrackets(FloatEvaluator& eval, Lanes& lanes, uint64_t bracketed, double* lo, double* hi, FieldCounters& c);
   void castSphere(const CastRequest& r, int bx, int by, Lanes& lanes, FieldCounters& c);
   void castAnalytic(const CastRequest& r, int bx, int by, Lanes& lanes, FieldCounters& c);
   FloatEvaluator& fullEvaluator(const ImplicitField& field);

@@ -98,9 +98,10 @@ struct Comparison {
   FieldCounters counters;
 };
 
-// Casts every block of a w x h image and compares with the reference per pixel.
-inline Comparison compare(const ImplicitField& field, const FieldRays& rays, int w, int h, RootMethod method, float param,
-                   int reference_steps) {
+// Casts the blocks of the window [x0, x0 + w) x [y0, y0 + h) of an image (x0, y0 multiples of 8)
+// and compares with the reference per pixel.
+inline Comparison compareWindow(const ImplicitField& field, const FieldRays& rays, int x0, int y0, int w, int h,
+                                RootMethod method, float param, int reference_steps) {
   FieldRayCaster caster;
   CastRequest req;
   req.field = &field;
@@ -108,11 +109,11 @@ inline Comparison compare(const ImplicitField& field, const FieldRays& rays, int
   req.method = method;
   req.param = param;
   Comparison cmp;
-  for (int by = 0; by < h; by += 8)
-    for (int bx = 0; bx < w; bx += 8) {
+  for (int by = y0; by < y0 + h; by += 8)
+    for (int bx = x0; bx < x0 + w; bx += 8) {
       uint64_t mask = 0;
       for (int i = 0; i < 64; ++i)
-        if (bx + i % 8 < w && by + i / 8 < h) mask |= uint64_t(1) << i;
+        if (bx + i % 8 < x0 + w && by + i / 8 < y0 + h) mask |= uint64_t(1) << i;
       float t[64];
       caster.castBlock(req, bx, by, mask, t, cmp.counters);
       for (int i = 0; i < 64; ++i) {
@@ -131,6 +132,12 @@ inline Comparison compare(const ImplicitField& field, const FieldRays& rays, int
       }
     }
   return cmp;
+}
+
+// The whole w x h image.
+inline Comparison compare(const ImplicitField& field, const FieldRays& rays, int w, int h, RootMethod method, float param,
+                          int reference_steps) {
+  return compareWindow(field, rays, 0, 0, w, h, method, param, reference_steps);
 }
 
 }  // namespace pf::field
