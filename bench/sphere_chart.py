@@ -4,7 +4,8 @@
     /usr/bin/python3 bench/sphere_chart.py [CSV] [PNG]
 
 CSV defaults to bench/results_spheres.csv (written by pfspheres), PNG to
-docs/images/sphere_vs_tessellation.png. One curve per sphere count through the gluSphere levels
+docs/images/sphere_vs_tessellation.png. The rows of the most threads the CSV holds are drawn
+(bench/run_spheres measures 1 and 2). One curve per sphere count through the gluSphere levels
 (labelled with their slices), and primflow's sphere primitive for that count as a star. The error
 is the mismatched pixels (missing + extra + wrong sphere) against the exact image, on a symlog
 axis since primflow's can be zero. Needs matplotlib (Debian python3-matplotlib).
@@ -52,6 +53,8 @@ def main(argv):
     rows = load_rows(csv_path)
     if not rows:
         sys.exit(f"sphere_chart.py: no rows in {csv_path}")
+    most = max(int(r["threads"]) for r in rows)
+    rows = [r for r in rows if int(r["threads"]) == most]
     fig, ax = plt.subplots(figsize=(9, 6), dpi=100)
     for i, spheres in enumerate(sorted({int(r["spheres"]) for r in rows})):
         plot_count(ax, rows, spheres, f"C{i}")

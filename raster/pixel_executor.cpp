@@ -12,6 +12,7 @@
 #include "compiler/native/native_cache.h"
 #include "compiler/record_reads.h"
 #include "compiler/scalar_ops.h"
+#include "raster/lane_count.h"
 #include "raster/setup_executor.h"
 
 namespace pf {
@@ -210,7 +211,7 @@ void PixelExecutor::runBlocks(const CompiledPrimitive& prim, const uint32_t* rec
       prepared = true;
     }
     ++counters.blocks_run;
-    counters.lanes_started += static_cast<uint64_t>(__builtin_popcountll(mask));
+    counters.lanes_started += static_cast<uint64_t>(laneCount(mask));
     const uint64_t alive = native_.call(fns[which], native_call_, bx, by, mask, counters.iteration_cap_lanes,
                                         counters.cap_primitive);
     noteCommitted(nullptr, bx, by, alive, target);
@@ -219,7 +220,7 @@ void PixelExecutor::runBlocks(const CompiledPrimitive& prim, const uint32_t* rec
 }
 
 void PixelExecutor::noteCommitted(const PackedLanes* packed, int bx, int by, uint64_t alive, const BlockTarget& target) {
-  counters.lanes_committed += static_cast<uint64_t>(__builtin_popcountll(alive));
+  counters.lanes_committed += static_cast<uint64_t>(laneCount(alive));
   if (target.committed_pixels && alive) {
     constexpr int kBlocksPerRow = kTileSize / kBlockSize;
     if (packed) {
@@ -313,7 +314,7 @@ void PixelExecutor::runAndCommit(const CompiledPrimitive& prim, const PixelProgr
                                  const uint32_t* shared_records, bool wide_record) {
   const int nch = layout.count;
   ++counters.blocks_run;
-  counters.lanes_started += static_cast<uint64_t>(__builtin_popcountll(mask));
+  counters.lanes_started += static_cast<uint64_t>(laneCount(mask));
   // Native code, where there is some for the program: the block whole, commit included.
   NativeBlockFunction native;
   if (use_native)

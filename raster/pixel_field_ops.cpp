@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "raster/field/float_evaluator.h"
+#include "raster/lane_count.h"
 #include "raster/pixel_executor.h"
 
 namespace pf {
@@ -91,7 +92,7 @@ float fieldGradientAt(field::GradientEvaluator& ge, const float q[3], int axis, 
 
 const field::ImplicitField* PixelExecutor::lookUpField(const RasterState& state, float id, uint64_t exec) {
   const field::ImplicitField* f = fieldById(state, id);
-  if (!f) counters.unknown_field_lanes += static_cast<uint64_t>(__builtin_popcountll(exec));
+  if (!f) counters.unknown_field_lanes += static_cast<uint64_t>(laneCount(exec));
   return f;
 }
 
@@ -178,7 +179,7 @@ void PixelExecutor::fieldGradient(const RasterState& state, uint64_t exec, float
     gc.field = f;
     gc.by_differences = by_differences;
     gc.lanes = exec;
-    counters.field.point_evaluations += static_cast<uint64_t>(__builtin_popcountll(exec)) * (by_differences ? 6 : 1);
+    counters.field.point_evaluations += static_cast<uint64_t>(laneCount(exec)) * (by_differences ? 6 : 1);
   }
   for (uint64_t m = exec; m; m &= m - 1) {
     const int i = __builtin_ctzll(m);

@@ -13,6 +13,7 @@
 #include <cstring>
 
 #include "compiler/scalar_ops.h"
+#include "raster/lane_count.h"
 #include "raster/lane_kernels.h"
 
 namespace pf {
@@ -280,7 +281,7 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const PixelProgra
         if (depth > 0 && ++stack[depth - 1].iterations >= state.iteration_cap) {
           // Runaway: the lanes still looping stop here and draw nothing.
           uint64_t stuck = alive & cur;
-          counters.iteration_cap_lanes += static_cast<uint64_t>(__builtin_popcountll(stuck));
+          counters.iteration_cap_lanes += static_cast<uint64_t>(laneCount(stuck));
           counters.cap_primitive = &prim;
           alive &= ~stuck;
           cur = 0;

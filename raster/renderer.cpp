@@ -1,6 +1,8 @@
 // The renderer (see renderer.h).
 #include "raster/renderer.h"
 
+#include "raster/lane_count.h"
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -563,9 +565,9 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
         }
         if (cull) {
           const uint64_t pass = mayPass(ix0, y, ix1 - ix0);
-          // (popcount is a library call on baseline x86-64, still cheaper than a loop over the
-          // bits: overlapping small instances cull most of their rows' pixels.)
-          s.pixels_depth_culled += static_cast<uint64_t>(std::popcount(row & ~pass));
+          // (Counted with laneCount, not a loop over the bits: overlapping small instances
+          // cull most of their rows' pixels.)
+          s.pixels_depth_culled += static_cast<uint64_t>(laneCount(row & ~pass));
           row &= pass;
         }
         return row;

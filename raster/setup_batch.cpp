@@ -15,6 +15,7 @@
 
 #include "compiler/native/native_cache.h"
 #include "compiler/scalar_ops.h"
+#include "raster/lane_count.h"
 #include "raster/lane_kernels.h"
 #include "raster/limits.h"
 #include "raster/native_blocks.h"
@@ -198,7 +199,7 @@ void BatchSetupExecutor::runBatch(const CompiledPrimitive& prim, const SetupInpu
       out[l].iteration_cap_hit = cap_hit;
       out[l].instructions = count;
     });
-    counters.lanes_batched += static_cast<uint64_t>(std::popcount(active));
+    counters.lanes_batched += static_cast<uint64_t>(laneCount(active));
   };
 
   const size_t n = p.code.size();
@@ -233,14 +234,14 @@ void BatchSetupExecutor::runBatch(const CompiledPrimitive& prim, const SetupInpu
     });
     count = a.instructions;
     if (status == NativeSetupStatus::Killed || status == NativeSetupStatus::CapHit) {
-      counters.lanes_native += static_cast<uint64_t>(std::popcount(active));
+      counters.lanes_native += static_cast<uint64_t>(laneCount(active));
       killAll(status == NativeSetupStatus::CapHit);
       return;
     }
     if (status == NativeSetupStatus::Done) {  // (the records written)
       forActive([&](int l) { out[l].instructions = count; });
-      counters.lanes_native += static_cast<uint64_t>(std::popcount(active));
-      counters.lanes_batched += static_cast<uint64_t>(std::popcount(active));
+      counters.lanes_native += static_cast<uint64_t>(laneCount(active));
+      counters.lanes_batched += static_cast<uint64_t>(laneCount(active));
       return;
     }
     loadFile(false);  // (the registers written)
@@ -296,7 +297,7 @@ void BatchSetupExecutor::runBatch(const CompiledPrimitive& prim, const SetupInpu
         leaveAll(leave_pc, count);
         active = stay;
         if (!stay_on) pc = ins.a;
-        if (std::popcount(active) < kMinBatchLanes) {
+        if (laneCount(active) < kMinBatchLanes) {
           leaveAll(static_cast<uint32_t>(pc), count);
           return;
         }
@@ -437,7 +438,7 @@ void BatchSetupExecutor::runBatch(const CompiledPrimitive& prim, const SetupInpu
       for (int c = 0; c < nch; ++c) xrec[s * nch + c] = x[c * K + l];
     }
   });
-  counters.lanes_batched += static_cast<uint64_t>(std::popcount(active));
+  counters.lanes_batched += static_cast<uint64_t>(laneCount(active));
 }
 
 }  // namespace pf
