@@ -460,8 +460,9 @@ uint64_t FieldRayCaster::sampleForBrackets(FloatEvaluator& eval, Lanes& lanes, u
   return bracketed;
 }
 
-// Bisects each bracket f(lo) < 0 <= f(hi) of the lanes in `bracketed` to the double precision of
-// t (at most kBisections halvings) and ends the lane at its upper end.
+// Bisects each bracket f(lo) < 0 <= f(hi) of the lanes in `bracketed` to the float the lane's t
+// is returned as, or to the double precision of t (at most kBisections halvings), and ends the
+// lane at its upper end.
 void FieldRayCaster::bisectBrackets(FloatEvaluator& eval, Lanes& lanes, uint64_t bracketed, double* lo, double* hi,
                                     FieldCounters& c) {
   float f[kLanes];
@@ -477,7 +478,11 @@ void FieldRayCaster::bisectBrackets(FloatEvaluator& eval, Lanes& lanes, uint64_t
       const int i = index[j];
       if (f[j] >= 0.0f) hi[i] = mid[i];
       else lo[i] = mid[i];
-      if (!(hi[i] - lo[i] > 1e-12 * std::max(1.0, std::fabs(hi[i])))) {
+      // Done at double precision, or once both ends round to the same float: the lane's t
+      // leaves the caster as a float (castBlock), and every t between the ends rounds to that
+      // float too -- further halvings could not change it (rounding is monotone).
+      if (!(hi[i] - lo[i] > 1e-12 * std::max(1.0, std::fabs(hi[i]))) ||
+          static_cast<float>(lo[i]) == static_cast<float>(hi[i])) {
         lanes.hit(i, hi[i]);
         bracketed &= ~(uint64_t(1) << i);
       }
