@@ -130,8 +130,9 @@ FieldTape FieldTapeBuilder::finish(uint32_t result) {
 }
 
 // Marks what `result` needs, following only the chosen operand of a decided min/max/select, then
-// copies the needed instructions in order with renumbered operands.
-static FieldTape rebuild(const FieldTape& tape, const std::vector<Choice>* choices) {
+// copies the needed instructions in order with renumbered operands into `out`.
+static void rebuild(const FieldTape& tape, const std::vector<Choice>* choices, FieldTape& out,
+                    SimplifyScratch& scratch) {
   const size_t n = tape.instrs.size();
   auto chosen = [&](uint32_t i) -> Choice {
     if (!choices) return Choice::Both;
@@ -139,7 +140,8 @@ static FieldTape rebuild(const FieldTape& tape, const std::vector<Choice>* choic
     return (op == FieldOp::Min || op == FieldOp::Max || op == FieldOp::Select) ? (*choices)[i] : Choice::Both;
   };
   // forward[i]: the value that stands for value i once decided min/max/select are bypassed.
-  std::vector<uint32_t> forward(n);
+  std::vector<uint32_t>& forward = scratch.forward;
+  forward.resize(n);
   for (uint32_t i = 0; i < n; ++i) {
     const FieldInstr& in = tape.instrs[i];
     const Choice c = chosen(i);
@@ -148,7 +150,8 @@ static FieldTape rebuild(const FieldTape& tape, const std::vector<Choice>* choic
                  : c == Choice::Right ? forward[select ? in.c : in.b]
                                       : i;
   }
-  std::vector<char> live(n, 0);
+  std::vector<char>& live = scratch.live;
+  live.assign(n, 0);
   if (n) live[forward[tape.result]] = 1;
   for (size_t k = n; k-- > 0;) {
     if (!live[k]) continue;
@@ -158,8 +161,9 @@ static FieldTape rebuild(const FieldTape& tape, const std::vector<Choice>* choic
     if (arity >= 2) live[forward[in.b]] = 1;
     if (arity == 3) live[forward[in.c]] = 1;
   }
-  FieldTape out;
-  std::vector<uint32_t> renumber(n, 0);
+  out.instrs.clear();
+  std::vector<uint32_t>& renumber = scratch.renumber;
+  renumber.assign(n, 0);
   for (uint32_t i = 0; i < n; ++i) {
     if (!live[i]) continue;
     FieldInstr in = tape.instrs[i];
@@ -171,11 +175,24 @@ static FieldTape rebuild(const FieldTape& tape, const std::vector<Choice>* choic
     out.instrs.push_back(in);
   }
   out.result = n ? renumber[forward[tape.result]] : 0;
+}
+
+FieldTape removeDeadCode(const FieldTape& tape) {
+  FieldTape out;
+  SimplifyScratch scratch;
+  rebuild(tape, nullptr, out, scratch);
   return out;
 }
 
-FieldTape removeDeadCode(const FieldTape& tape) { return rebuild(tape, nullptr); }
+FieldTape simplify(const FieldTape& tape, const std::vector<Choice>& choices) {
+  FieldTape out;
+  SimplifyScratch scratch;
+  rebuild(tape, &choices, out, scratch);
+  return out;
+}
 
-FieldTape simplify(const FieldTape& tape, const std::vector<Choice>& choices) { return rebuild(tape, &choices); }
+void simplifyInto(const FieldTape& tape, const std::vector<Choice>& choices, FieldTape& out, SimplifyScratch& scratch) {
+  rebuild(tape, &choices, out, scratch);
+}
 
 }  // namespace pf::field

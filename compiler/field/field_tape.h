@@ -97,6 +97,16 @@ class FieldTapeBuilder {
 // hold -- bit for bit, since a min/max that returns one operand returns it unchanged.
 FieldTape simplify(const FieldTape& tape, const std::vector<Choice>& choices);
 
+// The working arrays of simplification, kept to simplify the next tape without allocating.
+struct SimplifyScratch {
+  std::vector<uint32_t> forward, renumber;
+  std::vector<char> live;
+};
+// simplify(tape, choices) into `out` (not `tape` itself), reusing its storage and the scratch's:
+// once they have grown to the tapes' size, simplifying allocates nothing. The same tape,
+// instruction for instruction.
+void simplifyInto(const FieldTape& tape, const std::vector<Choice>& choices, FieldTape& out, SimplifyScratch& scratch);
+
 // The same tape with unreachable instructions removed and values renumbered.
 FieldTape removeDeadCode(const FieldTape& tape);
 

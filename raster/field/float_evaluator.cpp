@@ -65,8 +65,23 @@ SlotProgram slotProgramOf(const FieldTape& tape) {
 FloatEvaluator::FloatEvaluator(const FieldTape& tape)
     : program_(slotProgramOf(tape)), slots_(static_cast<size_t>(program_.slot_count) * kBatch, 0.0f) {}
 
+void FloatEvaluator::reset(const FieldTape& tape) {
+  try {
+    buildSlotProgram(tape, program_, scratch_);
+  } catch (...) {
+    program_ = SlotProgram{};
+    throw;
+  }
+  const size_t size = static_cast<size_t>(program_.slot_count) * kBatch;
+  if (slots_.size() < size) slots_.resize(size, 0.0f);
+}
+
 void FloatEvaluator::evaluate(const float* x, const float* y, const float* z, int n, float* out) {
   n = std::clamp(n, 0, kBatch);
+  if (program_.code.empty()) {
+    std::fill(out, out + n, 0.0f);
+    return;
+  }
   runFloatSlots(program_.code.data(), program_.code.size(), slots_.data(), x, y, z, n);
   const float* r = slots_.data() + static_cast<size_t>(program_.result_slot) * kBatch;
   std::copy(r, r + n, out);

@@ -61,6 +61,13 @@ class FloatEvaluator {
   static constexpr int kBatch = 64;  // points per evaluate() call at most
 
   explicit FloatEvaluator(const FieldTape& tape);
+  // No field yet: evaluate() gives zeros until reset() names one.
+  FloatEvaluator() = default;
+  // Makes this the evaluator of `tape`, reusing the program's and the slots' storage (as
+  // GradientEvaluator::reset: a scratch evaluator for many short tapes, allocating nothing once
+  // grown; the same values as FloatEvaluator(tape), bit for bit). Throws as the constructor
+  // does, leaving the evaluator with no field.
+  void reset(const FieldTape& tape);
 
   // out[i] = f(x[i], y[i], z[i]) for i < n (n <= kBatch). z may be null for a tape without var-z.
   void evaluate(const float* x, const float* y, const float* z, int n, float* out);
@@ -72,7 +79,8 @@ class FloatEvaluator {
 
  private:
   SlotProgram program_;
-  std::vector<float> slots_;  // slot_count x kBatch
+  std::vector<float> slots_;  // slot_count x kBatch (at least)
+  SlotProgramScratch scratch_;  // reset()'s
 };
 
 }  // namespace pf::field

@@ -31,6 +31,7 @@ static Choice selectChoice(Interval cond) {
 }
 
 Interval IntervalEvaluator::evaluate(Interval x, Interval y, Interval z, std::vector<Choice>* choices) {
+  if (!tape_) return Interval::whole();
   const std::vector<FieldInstr>& code = tape_->instrs;
   if (choices) choices->assign(code.size(), Choice::Both);
   Interval* v = values_.data();

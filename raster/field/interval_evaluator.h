@@ -15,13 +15,21 @@ namespace pf::field {
 class IntervalEvaluator {
  public:
   explicit IntervalEvaluator(const FieldTape& tape) : tape_(&tape), values_(tape.instrs.size()) {}
+  // No field yet: evaluate() gives the whole line until reset() names one.
+  IntervalEvaluator() = default;
+  // Makes this the evaluator of `tape` (which must outlive its use), keeping the values'
+  // storage: a scratch evaluator for many tapes allocates nothing once grown.
+  void reset(const FieldTape& tape) {
+    tape_ = &tape;
+    if (values_.size() < tape.instrs.size()) values_.resize(tape.instrs.size());
+  }
 
   // f over the box. With `choices`, fills it (one entry per instruction) with the proven operand
   // of each min/max (Both where neither dominates, and for every other instruction).
   Interval evaluate(Interval x, Interval y, Interval z, std::vector<Choice>* choices = nullptr);
 
  private:
-  const FieldTape* tape_;
+  const FieldTape* tape_ = nullptr;
   std::vector<Interval> values_;
 };
 

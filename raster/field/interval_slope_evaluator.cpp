@@ -23,8 +23,8 @@ Choice minSide(Interval a, Interval b) {
 
 IntervalSlope IntervalSlopeEvaluator::evaluate(Interval x, Interval y, Interval z, Interval dx, Interval dy,
                                                Interval dz) {
+  if (!tape_ || tape_->instrs.empty()) return {Interval::whole(), Interval::whole()};
   const std::vector<FieldInstr>& code = tape_->instrs;
-  if (code.empty()) return {Interval::whole(), Interval::whole()};
   Interval* v = values_.data();
   Interval* r = rates_.data();
   const Interval zero = Interval::point(0.0f), two = Interval::point(2.0f), one = Interval::point(1.0f);

@@ -31,12 +31,22 @@ class IntervalSlopeEvaluator {
  public:
   explicit IntervalSlopeEvaluator(const FieldTape& tape)
       : tape_(&tape), values_(tape.instrs.size()), rates_(tape.instrs.size()) {}
+  // No field yet: evaluate() gives the whole line until reset() names one.
+  IntervalSlopeEvaluator() = default;
+  // Makes this the evaluator of `tape` (which must outlive its use), keeping the storage.
+  void reset(const FieldTape& tape) {
+    tape_ = &tape;
+    if (values_.size() < tape.instrs.size()) {
+      values_.resize(tape.instrs.size());
+      rates_.resize(tape.instrs.size());
+    }
+  }
 
   // Over the box [x] x [y] x [z] and the directions [dx] x [dy] x [dz].
   IntervalSlope evaluate(Interval x, Interval y, Interval z, Interval dx, Interval dy, Interval dz);
 
  private:
-  const FieldTape* tape_;
+  const FieldTape* tape_ = nullptr;
   std::vector<Interval> values_, rates_;
 };
 

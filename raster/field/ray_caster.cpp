@@ -6,6 +6,7 @@
 #include "raster/field/ray_box.h"
 #include "raster/field/interval_slope_evaluator.h"
 #include "raster/field/ray_search.h"
+#include "raster/field/tape_pool.h"
 
 #include <algorithm>
 #include <bit>
@@ -37,6 +38,17 @@ struct FieldRayCaster::Slab {
   bool full = false;                     // proven inside over the whole tile
   std::shared_ptr<const FieldTape> tape; // simplified for the tile slab's box
   HitBox box;                            // (for full slabs: where the tape holds, for gradients)
+};
+
+// One region's judgment after another, with no allocation once grown: the evaluators, rebound
+// to each region's tape (judgments and a leaf's search never interleave), the choices of the
+// last interval evaluation, and the simplified tapes.
+struct FieldRayCaster::Scratch {
+  IntervalEvaluator intervals;
+  IntervalSlopeEvaluator slopes;
+  FloatEvaluator points;
+  std::vector<Choice> choices;
+  TapePool tapes;
 };
 
 struct FieldRayCaster::TileSlabs {
@@ -97,15 +109,6 @@ bool worthSplitting(const FieldRays& fr, const ImplicitField& field, double x0, 
   return (b - a) * length(mid.direction) > ratio * width;
 }
 
-// The tape simplified by an interval evaluation's choices -- the same tape where nothing was
-// decided (no rebuild for fields with few min/max, such as the bear).
-std::shared_ptr<const FieldTape> simplifiedTape(const std::shared_ptr<const FieldTape>& tape,
-                                                const std::vector<Choice>& choices) {
-  for (Choice c : choices)
-    if (c != Choice::Both) return std::make_shared<const FieldTape>(simplify(*tape, choices));
-  return tape;
-}
-
 HitBox hitBoxOf(const RayBox& b) { return {{b.x.lo, b.y.lo, b.z.lo}, {b.x.hi, b.y.hi, b.z.hi}}; }
 
 Interval evaluateBox(IntervalEvaluator& ie, const RayBox& b, std::vector<Choice>* choices) {
@@ -121,13 +124,15 @@ struct RegionVerdict {
   std::shared_ptr<const FieldTape> tape;
 };
 
+// The tape simplified by the choices (the same tape where nothing was decided: no rebuild for
+// fields with few min/max, such as the bear), from `tapes`.
 RegionVerdict judgeRegion(const FieldRays& rays, double x0, double y0, double x1, double y1, double ta, double tb,
-                          const std::shared_ptr<const FieldTape>& tape, FieldCounters& c) {
+                          const std::shared_ptr<const FieldTape>& tape, IntervalEvaluator& ie,
+                          std::vector<Choice>& choices, TapePool& tapes, FieldCounters& c) {
   RegionVerdict v;
   v.box = regionBox(rays, x0, y0, x1, y1, ta, tb);
   if (v.box.empty) return v;
-  std::vector<Choice> choices;
-  IntervalEvaluator ie(*tape);
+  ie.reset(*tape);
   const Interval f = evaluateBox(ie, v.box, &choices);
   ++c.interval_evaluations;
   if (f.allNegative()) {
@@ -135,7 +140,7 @@ RegionVerdict judgeRegion(const FieldRays& rays, double x0, double y0, double x1
     return v;
   }
   v.kind = f.allNonNegative() ? RegionVerdict::Full : RegionVerdict::Undecided;
-  v.tape = simplifiedTape(tape, choices);
+  v.tape = tapes.simplified(tape, choices);
   return v;
 }
 
@@ -176,6 +181,11 @@ FieldRayCaster::FieldRayCaster() = default;
 FieldRayCaster::~FieldRayCaster() = default;
 FieldRayCaster::FieldRayCaster(FieldRayCaster&&) noexcept = default;
 FieldRayCaster& FieldRayCaster::operator=(FieldRayCaster&&) noexcept = default;
+
+FieldRayCaster::Scratch& FieldRayCaster::scratch() {
+  if (!scratch_) scratch_ = std::make_unique<Scratch>();
+  return *scratch_;
+}
 
 FloatEvaluator& FieldRayCaster::fullEvaluator(const ImplicitField& field) {
   std::unique_ptr<FloatEvaluator>& e = full_evaluators_[&field];
@@ -247,9 +257,10 @@ const FieldRayCaster::TileSlabs& FieldRayCaster::tileSlabs(const CastRequest& r,
   ts.ty = ty;
   ts.slabs.clear();
   const double x0 = tx + 0.5, y0 = ty + 0.5, x1 = tx + kTileSize - 0.5, y1 = ty + kTileSize - 0.5;
+  Scratch& sc = scratch();
   // Front to back: the recursion visits the near half first.
   auto visit = [&](auto&& self, double ta, double tb, std::shared_ptr<const FieldTape> tape, int depth) -> void {
-    RegionVerdict v = judgeRegion(r.rays, x0, y0, x1, y1, ta, tb, tape, c);
+    RegionVerdict v = judgeRegion(r.rays, x0, y0, x1, y1, ta, tb, tape, sc.intervals, sc.choices, sc.tapes, c);
     if (v.kind == RegionVerdict::Empty) return;
     if (v.kind == RegionVerdict::Undecided && depth < kMaxTileDepth &&
         worthSplitting(r.rays, *r.field, x0, y0, x1, y1, ta, tb, 4.0)) {
@@ -296,7 +307,8 @@ void FieldRayCaster::regionSlab(const CastRequest& r, int bx, int by, const Lane
   if (!over) return;
   const double x0 = bx + rect.x + 0.5, y0 = by + rect.y + 0.5;
   const double x1 = x0 + rect.size - 1, y1 = y0 + rect.size - 1;
-  const RegionVerdict v = judgeRegion(r.rays, x0, y0, x1, y1, ta, tb, tape, c);
+  Scratch& sc = scratch();
+  const RegionVerdict v = judgeRegion(r.rays, x0, y0, x1, y1, ta, tb, tape, sc.intervals, sc.choices, sc.tapes, c);
   if (v.kind == RegionVerdict::Empty) return;
   const RayBox& box = v.box;
   const std::shared_ptr<const FieldTape>& simplified = v.tape;
@@ -351,7 +363,8 @@ void FieldRayCaster::regionSlab(const CastRequest& r, int bx, int by, const Lane
     from[i] = std::max(ta, lanes.ray[i].entry);
     to[i] = std::min(tb, lanes.ray[i].exit);
   }
-  FloatEvaluator fe(*simplified);
+  FloatEvaluator& fe = sc.points;
+  fe.reset(*simplified);
   lanes.deciding_tape = simplified;
   lanes.deciding_box = hitBoxOf(box);
   if (!varies) {
@@ -359,7 +372,8 @@ void FieldRayCaster::regionSlab(const CastRequest& r, int bx, int by, const Lane
     lanes.deciding_tape = nullptr;
     return;
   }
-  IntervalSlopeEvaluator se(*simplified);
+  IntervalSlopeEvaluator& se = sc.slopes;
+  se.reset(*simplified);
   const IntervalSlope slope = regionSlope(se, r.rays, box, x0, y0, x1, y1, c);
   // f proven monotone along every ray of the slab: one crossing at most per lane, found from
   // the lane's two ends -- no samples, no search.
@@ -376,7 +390,8 @@ void FieldRayCaster::regionSlab(const CastRequest& r, int bx, int by, const Lane
 
   const uint64_t sampled = lanes.pending & over;
   uint64_t bracketed = sampleForBrackets(fe, lanes, over, from, to, steps, lo, hi, c, &gaps);
-  IntervalEvaluator ie(*simplified);
+  IntervalEvaluator& ie = sc.intervals;
+  ie.reset(*simplified);
   RaySegmentSearch search(ie, se, fe, r.rays, c);
   const double diagonal = length({r.rays.box_max[0] - r.rays.box_min[0], r.rays.box_max[1] - r.rays.box_min[1],
                                   r.rays.box_max[2] - r.rays.box_min[2]});

@@ -127,9 +127,13 @@ class FieldRayCaster {
   void castSphere(const CastRequest& r, int bx, int by, Lanes& lanes, FieldCounters& c);
   void castAnalytic(const CastRequest& r, int bx, int by, Lanes& lanes, FieldCounters& c);
   FloatEvaluator& fullEvaluator(const ImplicitField& field);
+  struct Scratch;
+  Scratch& scratch();
 
   std::unordered_map<const ImplicitField*, std::unique_ptr<FloatEvaluator>> full_evaluators_;
   std::unique_ptr<TileSlabs> tile_;  // the last tile's slabs (blocks of a tile come together)
+  // The interval method's working storage, reused region after region (ray_caster.cpp).
+  std::unique_ptr<Scratch> scratch_;
 };
 
 }  // namespace pf::field
