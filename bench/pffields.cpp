@@ -176,6 +176,7 @@ int main(int argc, char** argv) {
   std::string csv;
   int size = 512, prospero_size = 1024, ref_size = 96, ref_steps = 1000, frames = 5, threads = 1;
   double time = 0.5;
+  bool no_accuracy = false;
   app.add_option("--models", models,
                  ".vm / .hf files, each optionally FILE@x0,y0,z0,x1,y1,z1 with its box "
                  "(default: tests/data/models/fidget/*.vm)");
@@ -193,7 +194,13 @@ int main(int argc, char** argv) {
   app.add_option("--simd", simd,
                  "run each method on these instruction sets of the float loops, in turn (default: the best; "
                  "names as the float_evaluator reports them, e.g. AVX3 AVX2 SSE4 SCALAR)");
+  app.add_flag("--no-accuracy", no_accuracy,
+               "time only: no reference and no accuracy columns (for profiles; not with --csv)");
   CLI11_PARSE(app, argc, argv);
+  if (no_accuracy && !csv.empty()) {
+    std::fprintf(stderr, "pffields: --no-accuracy writes no CSV rows (they need the accuracy)\n");
+    return 2;
+  }
   if (simd.empty()) simd.push_back(pf::field::floatSlotsTarget());
   for (const std::string& t : simd)
     if (!pf::field::useFloatSlotsTarget(t)) {
@@ -276,11 +283,16 @@ int main(int argc, char** argv) {
     }
     const int n = m.two_dimensional ? prospero_size : size;
     const int rn = m.two_dimensional ? prospero_size : ref_size;
-    const std::vector<double> want = reference(tape, m, rn, ref_steps, m.two_dimensional);
+    const std::vector<double> want = no_accuracy ? std::vector<double>{} : reference(tape, m, rn, ref_steps, m.two_dimensional);
     for (const Run& run : runs)
       for (const std::string& target : simd) {
         pf::field::useFloatSlotsTarget(target);
         const Frame timed = render(m, n, n, run, threads, frames, time);
+        if (no_accuracy) {
+          std::printf("%-14s %-9s %7g %6s %6d %10.2f |\n", name.c_str(), run.method_name.c_str(), run.param,
+                      target.c_str(), n, timed.ms);
+          continue;
+        }
         const Frame judged = rn == n ? timed : render(m, rn, rn, run, threads, 0, time);
         const Accuracy a = compare(judged.z, want, tape, m, rn);
         std::printf("%-14s %-9s %7g %6s %6d %10.2f | %6d %8d %11.3g %11.3g %9.3g %9.3g\n", name.c_str(),

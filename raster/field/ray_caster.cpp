@@ -331,8 +331,11 @@ void FieldRayCaster::regionSlab(const CastRequest& r, int bx, int by, const Lane
     return;
   }
   // About as deep as wide: quarter the rectangle (its quarters hold different lanes, so their
-  // order does not matter), down to kLeafSize pixels.
-  if (rect.size > kLeafSize) {
+  // order does not matter), down to kLeafSize pixels -- where the field varies along the rays.
+  // Where it does not (a 2D model seen from above), a leaf costs one point a lane, and a
+  // quarter's interval evaluation and simplification cost more than the points its shorter
+  // tape saves: the block is the leaf.
+  if (rect.size > kLeafSize && variesAlongRays(r)) {
     const int h = rect.size / 2;
     for (int q = 0; q < 4; ++q)
       regionSlab(r, bx, by, {rect.x + (q % 2) * h, rect.y + (q / 2) * h, h}, ta, tb, simplified, depth, lanes, c);
