@@ -125,7 +125,7 @@ glm::vec4 LightingEquation::shade(const Material& m, const glm::vec3& eye, const
 
 // Written as shade() is, operation for operation (glm's vec3 dot is (x x' + y y') + z z', its
 // length sqrt(dot), its max (x < y) ? y : x, its min (y < x) ? y : x), over arrays.
-PF_SHADING_CLONES void LightingEquation::shadeRun(const LitPoints& in, float* const out[4]) const {
+PF_SIMD_CLONES void LightingEquation::shadeRun(const LitPoints& in, float* const out[4]) const {
   const int n = in.n;
   alignas(64) float c[3][LitPoints::kMax], term[3][LitPoints::kMax], vp[3][LitPoints::kMax], scale[LitPoints::kMax],
       n_dot_vp[LitPoints::kMax];

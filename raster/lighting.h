@@ -7,17 +7,7 @@
 
 #include <GL/gl.h>
 
-// The shading pass's loops compiled for AVX-512, AVX2 and the baseline, the widest the machine
-// runs chosen at load time: the same operations in the same order (no contraction: CMakeLists'
-// -ffp-contract=off), so the same bits on every machine. (Not under the sanitizers: an
-// instrumented ifunc resolver runs at load time before ThreadSanitizer's runtime is up, and
-// crashes; those builds run the baseline loops, the same bits.)
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_THREAD__) && \
-    !defined(__SANITIZE_ADDRESS__)
-#define PF_SHADING_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-#else
-#define PF_SHADING_CLONES
-#endif
+#include "raster/simd_clones.h"
 
 namespace pf {
 

@@ -41,7 +41,7 @@ void runColour(const ShadeState& s, const float* const* slots, size_t i0, int n,
 // glm::normalize: n * (1 / sqrt(dot(n, n))), where its length is not zero), the back face's
 // material and reversed normal where two-sided lighting shows the back, the tracked material
 // properties taking the pixel's colour. `c` is the colour on entry, the lit colour on return.
-PF_SHADING_CLONES void lightRun(const ShadeState& s, const LightingState& l, const LightingEquation& eq, const float* const* slots,
+PF_SIMD_CLONES void lightRun(const ShadeState& s, const LightingState& l, const LightingEquation& eq, const float* const* slots,
               size_t i0, int n, float c[4][kTileSize]) {
   alignas(64) float normal[3][kTileSize], material[4][4][kTileSize], shininess[kTileSize];
   alignas(64) int32_t face[kTileSize];  // 1: the back face shows (int, as wide as the floats it selects)
@@ -235,7 +235,7 @@ struct RowSpan {
 
 }  // namespace
 
-PF_SHADING_CLONES uint64_t shadeTile(const uint32_t* shade_ids, const float* const* slots, const ShadeState* shades,
+PF_SIMD_CLONES uint64_t shadeTile(const uint32_t* shade_ids, const float* const* slots, const ShadeState* shades,
                    const LightingState* lightings, const LightingEquation* equations, const ShadeTarget& t) {
   const TileShading in{slots, shades, lightings, equations};
   uint64_t shaded = 0;

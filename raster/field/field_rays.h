@@ -26,6 +26,10 @@ struct FieldRays {
   Vec3d box_min{}, box_max{};
 
   PixelRay ray(double x, double y) const;  // x, y: window coordinates (pixel centres at +0.5)
+  // The rays of the 64 pixels of the 8x8 block whose lower-left pixel is (bx, by): out[i] is
+  // ray(bx + i % 8 + 0.5, by + i / 8 + 0.5), bit for bit, computed as vector loops (a block's
+  // rays one by one were a seventh of a 2D model's frame).
+  void blockRays(int bx, int by, PixelRay out[64]) const;
   // The same ray, not clipped to the box (entry 0, exit 1); empty where it is degenerate.
   PixelRay unclipped(double x, double y) const;
   // Whether the rays are affine in (x, y) (glOrtho, glFrustum, gluPerspective projections): then

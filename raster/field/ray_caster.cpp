@@ -199,9 +199,10 @@ void FieldRayCaster::castBlock(const CastRequest& r, int bx, int by, uint64_t ma
   Lanes lanes;
   lanes.pending = 0;
   lanes.tapes = tapes;
+  static_assert(kLanes == 64 && kBlockSize == 8, "blockRays fills an 8x8 block");
+  r.rays.blockRays(bx, by, lanes.ray);
   for (uint64_t m = mask; m; m &= m - 1) {
     const int i = std::countr_zero(m);
-    lanes.ray[i] = r.rays.ray(bx + i % kBlockSize + 0.5, by + i / kBlockSize + 0.5);
     lanes.t[i] = std::numeric_limits<double>::infinity();
     if (!lanes.ray[i].empty()) lanes.pending |= uint64_t(1) << i;
   }
