@@ -3,6 +3,7 @@
 #include "raster/field/ray_caster.h"
 
 #include "raster/field/cast_lanes.h"
+#include "raster/field/interval_batch.h"
 #include "raster/field/ray_box.h"
 #include "raster/field/interval_slope_evaluator.h"
 #include "raster/field/ray_search.h"
@@ -33,11 +34,23 @@ void FieldCounters::add(const FieldCounters& o) {
   segments_left_to_samples += o.segments_left_to_samples;
 }
 
+// The interval form's verdict over the rays through a rectangle of pixel centres for t in
+// [ta, tb]: empty (no point of the region in the field's box, or f < 0 throughout), full
+// (f >= 0 throughout) or undecided; with the tape simplified for the region's box.
+struct FieldRayCaster::RegionVerdict {
+  enum Kind { Empty, Full, Undecided } kind = Empty;
+  RayBox box;
+  std::shared_ptr<const FieldTape> tape;
+};
+
 struct FieldRayCaster::Slab {
   double ta = 0.0, tb = 0.0;
   bool full = false;                     // proven inside over the whole tile
   std::shared_ptr<const FieldTape> tape; // simplified for the tile slab's box
   HitBox box;                            // (for full slabs: where the tape holds, for gradients)
+  // The tile's 64 blocks judged over this slab at once (judgeTileBlocks), when the first of them
+  // reaches it; empty until then.
+  std::vector<RegionVerdict> blocks;
 };
 
 // One region's judgment after another, with no allocation once grown: the evaluators, rebound
@@ -45,6 +58,7 @@ struct FieldRayCaster::Slab {
 // last interval evaluation, and the simplified tapes.
 struct FieldRayCaster::Scratch {
   IntervalEvaluator intervals;
+  IntervalBatchEvaluator batch;
   IntervalSlopeEvaluator slopes;
   FloatEvaluator points;
   std::vector<Choice> choices;
@@ -115,34 +129,6 @@ Interval evaluateBox(IntervalEvaluator& ie, const RayBox& b, std::vector<Choice>
   return ie.evaluate(b.x, b.y, b.z, choices);
 }
 
-// The interval form's verdict over the rays through a rectangle of pixel centres for t in
-// [ta, tb]: empty (no point of the region in the field's box, or f < 0 throughout), full
-// (f >= 0 throughout) or undecided; with the tape simplified for the region's box.
-struct RegionVerdict {
-  enum Kind { Empty, Full, Undecided } kind = Empty;
-  RayBox box;
-  std::shared_ptr<const FieldTape> tape;
-};
-
-// The tape simplified by the choices (the same tape where nothing was decided: no rebuild for
-// fields with few min/max, such as the bear), from `tapes`.
-RegionVerdict judgeRegion(const FieldRays& rays, double x0, double y0, double x1, double y1, double ta, double tb,
-                          const std::shared_ptr<const FieldTape>& tape, IntervalEvaluator& ie,
-                          std::vector<Choice>& choices, TapePool& tapes, FieldCounters& c) {
-  RegionVerdict v;
-  v.box = regionBox(rays, x0, y0, x1, y1, ta, tb);
-  if (v.box.empty) return v;
-  ie.reset(*tape);
-  const Interval f = evaluateBox(ie, v.box, &choices);
-  ++c.interval_evaluations;
-  if (f.allNegative()) {
-    ++c.slabs_culled;
-    return v;
-  }
-  v.kind = f.allNonNegative() ? RegionVerdict::Full : RegionVerdict::Undecided;
-  v.tape = tapes.simplified(tape, choices);
-  return v;
-}
 
 // f and its rate along the rays through a rectangle of pixel centres, over the region's box and
 // the box of the rays' directions (the corner rays' hull: directions are affine in the pixel
@@ -176,6 +162,62 @@ bool variesAlongRays(const CastRequest& r) {
 }
 
 }  // namespace
+
+// The tape simplified by the choices (the same tape where nothing was decided: no rebuild for
+// fields with few min/max, such as the bear), from the scratch's pool.
+FieldRayCaster::RegionVerdict FieldRayCaster::judgeRegion(const FieldRays& rays, double x0, double y0, double x1,
+                                                          double y1, double ta, double tb,
+                                                          const std::shared_ptr<const FieldTape>& tape, Scratch& sc,
+                                                          FieldCounters& c) {
+  RegionVerdict v;
+  v.box = regionBox(rays, x0, y0, x1, y1, ta, tb);
+  if (v.box.empty) return v;
+  sc.intervals.reset(*tape);
+  const Interval f = evaluateBox(sc.intervals, v.box, &sc.choices);
+  ++c.interval_evaluations;
+  if (f.allNegative()) {
+    ++c.slabs_culled;
+    return v;
+  }
+  v.kind = f.allNonNegative() ? RegionVerdict::Full : RegionVerdict::Undecided;
+  v.tape = sc.tapes.simplified(tape, sc.choices);
+  return v;
+}
+
+// judgeRegion for each 8x8 block of the tile over an undecided tile slab, in one batched
+// evaluation (interval_batch.h): the same boxes, the same intervals and choices, so the same
+// verdicts and tapes as judging each block when it comes -- one pass over the slab's tape for
+// all of them instead of one each.
+void FieldRayCaster::judgeTileBlocks(const CastRequest& r, const TileSlabs& ts, Slab& slab, FieldCounters& c) {
+  constexpr int kBlocks = (kTileSize / kBlockSize) * (kTileSize / kBlockSize);
+  static_assert(kBlocks == IntervalBatchEvaluator::kBoxes, "a tile's blocks are one batch");
+  Scratch& sc = scratch();
+  slab.blocks.assign(kBlocks, RegionVerdict{});
+  IntervalBatchEvaluator::Boxes boxes;
+  for (int k = 0; k < kBlocks; ++k) {
+    const double x0 = ts.tx + (k % 8) * kBlockSize + 0.5, y0 = ts.ty + (k / 8) * kBlockSize + 0.5;
+    RegionVerdict& v = slab.blocks[k];
+    v.box = regionBox(r.rays, x0, y0, x0 + kBlockSize - 1, y0 + kBlockSize - 1, slab.ta, slab.tb);
+    boxes.x_lo[k] = v.box.x.lo, boxes.x_hi[k] = v.box.x.hi;
+    boxes.y_lo[k] = v.box.y.lo, boxes.y_hi[k] = v.box.y.hi;
+    boxes.z_lo[k] = v.box.z.lo, boxes.z_hi[k] = v.box.z.hi;
+  }
+  sc.batch.reset(*slab.tape);
+  Interval f[kBlocks];
+  sc.batch.evaluate(boxes, kBlocks, f, true);
+  for (int k = 0; k < kBlocks; ++k) {
+    RegionVerdict& v = slab.blocks[k];
+    if (v.box.empty) continue;
+    ++c.interval_evaluations;
+    if (f[k].allNegative()) {
+      ++c.slabs_culled;
+      continue;
+    }
+    v.kind = f[k].allNonNegative() ? RegionVerdict::Full : RegionVerdict::Undecided;
+    sc.batch.choicesOf(k, sc.choices);
+    v.tape = sc.tapes.simplified(slab.tape, sc.choices);
+  }
+}
 
 FieldRayCaster::FieldRayCaster() = default;
 FieldRayCaster::~FieldRayCaster() = default;
@@ -245,7 +287,7 @@ void FieldRayCaster::castBlock(const CastRequest& r, int bx, int by, uint64_t ma
   }
 }
 
-const FieldRayCaster::TileSlabs& FieldRayCaster::tileSlabs(const CastRequest& r, int bx, int by, FieldCounters& c) {
+FieldRayCaster::TileSlabs& FieldRayCaster::tileSlabs(const CastRequest& r, int bx, int by, FieldCounters& c) {
   const int tx = bx - bx % kTileSize, ty = by - by % kTileSize;
   if (tile_ && tile_->field == r.field && tile_->tx == tx && tile_->ty == ty &&
       std::memcmp(&tile_->rays, &r.rays, sizeof(FieldRays)) == 0)
@@ -261,7 +303,7 @@ const FieldRayCaster::TileSlabs& FieldRayCaster::tileSlabs(const CastRequest& r,
   Scratch& sc = scratch();
   // Front to back: the recursion visits the near half first.
   auto visit = [&](auto&& self, double ta, double tb, std::shared_ptr<const FieldTape> tape, int depth) -> void {
-    RegionVerdict v = judgeRegion(r.rays, x0, y0, x1, y1, ta, tb, tape, sc.intervals, sc.choices, sc.tapes, c);
+    RegionVerdict v = judgeRegion(r.rays, x0, y0, x1, y1, ta, tb, tape, sc, c);
     if (v.kind == RegionVerdict::Empty) return;
     if (v.kind == RegionVerdict::Undecided && depth < kMaxTileDepth &&
         worthSplitting(r.rays, *r.field, x0, y0, x1, y1, ta, tb, 4.0)) {
@@ -270,7 +312,7 @@ const FieldRayCaster::TileSlabs& FieldRayCaster::tileSlabs(const CastRequest& r,
       self(self, tm, tb, v.tape, depth + 1);
       return;
     }
-    ts.slabs.push_back({ta, tb, v.kind == RegionVerdict::Full, std::move(v.tape), hitBoxOf(v.box)});
+    ts.slabs.push_back({ta, tb, v.kind == RegionVerdict::Full, std::move(v.tape), hitBoxOf(v.box), {}});
   };
   // The field's own tape, not owned (the field outlives the caster's use of it).
   visit(visit, 0.0, 1.0, std::shared_ptr<const FieldTape>(std::shared_ptr<const FieldTape>(), &r.field->tape), 0);
@@ -278,8 +320,8 @@ const FieldRayCaster::TileSlabs& FieldRayCaster::tileSlabs(const CastRequest& r,
 }
 
 void FieldRayCaster::castInterval(const CastRequest& r, int bx, int by, Lanes& lanes, FieldCounters& c) {
-  const TileSlabs& ts = tileSlabs(r, bx, by, c);
-  for (const Slab& slab : ts.slabs) {
+  TileSlabs& ts = tileSlabs(r, bx, by, c);
+  for (Slab& slab : ts.slabs) {
     if (!lanes.pending) break;
     const uint64_t over = lanes.overlapping(slab.ta, slab.tb);
     if (!over) continue;
@@ -294,13 +336,17 @@ void FieldRayCaster::castInterval(const CastRequest& r, int bx, int by, Lanes& l
       lanes.deciding_tape = nullptr;
       continue;
     }
-    regionSlab(r, bx, by, {0, 0, kBlockSize}, slab.ta, slab.tb, slab.tape, 0, lanes, c);
+    // The block's verdict over the slab: judged with the tile's other blocks, at once, when the
+    // first of them comes here.
+    if (slab.blocks.empty()) judgeTileBlocks(r, ts, slab, c);
+    const int k = (by - ts.ty) / kBlockSize * (kTileSize / kBlockSize) + (bx - ts.tx) / kBlockSize;
+    regionSlab(r, bx, by, {0, 0, kBlockSize}, slab.ta, slab.tb, slab.tape, 0, lanes, c, &slab.blocks[k]);
   }
 }
 
 void FieldRayCaster::regionSlab(const CastRequest& r, int bx, int by, const LaneRect& rect, double ta, double tb,
                                 const std::shared_ptr<const FieldTape>& tape, int depth, Lanes& lanes,
-                                FieldCounters& c) {
+                                FieldCounters& c, const RegionVerdict* judged) {
   uint64_t in_rect = 0;
   for (int y = rect.y; y < rect.y + rect.size; ++y)
     for (int x = rect.x; x < rect.x + rect.size; ++x) in_rect |= uint64_t(1) << (y * kBlockSize + x);
@@ -309,7 +355,12 @@ void FieldRayCaster::regionSlab(const CastRequest& r, int bx, int by, const Lane
   const double x0 = bx + rect.x + 0.5, y0 = by + rect.y + 0.5;
   const double x1 = x0 + rect.size - 1, y1 = y0 + rect.size - 1;
   Scratch& sc = scratch();
-  const RegionVerdict v = judgeRegion(r.rays, x0, y0, x1, y1, ta, tb, tape, sc.intervals, sc.choices, sc.tapes, c);
+  RegionVerdict own;
+  if (!judged) {
+    own = judgeRegion(r.rays, x0, y0, x1, y1, ta, tb, tape, sc, c);
+    judged = &own;
+  }
+  const RegionVerdict& v = *judged;
   if (v.kind == RegionVerdict::Empty) return;
   const RayBox& box = v.box;
   const std::shared_ptr<const FieldTape>& simplified = v.tape;

@@ -116,9 +116,18 @@ class FieldRayCaster {
   struct LaneRect {
     int x, y, size;  // lanes [x, x + size) x [y, y + size) of the block
   };
+  struct RegionVerdict;
+  struct Scratch;
+  // The interval form's verdict over a region of rays (ray_caster.cpp).
+  static RegionVerdict judgeRegion(const FieldRays& rays, double x0, double y0, double x1, double y1, double ta,
+                                   double tb, const std::shared_ptr<const FieldTape>& tape, Scratch& sc,
+                                   FieldCounters& c);
+  // A region's slab: judged here, or -- `judged` -- already (a tile's blocks judged at once).
   void regionSlab(const CastRequest& r, int bx, int by, const LaneRect& rect, double ta, double tb,
-                  const std::shared_ptr<const FieldTape>& tape, int depth, Lanes& lanes, FieldCounters& c);
-  const TileSlabs& tileSlabs(const CastRequest& r, int bx, int by, FieldCounters& c);
+                  const std::shared_ptr<const FieldTape>& tape, int depth, Lanes& lanes, FieldCounters& c,
+                  const RegionVerdict* judged = nullptr);
+  TileSlabs& tileSlabs(const CastRequest& r, int bx, int by, FieldCounters& c);
+  void judgeTileBlocks(const CastRequest& r, const TileSlabs& ts, Slab& slab, FieldCounters& c);
   void sampleAndBisect(FloatEvaluator& eval, Lanes& lanes, uint64_t which, const double* from, const double* to,
                        int steps, FieldCounters& c);
   uint64_t sampleForBrackets(FloatEvaluator& eval, Lanes& lanes, uint64_t which, const double* from, const double* to,
@@ -127,7 +136,6 @@ class FieldRayCaster {
   void castSphere(const CastRequest& r, int bx, int by, Lanes& lanes, FieldCounters& c);
   void castAnalytic(const CastRequest& r, int bx, int by, Lanes& lanes, FieldCounters& c);
   FloatEvaluator& fullEvaluator(const ImplicitField& field);
-  struct Scratch;
   Scratch& scratch();
 
   std::unordered_map<const ImplicitField*, std::unique_ptr<FloatEvaluator>> full_evaluators_;
