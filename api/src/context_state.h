@@ -13,6 +13,7 @@
 #include <primflow/context.h>
 #include <primflow/gl.h>
 
+#include "api/src/display_lists.h"
 #include "raster/lighting.h"
 #include "compiler/compiler.h"
 #include "raster/renderer.h"
@@ -142,6 +143,7 @@ struct PFcontextRec {
 
   pf::ClientArray vertex_array, color_array, normal_array;
   pf::LightingState lighting;
+  pf::DisplayLists lists;
 
   // Named parameters: ids (GL_FIRST_PARAM_NAME_EXT + index) by name, and their current values.
   // "color" is GL's current colour: glColor and pfglRastParam*EXT on "color" set both
@@ -233,4 +235,10 @@ void copyInfoLog(PFcontextRec& ctx, const std::string* text, GLsizei bufSize, GL
 // The current context, or null if there is none or (GL_INVALID_OPERATION set) it is between
 // glBegin and glEnd, where GL allows only the vertex-attribute commands.
 PFcontextRec* contextOutsideBegin();
+// The same check on a context: false, with GL_INVALID_OPERATION set, between glBegin and glEnd.
+inline bool outsideBegin(PFcontextRec& ctx) {
+  if (!ctx.in_begin) return true;
+  ctx.setError(GL_INVALID_OPERATION);
+  return false;
+}
 }

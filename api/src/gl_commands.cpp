@@ -5,12 +5,14 @@
 #include <bit>
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <new>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <primflow/gl.h>
 
+#include "api/src/commands.h"
 #include "api/src/context_state.h"
 #include "raster/limits.h"
 
@@ -33,6 +35,22 @@ pf::DepthFunc toDepthFunc(GLenum f) {
 
 // GL's clamp to [0, 1], NaN to 0 as Mesa stores it (glClearColor, glClearDepth, glDepthRange).
 float clamp01(double v) { return v > 0 ? (v < 1 ? static_cast<float>(v) : 1.0f) : 0.0f; }
+
+// The capabilities primflow has: depth test, face culling, lighting and its lights, colour
+// material, normalising and rescaling normals, per-pixel lighting of vertex primitives.
+bool* capability(PFcontextRec& ctx, GLenum cap) {
+  if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + pf::kMaxLights) return &ctx.lighting.lights[cap - GL_LIGHT0].enabled;
+  switch (cap) {
+    case GL_DEPTH_TEST: return &ctx.depth_test;
+    case GL_CULL_FACE: return &ctx.cull;
+    case GL_LIGHTING: return &ctx.lighting.enabled;
+    case GL_COLOR_MATERIAL: return &ctx.lighting.color_material;
+    case GL_NORMALIZE: return &ctx.lighting.normalize;
+    case GL_RESCALE_NORMAL: return &ctx.lighting.rescale_normal;
+    case GL_PER_PIXEL_LIGHTING_EXT: return &ctx.lighting.per_pixel_vertices;
+    default: ctx.setError(GL_INVALID_ENUM); return nullptr;
+  }
+}
 
 }  // namespace
 
@@ -115,6 +133,103 @@ pf::RasterState PFcontextRec::rasterState() const {
   return s;
 }
 
+// ---- The recorded commands (commands.h): what each does once the context is known ----------
+
+namespace pf::cmd {
+
+void clear(PFcontextRec& ctx, GLbitfield mask) {
+  if (!outsideBegin(ctx)) return;
+  constexpr GLbitfield kKnown = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
+  if (mask & ~kKnown) {
+    ctx.setError(GL_INVALID_VALUE);
+    return;
+  }
+  bool depth = (mask & GL_DEPTH_BUFFER_BIT) && ctx.depth_bits > 0 && ctx.depth_write;
+  try {  // a clear after drawing draws first
+    ctx.renderer.clear((mask & GL_COLOR_BUFFER_BIT) != 0 && ctx.color_mask != 0, depth, ctx.clear_color,
+                       ctx.clear_depth, ctx.color_mask);
+  } catch (const std::bad_alloc&) {
+    ctx.outOfMemory("glClear");
+  }
+}
+
+void clearColor(PFcontextRec& ctx, GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
+  if (!outsideBegin(ctx)) return;
+  ctx.clear_color[0] = clamp01(r);
+  ctx.clear_color[1] = clamp01(g);
+  ctx.clear_color[2] = clamp01(b);
+  ctx.clear_color[3] = clamp01(a);
+}
+
+void clearDepth(PFcontextRec& ctx, GLdouble depth) {
+  if (outsideBegin(ctx)) ctx.clear_depth = clamp01(depth);
+}
+
+void viewport(PFcontextRec& ctx, GLint x, GLint y, GLsizei width, GLsizei height) {
+  if (!outsideBegin(ctx)) return;
+  if (width < 0 || height < 0) {
+    ctx.setError(GL_INVALID_VALUE);
+    return;
+  }
+  ctx.viewport[0] = x;
+  ctx.viewport[1] = y;
+  ctx.viewport[2] = width > kMaxFramebufferSize ? kMaxFramebufferSize : width;
+  ctx.viewport[3] = height > kMaxFramebufferSize ? kMaxFramebufferSize : height;
+}
+
+void depthFunc(PFcontextRec& ctx, GLenum func) {
+  if (!outsideBegin(ctx)) return;
+  if (func < GL_NEVER || func > GL_ALWAYS) {
+    ctx.setError(GL_INVALID_ENUM);
+    return;
+  }
+  ctx.depth_func = func;
+}
+
+void depthMask(PFcontextRec& ctx, GLboolean flag) {
+  if (outsideBegin(ctx)) ctx.depth_write = flag != GL_FALSE;
+}
+
+void depthRange(PFcontextRec& ctx, GLdouble zNear, GLdouble zFar) {
+  if (!outsideBegin(ctx)) return;
+  ctx.depth_range[0] = clamp01(zNear);
+  ctx.depth_range[1] = clamp01(zFar);
+}
+
+void enable(PFcontextRec& ctx, GLenum cap) {
+  if (!outsideBegin(ctx)) return;
+  if (bool* c = capability(ctx, cap)) *c = true;
+  if (cap == GL_COLOR_MATERIAL) ctx.lighting.trackColor(ctx.current_color);  // tracks from now on
+}
+
+void disable(PFcontextRec& ctx, GLenum cap) {
+  if (!outsideBegin(ctx)) return;
+  if (bool* c = capability(ctx, cap)) *c = false;
+}
+
+void colorMask(PFcontextRec& ctx, GLboolean r, GLboolean g, GLboolean b, GLboolean a) {
+  if (!outsideBegin(ctx)) return;
+  ctx.color_mask = static_cast<uint8_t>((r ? 1 : 0) | (g ? 2 : 0) | (b ? 4 : 0) | (a ? 8 : 0));
+}
+
+// glCullFace, glFrontFace, glShadeModel: one of a few modes into `field`, else GL_INVALID_ENUM.
+static void setMode(PFcontextRec& ctx, GLenum& field, GLenum mode, std::initializer_list<GLenum> allowed) {
+  if (!outsideBegin(ctx)) return;
+  if (std::find(allowed.begin(), allowed.end(), mode) == allowed.end()) {
+    ctx.setError(GL_INVALID_ENUM);
+    return;
+  }
+  field = mode;
+}
+
+void cullFace(PFcontextRec& ctx, GLenum mode) {
+  setMode(ctx, ctx.cull_face, mode, {GL_FRONT, GL_BACK, GL_FRONT_AND_BACK});
+}
+void frontFace(PFcontextRec& ctx, GLenum mode) { setMode(ctx, ctx.front_face, mode, {GL_CW, GL_CCW}); }
+void shadeModel(PFcontextRec& ctx, GLenum mode) { setMode(ctx, ctx.shade_model, mode, {GL_FLAT, GL_SMOOTH}); }
+
+}  // namespace pf::cmd
+
 extern "C" {
 
 GLenum pfglGetError(void) {
@@ -151,98 +266,17 @@ void pfglFlush(void) {
   if (PFcontextRec* ctx = pf::contextOutsideBegin()) ctx->finish();
 }
 
-void pfglClear(GLbitfield mask) {
-  PFcontextRec* ctx = pf::contextOutsideBegin();
-  if (!ctx) return;
-  constexpr GLbitfield kKnown = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
-  if (mask & ~kKnown) {
-    ctx->setError(GL_INVALID_VALUE);
-    return;
-  }
-  bool depth = (mask & GL_DEPTH_BUFFER_BIT) && ctx->depth_bits > 0 && ctx->depth_write;
-  try {  // a clear after drawing draws first
-    ctx->renderer.clear((mask & GL_COLOR_BUFFER_BIT) != 0 && ctx->color_mask != 0, depth, ctx->clear_color,
-                        ctx->clear_depth, ctx->color_mask);
-  } catch (const std::bad_alloc&) {
-    ctx->outOfMemory("glClear");
-  }
-}
-
-void pfglClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) {
-  PFcontextRec* ctx = pf::contextOutsideBegin();
-  if (!ctx) return;
-  ctx->clear_color[0] = clamp01(r);
-  ctx->clear_color[1] = clamp01(g);
-  ctx->clear_color[2] = clamp01(b);
-  ctx->clear_color[3] = clamp01(a);
-}
-
-void pfglClearDepth(GLclampd depth) {
-  if (PFcontextRec* ctx = pf::contextOutsideBegin()) ctx->clear_depth = clamp01(depth);
-}
-
+void pfglClear(GLbitfield mask) { pf::dispatch<pf::GlOp::Clear>(mask); }
+void pfglClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) { pf::dispatch<pf::GlOp::ClearColor>(r, g, b, a); }
+void pfglClearDepth(GLclampd depth) { pf::dispatch<pf::GlOp::ClearDepth>(depth); }
 void pfglViewport(GLint x, GLint y, GLsizei width, GLsizei height) {
-  PFcontextRec* ctx = pf::contextOutsideBegin();
-  if (!ctx) return;
-  if (width < 0 || height < 0) {
-    ctx->setError(GL_INVALID_VALUE);
-    return;
-  }
-  ctx->viewport[0] = x;
-  ctx->viewport[1] = y;
-  ctx->viewport[2] = width > pf::kMaxFramebufferSize ? pf::kMaxFramebufferSize : width;
-  ctx->viewport[3] = height > pf::kMaxFramebufferSize ? pf::kMaxFramebufferSize : height;
+  pf::dispatch<pf::GlOp::Viewport>(x, y, width, height);
 }
-
-void pfglDepthFunc(GLenum func) {
-  PFcontextRec* ctx = pf::contextOutsideBegin();
-  if (!ctx) return;
-  if (func < GL_NEVER || func > GL_ALWAYS) {
-    ctx->setError(GL_INVALID_ENUM);
-    return;
-  }
-  ctx->depth_func = func;
-}
-
-void pfglDepthMask(GLboolean flag) {
-  if (PFcontextRec* ctx = pf::contextOutsideBegin()) ctx->depth_write = flag != GL_FALSE;
-}
-
-void pfglDepthRange(GLclampd zNear, GLclampd zFar) {
-  PFcontextRec* ctx = pf::contextOutsideBegin();
-  if (!ctx) return;
-  ctx->depth_range[0] = clamp01(zNear);
-  ctx->depth_range[1] = clamp01(zFar);
-}
-
-// The capabilities primflow has: depth test, face culling, lighting and its lights, colour
-// material, normalising and rescaling normals, per-pixel lighting of vertex primitives.
-static bool* capability(PFcontextRec& ctx, GLenum cap) {
-  if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + pf::kMaxLights) return &ctx.lighting.lights[cap - GL_LIGHT0].enabled;
-  switch (cap) {
-    case GL_DEPTH_TEST: return &ctx.depth_test;
-    case GL_CULL_FACE: return &ctx.cull;
-    case GL_LIGHTING: return &ctx.lighting.enabled;
-    case GL_COLOR_MATERIAL: return &ctx.lighting.color_material;
-    case GL_NORMALIZE: return &ctx.lighting.normalize;
-    case GL_RESCALE_NORMAL: return &ctx.lighting.rescale_normal;
-    case GL_PER_PIXEL_LIGHTING_EXT: return &ctx.lighting.per_pixel_vertices;
-    default: ctx.setError(GL_INVALID_ENUM); return nullptr;
-  }
-}
-
-void pfglEnable(GLenum cap) {
-  PFcontextRec* ctx = pf::contextOutsideBegin();
-  if (!ctx) return;
-  if (bool* c = capability(*ctx, cap)) *c = true;
-  if (cap == GL_COLOR_MATERIAL) ctx->lighting.trackColor(ctx->current_color);  // tracks from now on
-}
-
-void pfglDisable(GLenum cap) {
-  PFcontextRec* ctx = pf::contextOutsideBegin();
-  if (!ctx) return;
-  if (bool* c = capability(*ctx, cap)) *c = false;
-}
+void pfglDepthFunc(GLenum func) { pf::dispatch<pf::GlOp::DepthFunc>(func); }
+void pfglDepthMask(GLboolean flag) { pf::dispatch<pf::GlOp::DepthMask>(flag); }
+void pfglDepthRange(GLclampd zNear, GLclampd zFar) { pf::dispatch<pf::GlOp::DepthRange>(zNear, zFar); }
+void pfglEnable(GLenum cap) { pf::dispatch<pf::GlOp::Enable>(cap); }
+void pfglDisable(GLenum cap) { pf::dispatch<pf::GlOp::Disable>(cap); }
 
 GLboolean pfglIsEnabled(GLenum cap) {
   PFcontextRec* ctx = pf::contextOutsideBegin();
@@ -254,40 +288,9 @@ GLboolean pfglIsEnabled(GLenum cap) {
   return c && *c ? GL_TRUE : GL_FALSE;
 }
 
-void pfglColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a) {
-  PFcontextRec* ctx = pf::contextOutsideBegin();
-  if (!ctx) return;
-  ctx->color_mask = static_cast<uint8_t>((r ? 1 : 0) | (g ? 2 : 0) | (b ? 4 : 0) | (a ? 8 : 0));
-}
-
-void pfglCullFace(GLenum mode) {
-  PFcontextRec* ctx = pf::contextOutsideBegin();
-  if (!ctx) return;
-  if (mode != GL_FRONT && mode != GL_BACK && mode != GL_FRONT_AND_BACK) {
-    ctx->setError(GL_INVALID_ENUM);
-    return;
-  }
-  ctx->cull_face = mode;
-}
-
-void pfglFrontFace(GLenum mode) {
-  PFcontextRec* ctx = pf::contextOutsideBegin();
-  if (!ctx) return;
-  if (mode != GL_CW && mode != GL_CCW) {
-    ctx->setError(GL_INVALID_ENUM);
-    return;
-  }
-  ctx->front_face = mode;
-}
-
-void pfglShadeModel(GLenum mode) {
-  PFcontextRec* ctx = pf::contextOutsideBegin();
-  if (!ctx) return;
-  if (mode != GL_FLAT && mode != GL_SMOOTH) {
-    ctx->setError(GL_INVALID_ENUM);
-    return;
-  }
-  ctx->shade_model = mode;
-}
+void pfglColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a) { pf::dispatch<pf::GlOp::ColorMask>(r, g, b, a); }
+void pfglCullFace(GLenum mode) { pf::dispatch<pf::GlOp::CullFace>(mode); }
+void pfglFrontFace(GLenum mode) { pf::dispatch<pf::GlOp::FrontFace>(mode); }
+void pfglShadeModel(GLenum mode) { pf::dispatch<pf::GlOp::ShadeModel>(mode); }
 
 }  // extern "C"

@@ -15,6 +15,7 @@
 
 #include <primflow/gl.h>
 
+#include "api/src/commands.h"
 #include "api/src/context_state.h"
 #include "raster/limits.h"
 
@@ -92,7 +93,7 @@ void recordSequencePoint(PFcontextRec& ctx);
 
 // One sequence point of the glBegin in progress, recorded as a row (a failed allocation drops
 // the glBegin: GL_OUT_OF_MEMORY).
-void sequencePoint(PFcontextRec& ctx) {
+void bindSequencePoint(PFcontextRec& ctx) {
   if (ctx.begin_out_of_memory) return;  // this glBegin was dropped: nothing more to record
   try {
     recordSequencePoint(ctx);
@@ -200,48 +201,33 @@ void submitInstances(PFcontextRec& ctx) {
 // extension takes exactly whole instances or nothing.
 bool isGlMode(GLenum mode) { return mode <= GL_POLYGON; }
 
-void setParam(GLuint name, int count, const double* v) {
-  PFcontextRec* ctx = currentContext();
-  if (!ctx) return;
-  if (!ctx->isParam(name)) {
-    ctx->setError(GL_INVALID_VALUE);
+void setParam(PFcontextRec& ctx, GLuint name, int count, const double* v) {
+  if (!ctx.isParam(name)) {
+    ctx.setError(GL_INVALID_VALUE);
     return;
   }
-  ctx->setParamValue(name, count, v);
+  ctx.setParamValue(name, count, v);
 }
 
-// The vector forms of pfglRastParam*EXT: 1 to 16 values, not NULL.
-template <class T>
-void setParamVector(GLuint name, GLsizei count, const T* v) {
-  PFcontextRec* ctx = currentContext();
-  if (!ctx) return;
-  if (count < 1 || count > 16 || !v) {
-    ctx->setError(GL_INVALID_VALUE);
+// The vector forms of pfglRastParam*EXT: 1 to 16 values (count 0: a NULL pointer).
+template <class T, int N>
+void setParamVector(PFcontextRec& ctx, GLuint name, const pf::Values<T, N>& v) {
+  if (v.count < 1 || v.count > 16) {
+    ctx.setError(GL_INVALID_VALUE);
     return;
   }
   double d[16];
-  for (int i = 0; i < count; ++i) d[i] = v[i];
-  setParam(name, count, d);
+  for (int i = 0; i < v.count; ++i) d[i] = v.v[i];
+  setParam(ctx, name, v.count, d);
 }
 
-void setVertex(double x, double y, double z, double w, int count) {
-  PFcontextRec* ctx = currentContext();
-  if (!ctx || !ctx->in_begin) return;  // outside Begin/End a vertex has no effect (GL: undefined)
+void setVertex(PFcontextRec& ctx, double x, double y, double z, double w, int count) {
+  if (!ctx.in_begin) return;  // outside Begin/End a vertex has no effect (GL: undefined)
   const double v[4] = {x, y, z, w};
-  pf::ParamValue& p = ctx->param(ctx->vertex_param);
+  pf::ParamValue& p = ctx.param(ctx.vertex_param);
   p.count = count;
   for (int i = 0; i < 4; ++i) p.v[i] = v[i];
-  sequencePoint(*ctx);
-}
-
-void setColor(float r, float g, float b, float a) {
-  PFcontextRec* ctx = currentContext();
-  if (!ctx) return;
-  ctx->current_color = glm::vec4(r, g, b, a);
-  ctx->lighting.trackColor(ctx->current_color);
-  pf::ParamValue& p = ctx->param(ctx->color_param);
-  p.count = 4;
-  for (int k = 0; k < 4; ++k) p.v[k] = ctx->current_color[k];
+  bindSequencePoint(ctx);
 }
 
 // The shading channels of a sequence point, in the layout planned at glBegin: each bound
@@ -358,8 +344,6 @@ void planShading(PFcontextRec& ctx, GLenum mode, const pf::CompiledPrimitive& pr
   }
 }
 
-float unorm(GLubyte v) { return static_cast<float>(v) / 255.0f; }
-
 }  // namespace
 
 void PFcontextRec::setParamValue(GLuint id, int count, const double* v) {
@@ -427,103 +411,131 @@ static void startBegin(PFcontextRec& context, GLenum mode, const pf::CompiledPri
                          " fit";
 }
 
-extern "C" {
+namespace pf::cmd {
 
-void pfglBegin(GLenum mode) {
-  PFcontextRec* ctx = currentContext();
-  if (!ctx) return;
-  if (ctx->in_begin) {
-    ctx->setError(GL_INVALID_OPERATION);
+void begin(PFcontextRec& ctx, GLenum mode) {
+  if (ctx.in_begin) {
+    ctx.setError(GL_INVALID_OPERATION);
     return;
   }
-  auto it = ctx->primitives.by_mode.find(mode);
-  if (it == ctx->primitives.by_mode.end()) {
-    ctx->setError(GL_INVALID_ENUM);
+  auto it = ctx.primitives.by_mode.find(mode);
+  if (it == ctx.primitives.by_mode.end()) {
+    ctx.setError(GL_INVALID_ENUM);
     return;
   }
-  ctx->in_begin = true;
-  ctx->begin_out_of_memory = false;
+  ctx.in_begin = true;
+  ctx.begin_out_of_memory = false;
   try {
-    startBegin(*ctx, mode, it->second.get());
+    startBegin(ctx, mode, it->second.get());
   } catch (const std::bad_alloc&) {  // planning the glBegin's rows: the glBegin is dropped
-    ctx->outOfMemory("glBegin");
+    ctx.outOfMemory("glBegin");
   }
 }
 
-void pfglEnd(void) {
-  PFcontextRec* ctx = currentContext();
-  if (!ctx) return;
-  if (!ctx->in_begin) {
-    ctx->setError(GL_INVALID_OPERATION);
+void end(PFcontextRec& ctx) {
+  if (!ctx.in_begin) {
+    ctx.setError(GL_INVALID_OPERATION);
     return;
   }
-  ctx->in_begin = false;
-  if (ctx->begin_out_of_memory) {  // already reported (GL_OUT_OF_MEMORY): nothing to draw
-    ctx->begin_out_of_memory = false;
-    ctx->begin_primitive = nullptr;
+  ctx.in_begin = false;
+  if (ctx.begin_out_of_memory) {  // already reported (GL_OUT_OF_MEMORY): nothing to draw
+    ctx.begin_out_of_memory = false;
+    ctx.begin_primitive = nullptr;
     return;
   }
-  const pf::CompiledPrimitive& prim = *ctx->begin_primitive;
-  if (ctx->reject_reason.empty() && !isGlMode(ctx->begin_mode) && prim.sequence_points > 0 &&
-      ctx->rows_count % static_cast<size_t>(prim.sequence_points) != 0)
-    ctx->reject_reason = std::to_string(ctx->rows_count) + " sequence point(s) do not make whole instances of " +
-                         std::to_string(prim.sequence_points);
-  if (!ctx->reject_reason.empty()) {
+  const CompiledPrimitive& prim = *ctx.begin_primitive;
+  if (ctx.reject_reason.empty() && !isGlMode(ctx.begin_mode) && prim.sequence_points > 0 &&
+      ctx.rows_count % static_cast<size_t>(prim.sequence_points) != 0)
+    ctx.reject_reason = std::to_string(ctx.rows_count) + " sequence point(s) do not make whole instances of " +
+                        std::to_string(prim.sequence_points);
+  if (!ctx.reject_reason.empty()) {
     // Never half-drawn: the whole glBegin / glEnd is dropped.
-    ctx->setError(GL_INVALID_OPERATION);
+    ctx.setError(GL_INVALID_OPERATION);
     std::fprintf(stderr, "primflow: glEnd: instances of '%s' rejected, nothing drawn: %s\n", prim.name.c_str(),
-                 ctx->reject_reason.c_str());
-  } else if (ctx->color) {
+                 ctx.reject_reason.c_str());
+  } else if (ctx.color) {
     try {
-      submitInstances(*ctx);
+      submitInstances(ctx);
     } catch (const std::bad_alloc&) {  // instances half binned: the frame so far is dropped
-      ctx->outOfMemory("glEnd");
+      ctx.outOfMemory("glEnd");
     }
   }
-  ctx->begin_primitive = nullptr;
+  ctx.begin_primitive = nullptr;
 }
 
-void pfglVertex2f(GLfloat x, GLfloat y) { setVertex(x, y, 0, 1, 2); }
-void pfglVertex3f(GLfloat x, GLfloat y, GLfloat z) { setVertex(x, y, z, 1, 3); }
-void pfglVertex4f(GLfloat x, GLfloat y, GLfloat z, GLfloat w) { setVertex(x, y, z, w, 4); }
-void pfglVertex2d(GLdouble x, GLdouble y) { setVertex(x, y, 0, 1, 2); }
-void pfglVertex3d(GLdouble x, GLdouble y, GLdouble z) { setVertex(x, y, z, 1, 3); }
-void pfglVertex4d(GLdouble x, GLdouble y, GLdouble z, GLdouble w) { setVertex(x, y, z, w, 4); }
-void pfglVertex2fv(const GLfloat* v) { if (v) setVertex(v[0], v[1], 0, 1, 2); }
-void pfglVertex3fv(const GLfloat* v) { if (v) setVertex(v[0], v[1], v[2], 1, 3); }
-void pfglVertex4fv(const GLfloat* v) { if (v) setVertex(v[0], v[1], v[2], v[3], 4); }
-void pfglVertex2dv(const GLdouble* v) { if (v) setVertex(v[0], v[1], 0, 1, 2); }
-void pfglVertex3dv(const GLdouble* v) { if (v) setVertex(v[0], v[1], v[2], 1, 3); }
-void pfglVertex4dv(const GLdouble* v) { if (v) setVertex(v[0], v[1], v[2], v[3], 4); }
+void vertex2f(PFcontextRec& ctx, GLfloat x, GLfloat y) { setVertex(ctx, x, y, 0, 1, 2); }
+void vertex3f(PFcontextRec& ctx, GLfloat x, GLfloat y, GLfloat z) { setVertex(ctx, x, y, z, 1, 3); }
+void vertex(PFcontextRec& ctx, GLdouble x, GLdouble y, GLdouble z, GLdouble w, GLint count) {
+  setVertex(ctx, x, y, z, w, count);
+}
 
-void pfglColor3f(GLfloat r, GLfloat g, GLfloat b) { setColor(r, g, b, 1.0f); }
-void pfglColor4f(GLfloat r, GLfloat g, GLfloat b, GLfloat a) { setColor(r, g, b, a); }
-void pfglColor3fv(const GLfloat* v) { if (v) setColor(v[0], v[1], v[2], 1.0f); }
-void pfglColor4fv(const GLfloat* v) { if (v) setColor(v[0], v[1], v[2], v[3]); }
-void pfglColor3ub(GLubyte r, GLubyte g, GLubyte b) { setColor(unorm(r), unorm(g), unorm(b), 1.0f); }
-void pfglColor4ub(GLubyte r, GLubyte g, GLubyte b, GLubyte a) { setColor(unorm(r), unorm(g), unorm(b), unorm(a)); }
+void color(PFcontextRec& ctx, GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
+  ctx.current_color = glm::vec4(r, g, b, a);
+  ctx.lighting.trackColor(ctx.current_color);
+  ParamValue& p = ctx.param(ctx.color_param);
+  p.count = 4;
+  for (int k = 0; k < 4; ++k) p.v[k] = ctx.current_color[k];
+}
 
-void pfglNormal3f(GLfloat x, GLfloat y, GLfloat z) {
-  PFcontextRec* ctx = currentContext();
-  if (!ctx) return;
+void normal(PFcontextRec& ctx, GLfloat x, GLfloat y, GLfloat z) {
   const double v[3] = {x, y, z};
-  setParam(ctx->normal_param, 3, v);
+  setParam(ctx, ctx.normal_param, 3, v);
 }
-void pfglNormal3fv(const GLfloat* v) { if (v) pfglNormal3f(v[0], v[1], v[2]); }
 
-// GL keeps four texture coordinates (s, t, r, q); glTexCoord1 and 2 fill the rest with 0, 0, 1.
-void pfglTexCoord1f(GLfloat s) {
-  PFcontextRec* ctx = currentContext();
-  if (!ctx) return;
-  const double v[4] = {s, 0, 0, 1};
-  setParam(ctx->texcoord_param, 4, v);
+// GL keeps four texture coordinates (s, t, r, q).
+void texCoord(PFcontextRec& ctx, GLfloat s, GLfloat t, GLfloat r, GLfloat q) {
+  const double v[4] = {s, t, r, q};
+  setParam(ctx, ctx.texcoord_param, 4, v);
 }
-void pfglTexCoord2f(GLfloat s, GLfloat t) {
-  PFcontextRec* ctx = currentContext();
-  if (!ctx) return;
-  const double v[4] = {s, t, 0, 1};
-  setParam(ctx->texcoord_param, 4, v);
+
+void rastParam1(PFcontextRec& ctx, GLuint name, GLdouble v) { setParam(ctx, name, 1, &v); }
+void rastParam3(PFcontextRec& ctx, GLuint name, GLfloat x, GLfloat y, GLfloat z) {
+  const double d[3] = {x, y, z};
+  setParam(ctx, name, 3, d);
 }
+void rastParam4(PFcontextRec& ctx, GLuint name, GLfloat x, GLfloat y, GLfloat z, GLfloat w) {
+  const double d[4] = {x, y, z, w};
+  setParam(ctx, name, 4, d);
+}
+void rastParamfv(PFcontextRec& ctx, GLuint name, Values16f v) { setParamVector(ctx, name, v); }
+void rastParamiv(PFcontextRec& ctx, GLuint name, Values16i v) { setParamVector(ctx, name, v); }
+
+void sequencePoint(PFcontextRec& ctx) {
+  if (!ctx.in_begin) {
+    ctx.setError(GL_INVALID_OPERATION);
+    return;
+  }
+  bindSequencePoint(ctx);
+}
+
+void materialInterp(PFcontextRec& ctx, GLuint param, GLenum primitive, GLenum interpolator) {
+  if (!outsideBegin(ctx)) return;
+  if (!ctx.isParam(param) || !ctx.primitives.by_mode.count(primitive)) {
+    ctx.setError(GL_INVALID_VALUE);
+    return;
+  }
+  if (interpolator != GL_PERSPECTIVE_LINEAR_INTERPOLATOR_EXT && interpolator != GL_LINEAR_INTERPOLATOR_EXT &&
+      !ctx.primitives.interpolator(interpolator)) {
+    ctx.setError(GL_INVALID_ENUM);
+    return;
+  }
+  auto& bound = ctx.shading_bindings[primitive];
+  for (auto& b : bound)
+    if (b.first == param) {
+      b.second = interpolator;
+      return;
+    }
+  bound.push_back({param, interpolator});
+}
+
+}  // namespace pf::cmd
+
+// (The vertex attributes' entry points, glVertex* and the rest: vertex_attributes.cpp.)
+
+extern "C" {
+
+void pfglBegin(GLenum mode) { pf::dispatch<pf::GlOp::Begin>(mode); }
+void pfglEnd(void) { pf::dispatch<pf::GlOp::End>(); }
 
 // ---- the extension: named parameters and sequence points ----
 
@@ -542,54 +554,28 @@ GLuint pfglGetParamNameEXT(const GLchar* name) {
   }
 }
 
-void pfglRastParamfEXT(GLuint name, GLfloat v) {
-  const double d[1] = {v};
-  setParam(name, 1, d);
-}
-void pfglRastParamiEXT(GLuint name, GLint v) {
-  const double d[1] = {static_cast<double>(v)};
-  setParam(name, 1, d);
-}
+void pfglRastParamfEXT(GLuint name, GLfloat v) { pf::dispatch<pf::GlOp::RastParam1>(name, v); }
+void pfglRastParamiEXT(GLuint name, GLint v) { pf::dispatch<pf::GlOp::RastParam1>(name, v); }
 void pfglRastParam3fEXT(GLuint name, GLfloat x, GLfloat y, GLfloat z) {
-  const double d[3] = {x, y, z};
-  setParam(name, 3, d);
+  pf::dispatch<pf::GlOp::RastParam3>(name, x, y, z);
 }
 void pfglRastParam4fEXT(GLuint name, GLfloat x, GLfloat y, GLfloat z, GLfloat w) {
-  const double d[4] = {x, y, z, w};
-  setParam(name, 4, d);
+  pf::dispatch<pf::GlOp::RastParam4>(name, x, y, z, w);
 }
-void pfglRastParamfvEXT(GLuint name, GLsizei count, const GLfloat* v) { setParamVector(name, count, v); }
-void pfglRastParamivEXT(GLuint name, GLsizei count, const GLint* v) { setParamVector(name, count, v); }
+// (A count outside 1..16 or a NULL pointer copies nothing: GL_INVALID_VALUE when it executes.)
+void pfglRastParamfvEXT(GLuint name, GLsizei count, const GLfloat* v) {
+  const bool ok = count >= 1 && count <= 16;
+  pf::dispatch<pf::GlOp::RastParamfv>(name, pf::valuesOf<GLfloat, 16>(ok ? v : nullptr, count, count));
+}
+void pfglRastParamivEXT(GLuint name, GLsizei count, const GLint* v) {
+  const bool ok = count >= 1 && count <= 16;
+  pf::dispatch<pf::GlOp::RastParamiv>(name, pf::valuesOf<GLint, 16>(ok ? v : nullptr, count, count));
+}
 
 void pfglMaterialInterpEXT(GLuint param, GLenum primitive, GLenum interpolator) {
-  PFcontextRec* ctx = pf::contextOutsideBegin();
-  if (!ctx) return;
-  if (!ctx->isParam(param) || !ctx->primitives.by_mode.count(primitive)) {
-    ctx->setError(GL_INVALID_VALUE);
-    return;
-  }
-  if (interpolator != GL_PERSPECTIVE_LINEAR_INTERPOLATOR_EXT && interpolator != GL_LINEAR_INTERPOLATOR_EXT &&
-      !ctx->primitives.interpolator(interpolator)) {
-    ctx->setError(GL_INVALID_ENUM);
-    return;
-  }
-  auto& bound = ctx->shading_bindings[primitive];
-  for (auto& b : bound)
-    if (b.first == param) {
-      b.second = interpolator;
-      return;
-    }
-  bound.push_back({param, interpolator});
+  pf::dispatch<pf::GlOp::MaterialInterp>(param, primitive, interpolator);
 }
 
-void pfglSequencePointEXT(void) {
-  PFcontextRec* ctx = currentContext();
-  if (!ctx) return;
-  if (!ctx->in_begin) {
-    ctx->setError(GL_INVALID_OPERATION);
-    return;
-  }
-  sequencePoint(*ctx);
-}
+void pfglSequencePointEXT(void) { pf::dispatch<pf::GlOp::SequencePoint>(); }
 
 }  // extern "C"

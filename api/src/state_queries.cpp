@@ -93,6 +93,14 @@ bool query(const PFcontextRec& ctx, GLenum pname, Query& q) {
     case GL_PACK_ALIGNMENT: set({double(ctx.pack_alignment)}); return true;
     case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS: set({8}); return true;
     case GL_DEPTH_BITS: set({double(ctx.depth_bits > 0 ? 24 : 0)}); return true;
+    // Display lists: the list being compiled and its mode (0 when none is), the base; names as
+    // GLint, as Mesa keeps them (glListBase(-5) reads back -5).
+    case GL_LIST_INDEX: set({double(static_cast<GLint>(ctx.lists.compiling ? ctx.lists.name : 0))}); return true;
+    case GL_LIST_MODE:
+      set({double(!ctx.lists.compiling ? 0 : ctx.lists.execute ? GL_COMPILE_AND_EXECUTE : GL_COMPILE)});
+      return true;
+    case GL_LIST_BASE: set({double(static_cast<GLint>(ctx.lists.base))}); return true;
+    case GL_MAX_LIST_NESTING: set({double(pf::kMaxListNesting)}); return true;
     default:
       if (pname >= GL_LIGHT0 && pname < GL_LIGHT0 + pf::kMaxLights) {
         set({ctx.lighting.lights[pname - GL_LIGHT0].enabled ? 1.0 : 0.0});

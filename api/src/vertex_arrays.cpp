@@ -1,11 +1,14 @@
 // Vertex arrays (GL 1.5 section 2.8): glDrawArrays and glDrawElements are, by GL's own
 // definition, glBegin, then glArrayElement for each index (the enabled arrays' values set as
 // the current ones, the vertex last), then glEnd -- and are implemented exactly so, through
-// the same sequence points as immediate mode.
+// the same sequence points as immediate mode. In a display list they are recorded so: the
+// glBegin, glColor, glNormal, glVertex and glEnd they issue, with the arrays' values read when
+// the list is compiled (GL 1.5 section 5.4), and their errors raised when it executes.
 #include <cstring>
 
 #include <primflow/gl.h>
 
+#include "api/src/commands.h"
 #include "api/src/context_state.h"
 
 namespace {
@@ -38,25 +41,27 @@ double fetch(const pf::ClientArray& a, GLint i, int k, bool normalize) {
   }
 }
 
+using pf::issue;
+using pf::GlOp;
+
 // glArrayElement's work: the enabled arrays' element i as the current values, the vertex last.
 void arrayElement(PFcontextRec& ctx, GLint i) {
   if (ctx.color_array.enabled && ctx.color_array.pointer) {
     const pf::ClientArray& a = ctx.color_array;
-    pfglColor4f(static_cast<float>(fetch(a, i, 0, true)), static_cast<float>(fetch(a, i, 1, true)),
-                static_cast<float>(fetch(a, i, 2, true)), a.size == 4 ? static_cast<float>(fetch(a, i, 3, true)) : 1.0f);
+    issue<GlOp::Color>(ctx, static_cast<float>(fetch(a, i, 0, true)), static_cast<float>(fetch(a, i, 1, true)),
+                     static_cast<float>(fetch(a, i, 2, true)),
+                     a.size == 4 ? static_cast<float>(fetch(a, i, 3, true)) : 1.0f);
   }
   if (ctx.normal_array.enabled && ctx.normal_array.pointer) {
     const pf::ClientArray& a = ctx.normal_array;
-    pfglNormal3f(static_cast<float>(fetch(a, i, 0, true)), static_cast<float>(fetch(a, i, 1, true)),
-                 static_cast<float>(fetch(a, i, 2, true)));
+    issue<GlOp::Normal>(ctx, static_cast<float>(fetch(a, i, 0, true)), static_cast<float>(fetch(a, i, 1, true)),
+                      static_cast<float>(fetch(a, i, 2, true)));
   }
   if (ctx.vertex_array.enabled && ctx.vertex_array.pointer) {
     const pf::ClientArray& a = ctx.vertex_array;
     double v[4] = {0, 0, 0, 1};
     for (int k = 0; k < a.size; ++k) v[k] = fetch(a, i, k, false);
-    if (a.size == 2) pfglVertex2d(v[0], v[1]);
-    else if (a.size == 3) pfglVertex3d(v[0], v[1], v[2]);
-    else pfglVertex4d(v[0], v[1], v[2], v[3]);
+    issue<GlOp::Vertex>(ctx, v[0], v[1], v[2], v[3], a.size);
   }
 }
 
@@ -88,19 +93,21 @@ void pointer(GLenum which, GLint size, GLenum type, GLsizei stride, const GLvoid
   a.pointer = ptr;
 }
 
+// An error of glDrawArrays or glDrawElements: raised, or recorded into the list being compiled
+// (raised when it executes), as GL does for commands compiled into a list.
+void fail(PFcontextRec& ctx, GLenum error) { issue<GlOp::Error>(ctx, error); }
+
 // Checks shared by glDrawArrays and glDrawElements; the context to draw with, or null.
 PFcontextRec* drawable(GLenum mode, GLsizei count) {
-  PFcontextRec* ctx = pf::contextOutsideBegin();
+  PFcontextRec* ctx = pf::currentContext();
   if (!ctx) return nullptr;
-  if (mode > GL_POLYGON) {
-    ctx->setError(GL_INVALID_ENUM);
-    return nullptr;
-  }
-  if (count < 0) {
-    ctx->setError(GL_INVALID_VALUE);
-    return nullptr;
-  }
-  return ctx;
+  GLenum error = GL_NO_ERROR;
+  if (ctx->in_begin) error = GL_INVALID_OPERATION;
+  else if (mode > GL_POLYGON) error = GL_INVALID_ENUM;
+  else if (count < 0) error = GL_INVALID_VALUE;
+  if (error == GL_NO_ERROR) return ctx;
+  fail(*ctx, error);
+  return nullptr;
 }
 
 }  // namespace
@@ -143,25 +150,21 @@ void pfglArrayElement(GLint i) {
 void pfglDrawArrays(GLenum mode, GLint first, GLsizei count) {
   PFcontextRec* ctx = drawable(mode, count);
   if (!ctx) return;
-  if (first < 0) {
-    ctx->setError(GL_INVALID_VALUE);
-    return;
-  }
-  pfglBegin(mode);
+  if (first < 0) return fail(*ctx, GL_INVALID_VALUE);
+  issue<GlOp::Begin>(*ctx, mode);
   // (first + i in 64 bits: the last index a GLint can name is the last one drawn.)
   for (int64_t i = first; i < int64_t{first} + count && i <= INT32_MAX; ++i) arrayElement(*ctx, static_cast<GLint>(i));
-  pfglEnd();
+  issue<GlOp::End>(*ctx);
 }
 
 void pfglDrawElements(GLenum mode, GLsizei count, GLenum type, const GLvoid* indices) {
   PFcontextRec* ctx = drawable(mode, count);
   if (!ctx) return;
   if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) {
-    ctx->setError(GL_INVALID_ENUM);
-    return;
+    return fail(*ctx, GL_INVALID_ENUM);
   }
   if (!indices) return;
-  pfglBegin(mode);
+  issue<GlOp::Begin>(*ctx, mode);
   for (GLsizei i = 0; i < count; ++i) {
     GLint index;
     if (type == GL_UNSIGNED_BYTE) {
@@ -174,7 +177,7 @@ void pfglDrawElements(GLenum mode, GLsizei count, GLenum type, const GLvoid* ind
     }
     arrayElement(*ctx, index);
   }
-  pfglEnd();
+  issue<GlOp::End>(*ctx);
 }
 
 }  // extern "C"

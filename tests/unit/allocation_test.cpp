@@ -325,6 +325,57 @@ TEST(OutOfMemory, FailedAllocationsAreGlOutOfMemoryAndTheContextGoesOn) {
   pfDestroyContext(ctx);
 }
 
+// A display list past memory: the commands that do not fit are left out with GL_OUT_OF_MEMORY
+// (and one line on stderr), the list keeps those recorded before, and the context goes on --
+// compiling and calling lists again. Recording allocates nothing per command once its buffer
+// has grown: a second list of the same length makes no allocation but its stored copy.
+TEST(OutOfMemory, ADisplayListPastMemoryLeavesCommandsOutAndTheContextGoesOn) {
+  std::vector<unsigned char> px(256 * 256 * 4);
+  PFcontext ctx = windowContext(px);
+  ASSERT_NE(ctx, nullptr);
+  auto triangles = [](int n) {  // (the list holds the vertices; glBegin and glEnd come from outside)
+    for (int i = 0; i < n; ++i) {
+      pfglVertex3f(10, 10, 0);
+      pfglVertex3f(20, 10, 0);
+      pfglVertex3f(10, 20, 0);
+    }
+  };
+  g_fail_from_bytes = 64 * 1024;
+  testing::internal::CaptureStderr();
+  pfglNewList(1, GL_COMPILE);
+  triangles(30000);  // 90,000 vertices of 16 bytes each
+  pfglEndList();
+  g_fail_from_bytes = 0;
+  EXPECT_EQ(testing::internal::GetCapturedStderr(), "primflow: display list 1: out of memory: commands left out of it\n");
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_OUT_OF_MEMORY));
+  EXPECT_EQ(pfglIsList(1), GL_TRUE);
+  pfglBegin(GL_TRIANGLES);
+  pfglCallList(1);  // the vertices that fit
+  pfglEnd();
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  pfglClear(GL_COLOR_BUFFER_BIT);
+  pfglNewList(2, GL_COMPILE);
+  drawRedTriangle();
+  pfglEndList();
+  pfglCallList(2);
+  pfglFinish();
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  EXPECT_TRUE(redAt(px, 100, 100));
+
+  pfglNewList(3, GL_COMPILE);
+  triangles(1000);
+  pfglEndList();
+  g_allocations = 0;
+  g_counting = true;
+  pfglNewList(4, GL_COMPILE);
+  triangles(1000);
+  pfglEndList();
+  g_counting = false;
+  EXPECT_EQ(g_allocations.load(), 2) << "the list's stored copy and its entry among the lists";
+  pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
+  pfDestroyContext(ctx);
+}
+
 // Registering a primitive costs the same however many a context holds (each of 10,000 separate
 // pfglCompilePrimitivesEXT calls was once slower than the last: every compile copied the whole
 // table of callable primitives). Counted in heap allocations of one compile, after 50 and after

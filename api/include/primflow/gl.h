@@ -128,6 +128,20 @@ void pfglNormal3fv(const GLfloat *v);
 void pfglTexCoord1f(GLfloat s);
 void pfglTexCoord2f(GLfloat s, GLfloat t);
 
+/* Display lists (GL 1.5 section 5.4): every command above that GL compiles is recorded, and the
+ * extension's pfglRastParam*EXT, pfglSequencePointEXT and pfglMaterialInterpEXT too; queries,
+ * glFinish / glFlush, glReadPixels, glPixelStorei, client state and array pointers execute at
+ * once (glArrayElement, glDrawArrays, glDrawElements record what they draw). Nesting up to
+ * GL_MAX_LIST_NESTING (64). docs/api.md, "Display lists". */
+GLuint pfglGenLists(GLsizei range);
+void pfglNewList(GLuint list, GLenum mode);
+void pfglEndList(void);
+void pfglCallList(GLuint list);
+void pfglCallLists(GLsizei n, GLenum type, const GLvoid *lists);
+void pfglListBase(GLuint base);
+void pfglDeleteLists(GLuint list, GLsizei range);
+GLboolean pfglIsList(GLuint list);
+
 /* ---- PixelFlow extensions (tokens in primflow's own range, 0x31000-0x3FFFF) ---------------- */
 #define GL_TOO_MANY_ITERATIONS_EXT 0x31001 /* error: a primitive program hit the iteration cap */
 #define GL_PERSPECTIVE_LINEAR_INTERPOLATOR_EXT 0x31010 /* pfglMaterialInterpEXT interpolators */

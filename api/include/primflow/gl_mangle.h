@@ -94,5 +94,13 @@
 #define glArrayElement pfglArrayElement
 #define glDrawArrays pfglDrawArrays
 #define glDrawElements pfglDrawElements
+#define glGenLists pfglGenLists
+#define glNewList pfglNewList
+#define glEndList pfglEndList
+#define glCallList pfglCallList
+#define glCallLists pfglCallLists
+#define glListBase pfglListBase
+#define glDeleteLists pfglDeleteLists
+#define glIsList pfglIsList
 
 #endif
