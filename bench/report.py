@@ -3,6 +3,7 @@
 
     ./bench/report            rewrites the tables between the doc's markers, and the charts
     ./bench/report --check    exit 1 if a table in the doc differs from what its CSV gives
+    ./bench/report.py --table NAME   prints table NAME
 
 Every figure in the doc's tables comes from here: a marker pair `<!-- report:NAME -->` ...
 `<!-- /report:NAME -->` holds the table NAME renders (TABLES below) from the CSV its benchmark
@@ -170,6 +171,20 @@ def chart_particles(plt):
     plt.close(fig)
 
 
+def table_lists():
+    cases = {}
+    for r in rows("results_lists.csv"):
+        cases.setdefault(r["scene"], []).append(r)
+    body = []
+    for scene, rs in cases.items():
+        di, li = median_of(rs, "direct_issue_ms"), median_of(rs, "list_issue_ms")
+        df, lf = median_of(rs, "direct_frame_ms"), median_of(rs, "list_frame_ms")
+        body.append([scene, rs[0]["commands"], fmt(di, 3), fmt(li, 3), fmt(li / di, 2), fmt(df, 3), fmt(lf, 3),
+                     fmt(lf / df, 2), fmt(median_of(rs, "compile_ms"), 2)])
+    return table(["scene", "commands", "issued directly ms", "glCallList ms", "list / direct", "frame, direct ms",
+                  "frame, list ms", "list / direct", "compiling the list ms"], body)
+
+
 def table_depth_cull():
     cases = {}
     for r in rows("results_depth_cull.csv"):
@@ -222,6 +237,7 @@ def field_table(name, with_simd=False):
 
 TABLES = {
     "llvmpipe": table_llvmpipe,
+    "lists": table_lists,
     "profile": table_profile,
     "compile": table_compile,
     "particles": table_particles,
@@ -246,6 +262,9 @@ def render(doc):
 
 
 def main():
+    if "--table" in sys.argv:  # one table on stdout, for the benchmark scripts
+        print(TABLES[sys.argv[sys.argv.index("--table") + 1]]())
+        return 0
     with open(DOC) as f:
         doc = f.read()
     new = render(doc)
