@@ -1,8 +1,11 @@
-# Driver for the install tests (label "install"): configures, builds and runs the consumer
-# project (tests/consumer) in a scratch directory.
+# Driver for the install tests (label "install"): configures, builds and runs a consumer
+# project (tests/consumer in C++, tests/consumer/c in C) in a scratch directory.
 #   MODE=build_tree  find_package(primflow) from the build tree (-Dprimflow_DIR=<build>)
 #   MODE=install     cmake --install <build> --prefix <scratch>/prefix, then find_package from
 #                    there (-DCMAKE_PREFIX_PATH); also checks that the pkg-config file is installed
+# PKG_CONFIG (pkg-config's path; C consumers): the consumer's main.c is also compiled and linked
+# by the C compiler with `pkg-config --cflags --libs primflow`, with and without --static, from
+# the build tree's primflow-uninstalled.pc or the installed primflow.pc, and run.
 # Other inputs: CONSUMER_SOURCE, PRIMFLOW_BUILD_DIR, WORK_DIR, GENERATOR, CXX_COMPILER,
 # C_COMPILER, BUILD_TYPE, LIBDIR, SANITIZE (the consumer is built with the same sanitizers as
 # the library it links, or it would not link).
@@ -32,11 +35,16 @@ endif()
 if(CXX_COMPILER)
   list(APPEND config_args -DCMAKE_CXX_COMPILER=${CXX_COMPILER})
 endif()
+if(C_COMPILER)
+  list(APPEND config_args -DCMAKE_C_COMPILER=${C_COMPILER})
+endif()
 if(BUILD_TYPE)
   list(APPEND config_args -DCMAKE_BUILD_TYPE=${BUILD_TYPE})
 endif()
+set(sanitize_flags "")
 if(SANITIZE)
-  list(APPEND config_args "-DCMAKE_CXX_FLAGS=-fsanitize=${SANITIZE}"
+  set(sanitize_flags -fsanitize=${SANITIZE})
+  list(APPEND config_args "-DCMAKE_CXX_FLAGS=-fsanitize=${SANITIZE}" "-DCMAKE_C_FLAGS=-fsanitize=${SANITIZE}"
                           "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=${SANITIZE}")
 endif()
 
@@ -71,4 +79,24 @@ if(MODE STREQUAL "install")
 endif()
 run(${CMAKE_COMMAND} --build ${WORK_DIR}/build)
 run(${WORK_DIR}/build/app)
+
+if(PKG_CONFIG)
+  if(MODE STREQUAL "build_tree")
+    set(pc_path ${PRIMFLOW_BUILD_DIR}/pkgconfig)
+  else()
+    set(pc_path ${prefix}/${LIBDIR}/pkgconfig)
+  endif()
+  foreach(static "" "--static")
+    execute_process(COMMAND ${CMAKE_COMMAND} -E env PKG_CONFIG_PATH=${pc_path}
+                            ${PKG_CONFIG} --cflags --libs ${static} primflow
+                    RESULT_VARIABLE rc OUTPUT_VARIABLE flags ERROR_VARIABLE err OUTPUT_STRIP_TRAILING_WHITESPACE)
+    if(NOT rc EQUAL 0)
+      message(FATAL_ERROR "run.cmake: pkg-config ${static} primflow failed: ${err}")
+    endif()
+    separate_arguments(flags UNIX_COMMAND "${flags}")
+    run(${C_COMPILER} -std=c99 -pedantic -Wall -Wextra -Werror ${sanitize_flags} ${CONSUMER_SOURCE}/main.c ${flags}
+        -o ${WORK_DIR}/app_pkgconfig${static})
+    run(${WORK_DIR}/app_pkgconfig${static})
+  endforeach()
+endif()
 message("run.cmake: ok (${MODE})")
