@@ -101,6 +101,8 @@ Values<T, N> valuesOf(const U* p, int n, GLint count) {
   X(RastParamiv, rastParamiv, GLuint, Values16i)                                          \
   X(SequencePoint, sequencePoint)                                                         \
   X(MaterialInterp, materialInterp, GLuint, GLenum, GLenum)                               \
+  /* vertex_attributes.cpp: glRect, as GL_POLYGON's four vertices */                      \
+  X(Rect, rect, GLdouble, GLdouble, GLdouble, GLdouble)                                   \
   /* display_lists.cpp: glCallList as a list executes it (list 0 or an unknown one is     */ \
   /* ignored, without the error a direct glCallList(0) gives, as in Mesa); an error found   */ \
   /* when a command was recorded (glDrawArrays' checks), raised when the list executes   */ \

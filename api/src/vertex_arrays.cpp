@@ -10,6 +10,7 @@
 
 #include "api/src/commands.h"
 #include "api/src/context_state.h"
+#include "api/src/normalized.h"
 
 namespace {
 
@@ -23,6 +24,13 @@ size_t typeSize(GLenum type) {
   }
 }
 
+template <class T>
+double component(const unsigned char* p, bool normalize) {
+  T v;
+  std::memcpy(&v, p, sizeof(T));
+  return normalize ? pf::normalized(v) : static_cast<double>(v);
+}
+
 // Component k of element i, as a double; `normalize`: integer types map to [0, 1] / [-1, 1]
 // as GL does for colours and normals.
 double fetch(const pf::ClientArray& a, GLint i, int k, bool normalize) {
@@ -30,14 +38,14 @@ double fetch(const pf::ClientArray& a, GLint i, int k, bool normalize) {
   const size_t stride = a.stride ? static_cast<size_t>(a.stride) : size * static_cast<size_t>(a.size);
   const unsigned char* p = static_cast<const unsigned char*>(a.pointer) + stride * static_cast<size_t>(i) + size * k;
   switch (a.type) {
-    case GL_BYTE: { int8_t v; std::memcpy(&v, p, 1); return normalize ? (2.0 * v + 1) / 255.0 : v; }
-    case GL_UNSIGNED_BYTE: { uint8_t v; std::memcpy(&v, p, 1); return normalize ? v / 255.0 : v; }
-    case GL_SHORT: { int16_t v; std::memcpy(&v, p, 2); return normalize ? (2.0 * v + 1) / 65535.0 : v; }
-    case GL_UNSIGNED_SHORT: { uint16_t v; std::memcpy(&v, p, 2); return normalize ? v / 65535.0 : v; }
-    case GL_INT: { int32_t v; std::memcpy(&v, p, 4); return normalize ? (2.0 * v + 1) / 4294967295.0 : v; }
-    case GL_UNSIGNED_INT: { uint32_t v; std::memcpy(&v, p, 4); return normalize ? v / 4294967295.0 : v; }
-    case GL_FLOAT: { float v; std::memcpy(&v, p, 4); return v; }
-    default: { double v; std::memcpy(&v, p, 8); return v; }
+    case GL_BYTE: return component<int8_t>(p, normalize);
+    case GL_UNSIGNED_BYTE: return component<uint8_t>(p, normalize);
+    case GL_SHORT: return component<int16_t>(p, normalize);
+    case GL_UNSIGNED_SHORT: return component<uint16_t>(p, normalize);
+    case GL_INT: return component<int32_t>(p, normalize);
+    case GL_UNSIGNED_INT: return component<uint32_t>(p, normalize);
+    case GL_FLOAT: return component<float>(p, normalize);
+    default: return component<double>(p, normalize);
   }
 }
 

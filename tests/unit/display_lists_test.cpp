@@ -240,6 +240,26 @@ std::vector<Family> families() {
                  pfglColor3f(0.5f, 0.5f, 0.5f);  // outside glBegin: current values
                  pfglVertex2f(9, 9);               // ignored outside glBegin
                }});
+  f.push_back({"attribute forms of every type, glRect", none, [] {
+                 const GLbyte b[3] = {-100, 50, 127};
+                 const GLushort us[4] = {1, 30000, 65535, 40000};
+                 const GLint i[4] = {30, 4, 40, 2};
+                 const GLdouble d[4] = {0.5, 0.25, 0.125, 1.0};
+                 pfglNormal3bv(b);
+                 pfglTexCoord3d(d[0], d[1], d[2]);
+                 pfglBegin(GL_TRIANGLES);
+                 pfglColor4usv(us);
+                 pfglVertex2s(2, 2);
+                 pfglColor3bv(b);
+                 pfglVertex4iv(i);
+                 pfglColor4dv(d);
+                 pfglVertex3i(3, 40, 0);
+                 pfglEnd();
+                 pfglColor3ui(4000000000u, 0, 2000000000u);
+                 pfglTexCoord1s(7);
+                 pfglRectd(30.5, 30.5, 45.0, 20.0);
+                 pfglRectiv(i + 2, i);
+               }});
   f.push_back({"vertex arrays", [] {
                  static const GLfloat xy[8] = {2, 2, 40, 4, 6, 40, 44, 44};
                  static const GLubyte rgb[12] = {250, 20, 20, 20, 250, 20, 20, 20, 250, 240, 240, 30};
@@ -595,4 +615,19 @@ TEST(DisplayLists, NoContextNoEffect) {
   pfglDeleteLists(1, 1);
   EXPECT_EQ(pfglGenLists(1), 0u);
   EXPECT_EQ(pfglIsList(1), GL_FALSE);
+}
+
+// The shorter glTexCoord forms fill what they do not give with (t, r, q) = (0, 0, 1), whatever
+// came before (GL 1.5 section 2.7; OSMesa keeps stale components there, see cases_gl1x.inc).
+TEST(VertexAttributes, ShorterTexCoordFormsFillZeroZeroOne) {
+  Ctx c;
+  GLfloat t[4];
+  pfglTexCoord4f(9, 9, 9, 9);
+  pfglTexCoord2s(5, 6);
+  pfglGetFloatv(GL_CURRENT_TEXTURE_COORDS, t);
+  EXPECT_EQ(std::vector<GLfloat>(t, t + 4), (std::vector<GLfloat>{5, 6, 0, 1}));
+  pfglTexCoord3i(1, 2, 3);
+  pfglTexCoord1d(0.5);
+  pfglGetFloatv(GL_CURRENT_TEXTURE_COORDS, t);
+  EXPECT_EQ(std::vector<GLfloat>(t, t + 4), (std::vector<GLfloat>{0.5f, 0, 0, 1}));
 }
