@@ -48,8 +48,8 @@ Values<T, N> valuesOf(const U* p, int n, GLint count) {
 // X(opcode, function in pf::cmd, argument types...). Every GL command GL compiles into a
 // display list, and primflow's extension commands that set state or feed a glBegin. Not here,
 // executed at once even while compiling (GL 1.5 section 5.4): glGen/Delete/IsList, glNewList,
-// glEndList, queries, glFinish, glFlush, glReadPixels, glPixelStore, client state and array
-// pointers (glArrayElement, glDrawArrays and glDrawElements record the commands they issue, the
+// glEndList, queries, glFinish, glFlush, glReadPixels, glPixelStore, client state (with
+// glPush/PopClientAttrib) and array pointers (glArrayElement, glDrawArrays and glDrawElements record the commands they issue, the
 // arrays read when compiled), and the extension's compile and look-up commands.
 #define PF_LIST_COMMANDS(X)                                                               \
   /* gl_commands.cpp */                                                                   \
@@ -66,6 +66,10 @@ Values<T, N> valuesOf(const U* p, int n, GLint count) {
   X(CullFace, cullFace, GLenum)                                                           \
   X(FrontFace, frontFace, GLenum)                                                         \
   X(ShadeModel, shadeModel, GLenum)                                                       \
+  X(Hint, hint, GLenum, GLenum)                                                           \
+  /* attrib_stack.cpp */                                                                  \
+  X(PushAttrib, pushAttrib, GLbitfield)                                                   \
+  X(PopAttrib, popAttrib)                                                                 \
   /* lighting_commands.cpp: the values' count is 1 for the scalar forms, 4 for the vector */ \
   /* forms, 0 for a NULL vector */                                                        \
   X(Light, light, GLenum, GLenum, Values4f)                                               \

@@ -70,6 +70,43 @@ struct ClientArray {
   const void* pointer = nullptr;
 };
 
+// glHint's targets (hintIndex gives a target's place; -1: not a target).
+constexpr int kHintCount = 7;
+int hintIndex(GLenum target);
+
+// What glPushAttrib saves of the groups primflow has (GL 1.5 table 6.x's attribute column),
+// restored by glPopAttrib for the groups in `mask`. The state of groups it lacks (fog, stencil,
+// texturing, ...) is constant: nothing to save.
+struct AttribState {
+  GLbitfield mask;
+  glm::vec4 current_color;                           // GL_CURRENT_BIT
+  ParamValue normal, texcoord;
+  bool depth_test, depth_write;                      // GL_DEPTH_BUFFER_BIT (and enables)
+  GLenum depth_func;
+  float clear_depth;
+  bool cull;                                         // GL_POLYGON_BIT (and enables)
+  GLenum cull_face, front_face;
+  LightingState lighting;                            // GL_LIGHTING_BIT, GL_ENABLE_BIT, GL_TRANSFORM_BIT
+  GLenum shade_model;
+  GLenum matrix_mode;                                // GL_TRANSFORM_BIT
+  int viewport[4];                                   // GL_VIEWPORT_BIT
+  float depth_range[2];
+  float clear_color[4];                              // GL_COLOR_BUFFER_BIT
+  uint8_t color_mask;
+  GLenum hints[kHintCount];                          // GL_HINT_BIT
+  GLuint list_base;                                  // GL_LIST_BIT
+};
+
+// What glPushClientAttrib saves: the pack alignment and the vertex arrays.
+struct ClientAttribState {
+  GLbitfield mask;
+  int pack_alignment;
+  ClientArray vertex_array, color_array, normal_array;
+};
+
+// GL_MAX_ATTRIB_STACK_DEPTH and GL_MAX_CLIENT_ATTRIB_STACK_DEPTH, Mesa's 16.
+constexpr size_t kMaxAttribStackDepth = 16;
+
 // Registered primitives: by name, and by the enum glBegin takes.
 struct PrimitiveRegistry {
   std::map<std::string, std::shared_ptr<const CompiledPrimitive>> by_name;
@@ -112,6 +149,7 @@ struct PFcontextRec {
   int width = 0, height = 0;
   std::vector<float> depth;
   bool ever_bound = false;
+  int first_size[2] = {0, 0};  // the first drawable's: GL's initial viewport and scissor box
   unsigned iteration_cap = 65536;
 
   pf::PrimitiveRegistry primitives;
@@ -144,6 +182,10 @@ struct PFcontextRec {
   pf::ClientArray vertex_array, color_array, normal_array;
   pf::LightingState lighting;
   pf::DisplayLists lists;
+  GLenum hints[pf::kHintCount] = {GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE,
+                                  GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE};
+  std::vector<pf::AttribState> attrib_stack;
+  std::vector<pf::ClientAttribState> client_attrib_stack;
 
   // Named parameters: ids (GL_FIRST_PARAM_NAME_EXT + index) by name, and their current values.
   // "color" is GL's current colour: glColor and pfglRastParam*EXT on "color" set both

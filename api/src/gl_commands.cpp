@@ -228,7 +228,29 @@ void cullFace(PFcontextRec& ctx, GLenum mode) {
 void frontFace(PFcontextRec& ctx, GLenum mode) { setMode(ctx, ctx.front_face, mode, {GL_CW, GL_CCW}); }
 void shadeModel(PFcontextRec& ctx, GLenum mode) { setMode(ctx, ctx.shade_model, mode, {GL_FLAT, GL_SMOOTH}); }
 
+// glHint: kept and read back; nothing primflow draws depends on a hint. A bad mode or target:
+// GL_INVALID_ENUM.
+void hint(PFcontextRec& ctx, GLenum target, GLenum mode) {
+  if (!outsideBegin(ctx)) return;
+  const int index = hintIndex(target);
+  if (index < 0 || (mode != GL_FASTEST && mode != GL_NICEST && mode != GL_DONT_CARE)) {
+    ctx.setError(GL_INVALID_ENUM);
+    return;
+  }
+  ctx.hints[index] = mode;
+}
+
 }  // namespace pf::cmd
+
+int pf::hintIndex(GLenum target) {
+  static constexpr GLenum kTargets[kHintCount] = {GL_PERSPECTIVE_CORRECTION_HINT, GL_POINT_SMOOTH_HINT,
+                                                  GL_LINE_SMOOTH_HINT,            GL_POLYGON_SMOOTH_HINT,
+                                                  GL_FOG_HINT,                    GL_GENERATE_MIPMAP_HINT,
+                                                  GL_TEXTURE_COMPRESSION_HINT};
+  for (int k = 0; k < kHintCount; ++k)
+    if (kTargets[k] == target) return k;
+  return -1;
+}
 
 extern "C" {
 
@@ -292,5 +314,6 @@ void pfglColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a) { pf::dis
 void pfglCullFace(GLenum mode) { pf::dispatch<pf::GlOp::CullFace>(mode); }
 void pfglFrontFace(GLenum mode) { pf::dispatch<pf::GlOp::FrontFace>(mode); }
 void pfglShadeModel(GLenum mode) { pf::dispatch<pf::GlOp::ShadeModel>(mode); }
+void pfglHint(GLenum target, GLenum mode) { pf::dispatch<pf::GlOp::Hint>(target, mode); }
 
 }  // extern "C"

@@ -9,28 +9,29 @@
 #include <primflow/gl.h>
 
 #include "api/src/context_state.h"
+#include "api/src/query.h"
 #include "raster/limits.h"
 
 namespace {
 
-// One queried value: up to 16 numbers, and whether GL maps them to integers as normalised
-// values (colours, depths, normals: 1.0 -> 2^31 - 1, GL 1.5 section 6.1.2).
-struct Query {
-  double v[16];
-  int count = 0;
-  bool normalized = false;
-};
+using pf::Query;
+
+// A client array's size, type and stride (GL_*_ARRAY_SIZE / _TYPE / _STRIDE); `size` 0: none.
+bool arrayQuery(const pf::ClientArray& a, GLenum pname, GLenum size, GLenum type, GLenum stride, Query& q) {
+  if (pname == size && size != 0) q.set({double(a.size)});
+  else if (pname == type) q.set({double(a.type)});
+  else if (pname == stride) q.set({double(a.stride)});
+  else return false;
+  return true;
+}
 
 bool query(const PFcontextRec& ctx, GLenum pname, Query& q) {
-  auto set = [&](std::initializer_list<double> values, bool normalized = false) {
-    q.count = 0;
-    for (double d : values) q.v[q.count++] = d;
-    q.normalized = normalized;
-  };
-  auto matrix = [&](const glm::mat4& m) {
+  auto set = [&](std::initializer_list<double> values, bool normalized = false) { q.set(values, normalized); };
+  auto matrix = [&](const glm::mat4& m, bool transpose = false) {
     const float* p = glm::value_ptr(m);
     q.count = 16;
-    for (int i = 0; i < 16; ++i) q.v[i] = p[i];
+    for (int i = 0; i < 16; ++i) q.v[i] = p[transpose ? (i % 4) * 4 + i / 4 : i];
+    q.normalized = false;
   };
   const auto& cc = ctx.clear_color;
   const auto& col = ctx.current_color;
@@ -73,6 +74,9 @@ bool query(const PFcontextRec& ctx, GLenum pname, Query& q) {
     case GL_MODELVIEW_MATRIX: matrix(ctx.modelview.top); return true;
     case GL_PROJECTION_MATRIX: matrix(ctx.projection.top); return true;
     case GL_TEXTURE_MATRIX: matrix(ctx.texture.top); return true;
+    case GL_TRANSPOSE_MODELVIEW_MATRIX: matrix(ctx.modelview.top, true); return true;
+    case GL_TRANSPOSE_PROJECTION_MATRIX: matrix(ctx.projection.top, true); return true;
+    case GL_TRANSPOSE_TEXTURE_MATRIX: matrix(ctx.texture.top, true); return true;
     case GL_MODELVIEW_STACK_DEPTH: set({double(ctx.modelview.depth())}); return true;
     case GL_PROJECTION_STACK_DEPTH: set({double(ctx.projection.depth())}); return true;
     case GL_TEXTURE_STACK_DEPTH: set({double(ctx.texture.depth())}); return true;
@@ -101,12 +105,25 @@ bool query(const PFcontextRec& ctx, GLenum pname, Query& q) {
       return true;
     case GL_LIST_BASE: set({double(static_cast<GLint>(ctx.lists.base))}); return true;
     case GL_MAX_LIST_NESTING: set({double(pf::kMaxListNesting)}); return true;
+    case GL_ATTRIB_STACK_DEPTH: set({double(ctx.attrib_stack.size())}); return true;
+    case GL_CLIENT_ATTRIB_STACK_DEPTH: set({double(ctx.client_attrib_stack.size())}); return true;
+    case GL_MAX_ATTRIB_STACK_DEPTH: case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: set({double(pf::kMaxAttribStackDepth)}); return true;
+    case GL_SUBPIXEL_BITS: set({8}); return true;  // window coordinates snap to 1/256 pixel
+    // The scissor box: GL's initial one, the first drawable (there is no glScissor).
+    case GL_SCISSOR_BOX: set({0, 0, double(ctx.first_size[0]), double(ctx.first_size[1])}); return true;
     default:
       if (pname >= GL_LIGHT0 && pname < GL_LIGHT0 + pf::kMaxLights) {
         set({ctx.lighting.lights[pname - GL_LIGHT0].enabled ? 1.0 : 0.0});
         return true;
       }
-      return false;
+      if (int hint = pf::hintIndex(pname); hint >= 0) {
+        set({double(ctx.hints[hint])});
+        return true;
+      }
+      return arrayQuery(ctx.vertex_array, pname, GL_VERTEX_ARRAY_SIZE, GL_VERTEX_ARRAY_TYPE, GL_VERTEX_ARRAY_STRIDE, q) ||
+             arrayQuery(ctx.color_array, pname, GL_COLOR_ARRAY_SIZE, GL_COLOR_ARRAY_TYPE, GL_COLOR_ARRAY_STRIDE, q) ||
+             arrayQuery(ctx.normal_array, pname, 0, GL_NORMAL_ARRAY_TYPE, GL_NORMAL_ARRAY_STRIDE, q) ||
+             pf::constantQuery(pname, q);
   }
 }
 
@@ -121,9 +138,11 @@ const Query* lookup(GLenum pname, Query& q) {
   return &q;
 }
 
+// Rounded to nearest; a normalised value v as v * (2^31 - 1) truncated toward zero, as Mesa
+// does (0.5 reads 1073741823).
 GLint toInt(double v, bool normalized) {
   if (v != v) return 0;  // NaN
-  double r = normalized ? std::nearbyint(v * 2147483647.0) : std::nearbyint(v);
+  double r = normalized ? std::trunc(v * 2147483647.0) : std::nearbyint(v);
   return static_cast<GLint>(std::clamp(r, -2147483648.0, 2147483647.0));
 }
 

@@ -48,7 +48,7 @@ const GLenum kQueries[] = {
     GL_COLOR_MATERIAL_PARAMETER, GL_NORMALIZE, GL_RESCALE_NORMAL, GL_PER_PIXEL_LIGHTING_EXT,
     GL_LIGHT_MODEL_AMBIENT, GL_LIGHT_MODEL_LOCAL_VIEWER, GL_LIGHT_MODEL_TWO_SIDE, GL_VERTEX_ARRAY, GL_COLOR_ARRAY,
     GL_NORMAL_ARRAY, GL_CURRENT_COLOR, GL_CURRENT_NORMAL, GL_CURRENT_TEXTURE_COORDS, GL_PACK_ALIGNMENT,
-    GL_LIST_BASE, GL_LIGHT0, GL_LIGHT1, GL_LIGHT2, GL_LIGHT3, GL_LIGHT4, GL_LIGHT5, GL_LIGHT6, GL_LIGHT7};
+    GL_LIST_BASE, GL_PERSPECTIVE_CORRECTION_HINT, GL_FOG_HINT, GL_ATTRIB_STACK_DEPTH, GL_LIGHT0, GL_LIGHT1, GL_LIGHT2, GL_LIGHT3, GL_LIGHT4, GL_LIGHT5, GL_LIGHT6, GL_LIGHT7};
 
 Snapshot snapshot(const Ctx& c) {
   Snapshot s;
@@ -259,6 +259,17 @@ std::vector<Family> families() {
                  pfglTexCoord1s(7);
                  pfglRectd(30.5, 30.5, 45.0, 20.0);
                  pfglRectiv(i + 2, i);
+               }});
+  f.push_back({"attribute stack, hints", none, [] {
+                 pfglHint(GL_FOG_HINT, GL_NICEST);
+                 pfglPushAttrib(GL_LIGHTING_BIT | GL_HINT_BIT);
+                 pfglShadeModel(GL_FLAT);
+                 pfglHint(GL_FOG_HINT, GL_FASTEST);
+                 pfglHint(GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST);
+                 pfglPopAttrib();
+                 pfglPushAttrib(GL_VIEWPORT_BIT);  // left pushed
+                 pfglViewport(1, 1, 20, 20);
+                 pfglHint(0x1234, GL_NICEST);
                }});
   f.push_back({"vertex arrays", [] {
                  static const GLfloat xy[8] = {2, 2, 40, 4, 6, 40, 44, 44};

@@ -160,9 +160,9 @@ TEST(GlState, QueriesReturnTheStateInEachType) {
   GLfloat f[4];
   pfglGetFloatv(GL_COLOR_CLEAR_VALUE, f);
   EXPECT_EQ(f[1], 0.5f);
-  pfglGetIntegerv(GL_COLOR_CLEAR_VALUE, v);  // normalised: 1.0 -> 2^31 - 1
+  pfglGetIntegerv(GL_COLOR_CLEAR_VALUE, v);  // normalised: 1.0 -> 2^31 - 1, truncated as Mesa does
   EXPECT_EQ(v[3], 2147483647);
-  EXPECT_EQ(v[0], 536870912);
+  EXPECT_EQ(v[0], 536870911);
   GLdouble d[4];
   pfglGetDoublev(GL_DEPTH_RANGE, d);
   EXPECT_EQ(d[0], 0.25);
@@ -192,7 +192,10 @@ TEST(GlState, QueriesReturnTheStateInEachType) {
   pfglGetIntegerv(GL_DEPTH_BITS, v);
   EXPECT_EQ(v[0], 24);
   EXPECT_EQ(error(), static_cast<GLenum>(GL_NO_ERROR));
-  pfglGetIntegerv(GL_FOG_MODE, v);  // not state primflow has
+  pfglGetIntegerv(GL_FOG_MODE, v);  // not state primflow has: GL's initial value
+  EXPECT_EQ(v[0], GL_EXP);
+  EXPECT_EQ(error(), static_cast<GLenum>(GL_NO_ERROR));
+  pfglGetIntegerv(0x1234, v);  // not a state variable
   EXPECT_EQ(error(), static_cast<GLenum>(GL_INVALID_ENUM));
   pfglGetIntegerv(GL_VIEWPORT, nullptr);  // NULL: nothing written, no crash
   EXPECT_EQ(error(), static_cast<GLenum>(GL_NO_ERROR));

@@ -32,6 +32,15 @@ void pfglDisable(GLenum cap);
 GLboolean pfglIsEnabled(GLenum cap);
 void pfglColorMask(GLboolean red, GLboolean green, GLboolean blue, GLboolean alpha);
 
+/* Hints: kept and read back (nothing primflow draws depends on them). Attribute stacks, 16 deep:
+ * the groups primflow has (docs/api.md, "Attribute stacks"); glPushAttrib / glPopAttrib are
+ * recorded in display lists, the client forms are not. */
+void pfglHint(GLenum target, GLenum mode);
+void pfglPushAttrib(GLbitfield mask);
+void pfglPopAttrib(void);
+void pfglPushClientAttrib(GLbitfield mask);
+void pfglPopClientAttrib(void);
+
 /* Polygons: face culling, winding, flat or smooth shading (GL's provoking vertex per mode) */
 void pfglCullFace(GLenum mode);
 void pfglFrontFace(GLenum mode);
@@ -68,7 +77,8 @@ void pfglArrayElement(GLint i);
 void pfglDrawArrays(GLenum mode, GLint first, GLsizei count);
 void pfglDrawElements(GLenum mode, GLsizei count, GLenum type, const GLvoid *indices);
 
-/* State queries (the state listed in docs/api.md; others: GL_INVALID_ENUM; NULL: ignored) */
+/* State queries: every GL 1.x state variable (what primflow lacks reads as GL's initial value,
+ * absent buffers as 0 bits; docs/api.md); others: GL_INVALID_ENUM; NULL: ignored */
 void pfglGetBooleanv(GLenum pname, GLboolean *params);
 void pfglGetIntegerv(GLenum pname, GLint *params);
 void pfglGetFloatv(GLenum pname, GLfloat *params);

@@ -25,6 +25,11 @@
 #define glCullFace pfglCullFace
 #define glFrontFace pfglFrontFace
 #define glShadeModel pfglShadeModel
+#define glHint pfglHint
+#define glPushAttrib pfglPushAttrib
+#define glPopAttrib pfglPopAttrib
+#define glPushClientAttrib pfglPushClientAttrib
+#define glPopClientAttrib pfglPopClientAttrib
 #define glLightf pfglLightf
 #define glLighti pfglLighti
 #define glLightfv pfglLightfv

@@ -1,0 +1,140 @@
+// glPushAttrib / glPopAttrib (recorded in display lists) and glPushClientAttrib /
+// glPopClientAttrib (executed at once), GL 1.5 section 6.1.14, for the attribute groups
+// primflow has: what each group holds is AttribState's (context_state.h). Stacks 16 deep, as
+// Mesa's; overflow GL_STACK_OVERFLOW, underflow GL_STACK_UNDERFLOW; bits of other groups are
+// accepted and save nothing (their state is constant).
+#include <algorithm>
+#include <new>
+
+#include <primflow/gl.h>
+
+#include "api/src/commands.h"
+#include "api/src/context_state.h"
+
+namespace pf::cmd {
+
+void pushAttrib(PFcontextRec& ctx, GLbitfield mask) {
+  if (!outsideBegin(ctx)) return;
+  if (ctx.attrib_stack.size() >= kMaxAttribStackDepth) return ctx.setError(GL_STACK_OVERFLOW);
+  AttribState s;
+  s.mask = mask;
+  s.current_color = ctx.current_color;
+  s.normal = ctx.param(ctx.normal_param);
+  s.texcoord = ctx.param(ctx.texcoord_param);
+  s.depth_test = ctx.depth_test;
+  s.depth_write = ctx.depth_write;
+  s.depth_func = ctx.depth_func;
+  s.clear_depth = ctx.clear_depth;
+  s.cull = ctx.cull;
+  s.cull_face = ctx.cull_face;
+  s.front_face = ctx.front_face;
+  s.lighting = ctx.lighting;
+  s.shade_model = ctx.shade_model;
+  s.matrix_mode = ctx.matrix_mode;
+  std::copy(std::begin(ctx.viewport), std::end(ctx.viewport), s.viewport);
+  std::copy(std::begin(ctx.depth_range), std::end(ctx.depth_range), s.depth_range);
+  std::copy(std::begin(ctx.clear_color), std::end(ctx.clear_color), s.clear_color);
+  s.color_mask = ctx.color_mask;
+  std::copy(std::begin(ctx.hints), std::end(ctx.hints), s.hints);
+  s.list_base = ctx.lists.base;
+  try {
+    ctx.attrib_stack.push_back(s);
+  } catch (const std::bad_alloc&) {
+    ctx.setError(GL_OUT_OF_MEMORY);
+  }
+}
+
+void popAttrib(PFcontextRec& ctx) {
+  if (!outsideBegin(ctx)) return;
+  if (ctx.attrib_stack.empty()) return ctx.setError(GL_STACK_UNDERFLOW);
+  const AttribState s = ctx.attrib_stack.back();
+  ctx.attrib_stack.pop_back();
+  const GLbitfield m = s.mask;
+  LightingState& l = ctx.lighting;
+  if (m & GL_CURRENT_BIT) {  // (a colour restored is not tracked by GL_COLOR_MATERIAL, as in Mesa)
+    ctx.current_color = s.current_color;
+    ParamValue& color = ctx.param(ctx.color_param);
+    color.count = 4;
+    for (int k = 0; k < 4; ++k) color.v[k] = s.current_color[k];
+    ctx.param(ctx.normal_param) = s.normal;
+    ctx.param(ctx.texcoord_param) = s.texcoord;
+  }
+  if (m & GL_LIGHTING_BIT) {  // all of the lighting state but the enables of other groups
+    const bool normalize = l.normalize, rescale = l.rescale_normal, per_pixel = l.per_pixel_vertices;
+    l = s.lighting;
+    l.normalize = normalize;
+    l.rescale_normal = rescale;
+    l.per_pixel_vertices = per_pixel;
+    ctx.shade_model = s.shade_model;
+  }
+  if (m & GL_ENABLE_BIT) {
+    ctx.depth_test = s.depth_test;
+    ctx.cull = s.cull;
+    l.enabled = s.lighting.enabled;
+    for (int k = 0; k < kMaxLights; ++k) l.lights[k].enabled = s.lighting.lights[k].enabled;
+    l.color_material = s.lighting.color_material;
+    l.normalize = s.lighting.normalize;
+    l.rescale_normal = s.lighting.rescale_normal;
+    l.per_pixel_vertices = s.lighting.per_pixel_vertices;
+  }
+  if (m & GL_DEPTH_BUFFER_BIT) {
+    ctx.depth_test = s.depth_test;
+    ctx.depth_write = s.depth_write;
+    ctx.depth_func = s.depth_func;
+    ctx.clear_depth = s.clear_depth;
+  }
+  if (m & GL_POLYGON_BIT) {
+    ctx.cull = s.cull;
+    ctx.cull_face = s.cull_face;
+    ctx.front_face = s.front_face;
+  }
+  if (m & GL_TRANSFORM_BIT) {
+    ctx.matrix_mode = s.matrix_mode;
+    l.normalize = s.lighting.normalize;
+    l.rescale_normal = s.lighting.rescale_normal;
+  }
+  if (m & GL_VIEWPORT_BIT) {
+    std::copy(std::begin(s.viewport), std::end(s.viewport), ctx.viewport);
+    std::copy(std::begin(s.depth_range), std::end(s.depth_range), ctx.depth_range);
+  }
+  if (m & GL_COLOR_BUFFER_BIT) {
+    std::copy(std::begin(s.clear_color), std::end(s.clear_color), ctx.clear_color);
+    ctx.color_mask = s.color_mask;
+  }
+  if (m & GL_HINT_BIT) std::copy(std::begin(s.hints), std::end(s.hints), ctx.hints);
+  if (m & GL_LIST_BIT) ctx.lists.base = s.list_base;
+}
+
+}  // namespace pf::cmd
+
+extern "C" {
+
+void pfglPushAttrib(GLbitfield mask) { pf::dispatch<pf::GlOp::PushAttrib>(mask); }
+void pfglPopAttrib(void) { pf::dispatch<pf::GlOp::PopAttrib>(); }
+
+void pfglPushClientAttrib(GLbitfield mask) {
+  PFcontextRec* ctx = pf::contextOutsideBegin();
+  if (!ctx) return;
+  if (ctx->client_attrib_stack.size() >= pf::kMaxAttribStackDepth) return ctx->setError(GL_STACK_OVERFLOW);
+  try {
+    ctx->client_attrib_stack.push_back({mask, ctx->pack_alignment, ctx->vertex_array, ctx->color_array, ctx->normal_array});
+  } catch (const std::bad_alloc&) {
+    ctx->setError(GL_OUT_OF_MEMORY);
+  }
+}
+
+void pfglPopClientAttrib(void) {
+  PFcontextRec* ctx = pf::contextOutsideBegin();
+  if (!ctx) return;
+  if (ctx->client_attrib_stack.empty()) return ctx->setError(GL_STACK_UNDERFLOW);
+  const pf::ClientAttribState s = ctx->client_attrib_stack.back();
+  ctx->client_attrib_stack.pop_back();
+  if (s.mask & GL_CLIENT_PIXEL_STORE_BIT) ctx->pack_alignment = s.pack_alignment;
+  if (s.mask & GL_CLIENT_VERTEX_ARRAY_BIT) {
+    ctx->vertex_array = s.vertex_array;
+    ctx->color_array = s.color_array;
+    ctx->normal_array = s.normal_array;
+  }
+}
+
+}  // extern "C"
