@@ -7,16 +7,6 @@
 
 namespace pf::field {
 
-int fieldOpArity(FieldOp op) {
-  switch (op) {
-    case FieldOp::X: case FieldOp::Y: case FieldOp::Z: case FieldOp::Const: return 0;
-    case FieldOp::Neg: case FieldOp::Abs: case FieldOp::Square: case FieldOp::Sqrt:
-    case FieldOp::Exp: case FieldOp::Log: case FieldOp::Sin: case FieldOp::Cos: case FieldOp::Atan: return 1;
-    case FieldOp::Select: return 3;
-    default: return 2;
-  }
-}
-
 std::string_view fieldOpName(FieldOp op) {
   switch (op) {
     case FieldOp::X: return "var-x";

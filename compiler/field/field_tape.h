@@ -42,7 +42,16 @@ enum class FieldOp : uint8_t {
   Select,                                       // ternary: a != 0 ? b : c
 };
 
-int fieldOpArity(FieldOp op);                 // 0, 1, 2 or 3
+// 0, 1, 2 or 3 (inline: tape simplification and the slot programs ask it of every instruction).
+constexpr int fieldOpArity(FieldOp op) {
+  switch (op) {
+    case FieldOp::X: case FieldOp::Y: case FieldOp::Z: case FieldOp::Const: return 0;
+    case FieldOp::Neg: case FieldOp::Abs: case FieldOp::Square: case FieldOp::Sqrt:
+    case FieldOp::Exp: case FieldOp::Log: case FieldOp::Sin: case FieldOp::Cos: case FieldOp::Atan: return 1;
+    case FieldOp::Select: return 3;
+    default: return 2;
+  }
+}
 std::string_view fieldOpName(FieldOp op);     // "add", "var-x", ... (Fidget's spelling)
 
 struct FieldInstr {

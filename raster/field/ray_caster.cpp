@@ -60,6 +60,7 @@ struct FieldRayCaster::Scratch {
   IntervalEvaluator intervals;
   IntervalBatchEvaluator batch;
   IntervalSlopeEvaluator slopes;
+  IntervalSlopeBatchEvaluator slope_batch;
   FloatEvaluator points;
   std::vector<Choice> choices;
   TapePool tapes;
@@ -447,35 +448,67 @@ void FieldRayCaster::regionSlab(const CastRequest& r, int bx, int by, const Lane
   uint64_t bracketed = sampleForBrackets(fe, lanes, over, from, to, steps, lo, hi, c, &gaps);
   IntervalEvaluator& ie = sc.intervals;
   ie.reset(*simplified);
-  RaySegmentSearch search(ie, se, fe, r.rays, c);
+  sc.batch.reset(*simplified);
+  sc.slope_batch.reset(*simplified);
+  RaySegmentSearch search(ie, se, fe, sc.batch, sc.slope_batch, r.rays, c);
   const double diagonal = length({r.rays.box_max[0] - r.rays.box_min[0], r.rays.box_max[1] - r.rays.box_min[1],
                                   r.rays.box_max[2] - r.rays.box_min[2]});
   // Lanes still pending after the samples: those with a bracket, and those with no sample
-  // inside. The gaps before the first one the rate bound cannot clear are clear.
-  for (uint64_t p = sampled & lanes.pending; p; p &= p - 1) {
+  // inside. The gaps before the first one the rate bound cannot clear are clear; the others
+  // are searched (the first step of every lane's search at once, batched, the rest lane by
+  // lane), then the brackets of the lanes that found nothing before them are narrowed (their
+  // first step batched too). Each lane's outcome is what searching it alone gives.
+  const uint64_t searching = sampled & lanes.pending;
+  RaySearchLimits limits[kLanes];
+  RaySearchOutcome found[kLanes];
+  LaneSegment segment[kLanes];
+  uint64_t open = 0;
+  for (uint64_t p = searching; p; p &= p - 1) {
     const int i = std::countr_zero(p);
     const PixelRay& ray = lanes.ray[i];
-    RaySearchLimits limits;
-    limits.stated_width = kStatedWidth * diagonal / length(ray.direction);
-    limits.sample_step = (to[i] - from[i]) / steps;
-    limits.budget = r.iteration_cap;
-    limits.rate_bound = gaps.rate_bound;
-    limits.soft_budget = kSearchEvaluationsPerSample * static_cast<uint64_t>(steps + 1) + kSearchEvaluationsBase;
-    const bool has_bracket = bracketed >> i & 1;
-    RaySearchOutcome found;
+    RaySearchLimits& l = limits[i];
+    l.stated_width = kStatedWidth * diagonal / length(ray.direction);
+    l.sample_step = (to[i] - from[i]) / steps;
+    l.budget = r.iteration_cap;
+    l.rate_bound = gaps.rate_bound;
+    l.soft_budget = kSearchEvaluationsPerSample * static_cast<uint64_t>(steps + 1) + kSearchEvaluationsBase;
+    found[i] = RaySearchOutcome{};
     if (!std::isinf(gaps.open_t[i])) {
-      ++c.segments_searched;
-      found = search.clear(ray, gaps.open_t[i], gaps.open_f[i], lo[i], gaps.f_lo[i], limits);
+      open |= uint64_t(1) << i;
+      segment[i] = {&ray, &l, gaps.open_t[i], lo[i], gaps.open_f[i], gaps.f_lo[i]};
     }
-    if (found.kind == RaySearchOutcome::Nothing && has_bracket) found = search.refine(ray, lo[i], gaps.f_lo[i], hi[i], limits);
+  }
+  const uint64_t cleared = search.provenClear(segment, open);
+
+  for (uint64_t p = open; p; p &= p - 1) {
+    const int i = std::countr_zero(p);
+    ++c.segments_searched;
+    if (!(cleared >> i & 1))
+      found[i] = search.clear(lanes.ray[i], gaps.open_t[i], gaps.open_f[i], lo[i], gaps.f_lo[i], limits[i]);
+  }
+  uint64_t narrowing = 0;
+  for (uint64_t p = searching & bracketed; p; p &= p - 1) {
+    const int i = std::countr_zero(p);
+    if (found[i].kind != RaySearchOutcome::Nothing) continue;
+    narrowing |= uint64_t(1) << i;
+    segment[i] = {&lanes.ray[i], &limits[i], lo[i], hi[i], gaps.f_lo[i], 0.0f};
+  }
+  const uint64_t monotone = search.provenMonotone(segment, narrowing);
+  for (uint64_t p = narrowing; p; p &= p - 1) {
+    const int i = std::countr_zero(p);
+    found[i] = monotone >> i & 1 ? RaySearchOutcome{RaySearchOutcome::Bracket, lo[i], hi[i]}
+                                 : search.refine(lanes.ray[i], lo[i], gaps.f_lo[i], hi[i], limits[i]);
+  }
+  for (uint64_t p = searching; p; p &= p - 1) {
+    const int i = std::countr_zero(p);
     bracketed &= ~(uint64_t(1) << i);
-    switch (found.kind) {
+    switch (found[i].kind) {
       case RaySearchOutcome::Nothing: break;  // stays pending: a later slab may hold its surface
-      case RaySearchOutcome::Surface: lanes.hit(i, found.lo); break;
+      case RaySearchOutcome::Surface: lanes.hit(i, found[i].lo); break;
       case RaySearchOutcome::Runaway: lanes.pending &= ~(uint64_t(1) << i); break;  // a miss, counted
       case RaySearchOutcome::Bracket:
-        lo[i] = found.lo;
-        hi[i] = found.hi;
+        lo[i] = found[i].lo;
+        hi[i] = found[i].hi;
         bracketed |= uint64_t(1) << i;
         break;
     }

@@ -1,6 +1,7 @@
 // RaySegmentSearch: the interval method's per-ray search inside undecided slabs (ray_search.h).
 #include "raster/field/ray_search.h"
 
+#include <bit>
 #include <cmath>
 
 #include "raster/field/ray_box.h"
@@ -27,6 +28,71 @@ RaySearchOutcome RaySegmentSearch::refine(const PixelRay& ray, double a, float f
                                           const RaySearchLimits& limits) {
   Lane lane{&ray, &limits, 0, false};
   return refineBracket(lane, a, fa, b);
+}
+
+uint64_t RaySegmentSearch::provenClear(const LaneSegment* segments, uint64_t which) {
+  IntervalBatchEvaluator::Boxes boxes;
+  int lane_of[IntervalBatchEvaluator::kBoxes];
+  int n = 0;
+  for (uint64_t p = which; p; p &= p - 1) {
+    const int i = std::countr_zero(p);
+    const LaneSegment& s = segments[i];
+    // clear()'s steps before its first evaluation: segments they settle are left to it.
+    if (!(s.b > s.a) || clearByRateBound(s.fa, s.fb, s.b - s.a, s.limits->rate_bound) || s.limits->budget == 0)
+      continue;
+    const PixelRay* const one[1] = {s.ray};
+    const RayBox box = rayBoxOf(one, s.a, s.b, rays_);
+    if (box.empty) continue;
+    boxes.x_lo[n] = box.x.lo, boxes.x_hi[n] = box.x.hi;
+    boxes.y_lo[n] = box.y.lo, boxes.y_hi[n] = box.y.hi;
+    boxes.z_lo[n] = box.z.lo, boxes.z_hi[n] = box.z.hi;
+    lane_of[n++] = i;
+  }
+  if (n == 0) return 0;
+  Interval f[IntervalBatchEvaluator::kBoxes];
+  interval_batch_.evaluate(boxes, n, f, false);
+  uint64_t clear = 0;
+  for (int j = 0; j < n; ++j)
+    if (f[j].allNegative()) {
+      clear |= uint64_t(1) << lane_of[j];
+      ++counters_.interval_evaluations;
+    }
+  return clear;
+}
+
+uint64_t RaySegmentSearch::provenMonotone(const LaneSegment* segments, uint64_t which) {
+  IntervalSlopeBatchEvaluator::Boxes pairs;
+  int lane_of[IntervalSlopeBatchEvaluator::kBoxes];
+  int n = 0;
+  const auto axis = [](double v) { return Interval{roundedDown(v), roundedUp(v)}; };
+  for (uint64_t p = which; p; p &= p - 1) {
+    const int i = std::countr_zero(p);
+    const LaneSegment& s = segments[i];
+    // refine()'s steps before its first evaluation: brackets they settle are left to it.
+    if (!(s.b - s.a > s.limits->stated_width) || s.limits->budget == 0) continue;
+    const PixelRay* const one[1] = {s.ray};
+    const RayBox box = rayBoxOf(one, s.a, s.b, rays_);
+    if (box.empty) continue;
+    pairs.x_lo[n] = box.x.lo, pairs.x_hi[n] = box.x.hi;
+    pairs.y_lo[n] = box.y.lo, pairs.y_hi[n] = box.y.hi;
+    pairs.z_lo[n] = box.z.lo, pairs.z_hi[n] = box.z.hi;
+    const Vec3d& d = s.ray->direction;
+    const Interval dx = axis(d[0]), dy = axis(d[1]), dz = axis(d[2]);
+    pairs.dx_lo[n] = dx.lo, pairs.dx_hi[n] = dx.hi;
+    pairs.dy_lo[n] = dy.lo, pairs.dy_hi[n] = dy.hi;
+    pairs.dz_lo[n] = dz.lo, pairs.dz_hi[n] = dz.hi;
+    lane_of[n++] = i;
+  }
+  if (n == 0) return 0;
+  IntervalSlope slope[IntervalSlopeBatchEvaluator::kBoxes];
+  slope_batch_.evaluate(pairs, n, slope);
+  uint64_t monotone = 0;
+  for (int j = 0; j < n; ++j)
+    if (slope[j].monotone()) {
+      monotone |= uint64_t(1) << lane_of[j];
+      ++counters_.interval_evaluations;
+    }
+  return monotone;
 }
 
 // f and its rate along the lane's ray over a segment's box.

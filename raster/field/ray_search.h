@@ -28,7 +28,9 @@
 
 #include "raster/field/field_rays.h"
 #include "raster/field/float_evaluator.h"
+#include "raster/field/interval_batch.h"
 #include "raster/field/interval_evaluator.h"
+#include "raster/field/interval_slope_batch.h"
 #include "raster/field/interval_slope_evaluator.h"
 
 namespace pf::field {
@@ -64,12 +66,33 @@ struct RaySearchOutcome {
   double lo = 0.0, hi = 0.0;
 };
 
+// One segment of one lane's ray, for the batched first steps below.
+struct LaneSegment {
+  const PixelRay* ray;
+  const RaySearchLimits* limits;
+  double a, b;
+  float fa, fb;
+};
+
 class RaySegmentSearch {
  public:
-  // The evaluators run the same tape (a region's simplified one, or the field's own).
+  // The evaluators run the same tape (a region's simplified one, or the field's own); the batch
+  // ones too, for the batched first steps.
   RaySegmentSearch(IntervalEvaluator& intervals, IntervalSlopeEvaluator& slopes, FloatEvaluator& points,
+                   IntervalBatchEvaluator& interval_batch, IntervalSlopeBatchEvaluator& slope_batch,
                    const FieldRays& rays, FieldCounters& c)
-      : intervals_(intervals), slopes_(slopes), points_(points), rays_(rays), counters_(c) {}
+      : intervals_(intervals), slopes_(slopes), points_(points), interval_batch_(interval_batch),
+        slope_batch_(slope_batch), rays_(rays), counters_(c) {}
+
+  // The first step of clear() for the segments of the lanes in `which` (at most 64), all at
+  // once: the lanes whose whole segment the interval form proves outside -- for which clear()
+  // would return Nothing at that step, counting that one evaluation, as here. The others are
+  // clear()'s to search, from the start.
+  uint64_t provenClear(const LaneSegment* segments, uint64_t which);
+  // The first step of refine() for the brackets of the lanes in `which`, all at once: the lanes
+  // where f is proven monotone along the ray over the whole bracket -- for which refine() would
+  // return the bracket itself at that step, counting that one evaluation, as here.
+  uint64_t provenMonotone(const LaneSegment* segments, uint64_t which);
 
   // The first surface on [a, b] of `ray`, given f(a) = fa < 0 and f(b) = fb < 0 (or NaN) at the
   // points.
@@ -94,6 +117,8 @@ class RaySegmentSearch {
   IntervalEvaluator& intervals_;
   IntervalSlopeEvaluator& slopes_;
   FloatEvaluator& points_;
+  IntervalBatchEvaluator& interval_batch_;
+  IntervalSlopeBatchEvaluator& slope_batch_;
   const FieldRays& rays_;
   FieldCounters& counters_;
 };

@@ -1,5 +1,6 @@
 // IntervalBatchEvaluator against the scalar IntervalEvaluator, bit for bit -- results and the
-// choices of every min, max and select -- over the shipped models and a tape of every
+// choices of every min, max and select -- and IntervalSlopeBatchEvaluator against
+// IntervalSlopeEvaluator, over the shipped models and a tape of every
 // operation, on boxes of every size, degenerate, infinite and NaN-bearing ones included.
 #include <gtest/gtest.h>
 
@@ -12,6 +13,8 @@
 #include "field/field_reference.h"
 #include "raster/field/interval_batch.h"
 #include "raster/field/interval_evaluator.h"
+#include "raster/field/interval_slope_batch.h"
+#include "raster/field/interval_slope_evaluator.h"
 
 namespace pf::field {
 namespace {
@@ -95,6 +98,59 @@ TEST(IntervalBatch, IsTheScalarIntervalFormBitForBit) {
     expectBatchIsScalar(*readFidgetModel(name, testing::readModelText(name), log), name);
   }
   expectBatchIsScalar(everyOperation(), "every operation");
+}
+
+void expectSlopeBatchIsScalar(const FieldTape& t, const char* name) {
+  IntervalSlopeEvaluator scalar(t);
+  IntervalSlopeBatchEvaluator batch;
+  batch.reset(t);
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  const float inf = std::numeric_limits<float>::infinity();
+  int checked = 0, monotone = 0;
+  for (int round = 0; round < 40; ++round) {
+    IntervalSlopeBatchEvaluator::Boxes pairs;
+    IntervalSlope want[64];
+    const int n = round % 5 == 4 ? 1 + round % 64 : (round % 2 ? 16 : 64);
+    for (int j = 0; j < n; ++j) {
+      Interval axes[6];
+      for (int k = 0; k < 6; ++k) {
+        Interval& a = axes[k];
+        const float size = std::pow(10.0f, -4.0f * (u(rng) + 1.0f)) * (k >= 3 ? 0.01f : 1.0f);
+        const float c = u(rng);
+        a = {c, c + size};
+        if (rng() % 20 == 0) a = {c, c};
+        if (rng() % 40 == 0) a = {-inf, c};
+        if (rng() % 40 == 0) a = Interval::whole();
+        if (rng() % 60 == 0) a = {0.0f, 0.0f};
+        if (rng() % 80 == 0) a = {std::nanf(""), 1.0f};
+      }
+      float* const lo[6] = {pairs.x_lo, pairs.y_lo, pairs.z_lo, pairs.dx_lo, pairs.dy_lo, pairs.dz_lo};
+      float* const hi[6] = {pairs.x_hi, pairs.y_hi, pairs.z_hi, pairs.dx_hi, pairs.dy_hi, pairs.dz_hi};
+      for (int k = 0; k < 6; ++k) lo[k][j] = axes[k].lo, hi[k][j] = axes[k].hi;
+      want[j] = scalar.evaluate(axes[0], axes[1], axes[2], axes[3], axes[4], axes[5]);
+    }
+    IntervalSlope got[64];
+    batch.evaluate(pairs, n, got);
+    for (int j = 0; j < n; ++j) {
+      ASSERT_TRUE(same(want[j].value, got[j].value) && same(want[j].rate, got[j].rate))
+          << name << " round " << round << " pair " << j << ": value [" << want[j].value.lo << ", " << want[j].value.hi
+          << "] / [" << got[j].value.lo << ", " << got[j].value.hi << "], rate [" << want[j].rate.lo << ", "
+          << want[j].rate.hi << "] / [" << got[j].rate.lo << ", " << got[j].rate.hi << "]";
+      monotone += got[j].monotone();
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 1000) << name;
+  EXPECT_GT(monotone, 0) << name;  // the small boxes do prove monotonicity
+}
+
+TEST(IntervalSlopeBatch, IsTheScalarSlopeFormBitForBit) {
+  for (const char* name : {"fidget/prospero.vm", "fidget/bear.vm", "fidget/colonnade.vm", "fidget/tanglecube.vm"}) {
+    DiagnosticLog log;
+    expectSlopeBatchIsScalar(*readFidgetModel(name, testing::readModelText(name), log), name);
+  }
+  expectSlopeBatchIsScalar(everyOperation(), "every operation");
 }
 
 TEST(IntervalBatch, NoTapeIsTheWholeLine) {
