@@ -44,10 +44,10 @@ double refine(const std::array<double, 5>& c, int degree, double a, double b, do
   return t;
 }
 
-}  // namespace
-
-// Splitting at the derivative's roots, found the same way: each piece is monotone.
-PolynomialRoots rootsIn(const std::array<double, 5>& c, int degree, double lo, double hi) {
+// Splitting at the derivative's roots, found the same way: each piece is monotone. With
+// `first_only`, stops at the first root: the pieces are visited left to right and each pushes its
+// roots in order, so the first root pushed is the one the whole list would begin with.
+PolynomialRoots rootsOf(const std::array<double, 5>& c, int degree, double lo, double hi, bool first_only) {
   PolynomialRoots roots;
   if (!(hi >= lo)) return roots;
   while (degree > 0 && c[degree] == 0.0) --degree;
@@ -58,10 +58,11 @@ PolynomialRoots rootsIn(const std::array<double, 5>& c, int degree, double lo, d
   cuts[cut_count++] = lo;
   if (degree >= 2) {
     const std::array<double, 5> dc = {c[1], 2 * c[2], 3 * c[3], 4 * c[4], 0.0};
-    for (double r : rootsIn(dc, degree - 1, lo, hi)) cuts[cut_count++] = r;
+    for (double r : rootsOf(dc, degree - 1, lo, hi, false)) cuts[cut_count++] = r;
   }
   cuts[cut_count++] = hi;
   for (size_t i = 0; i + 1 < cut_count; ++i) {
+    if (first_only && !roots.empty()) return roots;
     const double a = cuts[i], b = cuts[i + 1];
     const double fa = evaluate(c, degree, a), fb = evaluate(c, degree, b);
     // A cut where p is zero within rounding: a touching (double) root, or a root at an end.
@@ -72,14 +73,21 @@ PolynomialRoots rootsIn(const std::array<double, 5>& c, int degree, double lo, d
     if (std::fabs(fb) <= evaluationError(c, degree, b)) continue;  // the next piece reports it
     if ((fa < 0.0) != (fb < 0.0)) roots.push_back(refine(c, degree, a, b, fa));
   }
+  if (first_only && !roots.empty()) return roots;
   const double fh = evaluate(c, degree, hi);
   if (std::fabs(fh) <= evaluationError(c, degree, hi) && (roots.empty() || roots.back() != hi)) roots.push_back(hi);
   return roots;
 }
 
+}  // namespace
+
+PolynomialRoots rootsIn(const std::array<double, 5>& c, int degree, double lo, double hi) {
+  return rootsOf(c, degree, lo, hi, false);
+}
+
 std::optional<double> firstRootIn(const std::array<double, 5>& c, int degree, double lo, double hi) {
   if (!(hi >= lo)) return std::nullopt;
-  const PolynomialRoots roots = rootsIn(c, degree, lo, hi);
+  const PolynomialRoots roots = rootsOf(c, degree, lo, hi, true);
   if (roots.empty()) return std::nullopt;
   return roots.front();
 }
