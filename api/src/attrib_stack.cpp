@@ -117,7 +117,8 @@ void pfglPushClientAttrib(GLbitfield mask) {
   if (!ctx) return;
   if (ctx->client_attrib_stack.size() >= pf::kMaxAttribStackDepth) return ctx->setError(GL_STACK_OVERFLOW);
   try {
-    ctx->client_attrib_stack.push_back({mask, ctx->pack_alignment, ctx->vertex_array, ctx->color_array, ctx->normal_array});
+    ctx->client_attrib_stack.push_back(
+        {mask, ctx->pack_alignment, ctx->vertex_array, ctx->color_array, ctx->normal_array, ctx->texcoord_array});
   } catch (const std::bad_alloc&) {
     ctx->setError(GL_OUT_OF_MEMORY);
   }
@@ -134,6 +135,7 @@ void pfglPopClientAttrib(void) {
     ctx->vertex_array = s.vertex_array;
     ctx->color_array = s.color_array;
     ctx->normal_array = s.normal_array;
+    ctx->texcoord_array = s.texcoord_array;
   }
 }
 

@@ -101,7 +101,7 @@ struct AttribState {
 struct ClientAttribState {
   GLbitfield mask;
   int pack_alignment;
-  ClientArray vertex_array, color_array, normal_array;
+  ClientArray vertex_array, color_array, normal_array, texcoord_array;
 };
 
 // GL_MAX_ATTRIB_STACK_DEPTH and GL_MAX_CLIENT_ATTRIB_STACK_DEPTH, Mesa's 16.
@@ -179,7 +179,7 @@ struct PFcontextRec {
   pf::MatrixStack modelview{32}, projection{4}, texture{4};
   glm::vec4 current_color{1.0f, 1.0f, 1.0f, 1.0f};
 
-  pf::ClientArray vertex_array, color_array, normal_array;
+  pf::ClientArray vertex_array, color_array, normal_array, texcoord_array;
   pf::LightingState lighting;
   pf::DisplayLists lists;
   GLenum hints[pf::kHintCount] = {GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE,

@@ -306,6 +306,7 @@ GLboolean pfglIsEnabled(GLenum cap) {
   if (cap == GL_VERTEX_ARRAY) return ctx->vertex_array.enabled ? GL_TRUE : GL_FALSE;
   if (cap == GL_COLOR_ARRAY) return ctx->color_array.enabled ? GL_TRUE : GL_FALSE;
   if (cap == GL_NORMAL_ARRAY) return ctx->normal_array.enabled ? GL_TRUE : GL_FALSE;
+  if (cap == GL_TEXTURE_COORD_ARRAY) return ctx->texcoord_array.enabled ? GL_TRUE : GL_FALSE;
   bool* c = capability(*ctx, cap);
   return c && *c ? GL_TRUE : GL_FALSE;
 }

@@ -71,6 +71,7 @@ bool query(const PFcontextRec& ctx, GLenum pname, Query& q) {
     case GL_VERTEX_ARRAY: set({ctx.vertex_array.enabled ? 1.0 : 0.0}); return true;
     case GL_COLOR_ARRAY: set({ctx.color_array.enabled ? 1.0 : 0.0}); return true;
     case GL_NORMAL_ARRAY: set({ctx.normal_array.enabled ? 1.0 : 0.0}); return true;
+    case GL_TEXTURE_COORD_ARRAY: set({ctx.texcoord_array.enabled ? 1.0 : 0.0}); return true;
     case GL_MODELVIEW_MATRIX: matrix(ctx.modelview.top); return true;
     case GL_PROJECTION_MATRIX: matrix(ctx.projection.top); return true;
     case GL_TEXTURE_MATRIX: matrix(ctx.texture.top); return true;
@@ -123,6 +124,8 @@ bool query(const PFcontextRec& ctx, GLenum pname, Query& q) {
       return arrayQuery(ctx.vertex_array, pname, GL_VERTEX_ARRAY_SIZE, GL_VERTEX_ARRAY_TYPE, GL_VERTEX_ARRAY_STRIDE, q) ||
              arrayQuery(ctx.color_array, pname, GL_COLOR_ARRAY_SIZE, GL_COLOR_ARRAY_TYPE, GL_COLOR_ARRAY_STRIDE, q) ||
              arrayQuery(ctx.normal_array, pname, 0, GL_NORMAL_ARRAY_TYPE, GL_NORMAL_ARRAY_STRIDE, q) ||
+             arrayQuery(ctx.texcoord_array, pname, GL_TEXTURE_COORD_ARRAY_SIZE, GL_TEXTURE_COORD_ARRAY_TYPE,
+                        GL_TEXTURE_COORD_ARRAY_STRIDE, q) ||
              pf::constantQuery(pname, q);
   }
 }

@@ -54,6 +54,12 @@ using pf::GlOp;
 
 // glArrayElement's work: the enabled arrays' element i as the current values, the vertex last.
 void arrayElement(PFcontextRec& ctx, GLint i) {
+  if (ctx.texcoord_array.enabled && ctx.texcoord_array.pointer) {  // (s, t, r, q), missing (0, 0, 1)
+    const pf::ClientArray& a = ctx.texcoord_array;
+    float t[4] = {0, 0, 0, 1};
+    for (int k = 0; k < a.size; ++k) t[k] = static_cast<float>(fetch(a, i, k, false));
+    issue<GlOp::TexCoord>(ctx, t[0], t[1], t[2], t[3]);
+  }
   if (ctx.color_array.enabled && ctx.color_array.pointer) {
     const pf::ClientArray& a = ctx.color_array;
     issue<GlOp::Color>(ctx, static_cast<float>(fetch(a, i, 0, true)), static_cast<float>(fetch(a, i, 1, true)),
@@ -78,6 +84,7 @@ pf::ClientArray* clientArray(PFcontextRec& ctx, GLenum array) {
     case GL_VERTEX_ARRAY: return &ctx.vertex_array;
     case GL_COLOR_ARRAY: return &ctx.color_array;
     case GL_NORMAL_ARRAY: return &ctx.normal_array;
+    case GL_TEXTURE_COORD_ARRAY: return &ctx.texcoord_array;
     default: return nullptr;
   }
 }
@@ -118,6 +125,33 @@ PFcontextRec* drawable(GLenum mode, GLsizei count) {
   return nullptr;
 }
 
+// glInterleavedArrays' formats (GL 1.5 table 2.5): which arrays each enables, their sizes, the
+// colour's type, the offsets of texture coordinates (0), colour, normal and vertex in bytes, and
+// the stride when 0 is given.
+struct Interleaved {
+  GLenum format;
+  int texcoords, colors, normals, vertices;  // components; 0: that array disabled
+  GLenum color_type;
+  int color_at, normal_at, vertex_at, stride;
+};
+constexpr int kF = sizeof(GLfloat), kUb4 = 4 * sizeof(GLubyte);
+constexpr Interleaved kInterleaved[] = {
+    {GL_V2F, 0, 0, 0, 2, GL_FLOAT, 0, 0, 0, 2 * kF},
+    {GL_V3F, 0, 0, 0, 3, GL_FLOAT, 0, 0, 0, 3 * kF},
+    {GL_C4UB_V2F, 0, 4, 0, 2, GL_UNSIGNED_BYTE, 0, 0, kUb4, kUb4 + 2 * kF},
+    {GL_C4UB_V3F, 0, 4, 0, 3, GL_UNSIGNED_BYTE, 0, 0, kUb4, kUb4 + 3 * kF},
+    {GL_C3F_V3F, 0, 3, 0, 3, GL_FLOAT, 0, 0, 3 * kF, 6 * kF},
+    {GL_N3F_V3F, 0, 0, 3, 3, GL_FLOAT, 0, 0, 3 * kF, 6 * kF},
+    {GL_C4F_N3F_V3F, 0, 4, 3, 3, GL_FLOAT, 0, 4 * kF, 7 * kF, 10 * kF},
+    {GL_T2F_V3F, 2, 0, 0, 3, GL_FLOAT, 0, 0, 2 * kF, 5 * kF},
+    {GL_T4F_V4F, 4, 0, 0, 4, GL_FLOAT, 0, 0, 4 * kF, 8 * kF},
+    {GL_T2F_C4UB_V3F, 2, 4, 0, 3, GL_UNSIGNED_BYTE, 2 * kF, 0, kUb4 + 2 * kF, kUb4 + 5 * kF},
+    {GL_T2F_C3F_V3F, 2, 3, 0, 3, GL_FLOAT, 2 * kF, 0, 5 * kF, 8 * kF},
+    {GL_T2F_N3F_V3F, 2, 0, 3, 3, GL_FLOAT, 0, 2 * kF, 5 * kF, 8 * kF},
+    {GL_T2F_C4F_N3F_V3F, 2, 4, 3, 3, GL_FLOAT, 2 * kF, 6 * kF, 9 * kF, 12 * kF},
+    {GL_T4F_C4F_N3F_V4F, 4, 4, 3, 4, GL_FLOAT, 4 * kF, 8 * kF, 11 * kF, 15 * kF},
+};
+
 }  // namespace
 
 extern "C" {
@@ -148,6 +182,54 @@ void pfglColorPointer(GLint size, GLenum type, GLsizei stride, const GLvoid* ptr
 void pfglNormalPointer(GLenum type, GLsizei stride, const GLvoid* ptr) {
   pointer(GL_NORMAL_ARRAY, 3, type, stride, ptr, true,
           type == GL_BYTE || type == GL_SHORT || type == GL_INT || type == GL_FLOAT || type == GL_DOUBLE);
+}
+
+void pfglTexCoordPointer(GLint size, GLenum type, GLsizei stride, const GLvoid* ptr) {
+  pointer(GL_TEXTURE_COORD_ARRAY, size, type, stride, ptr, size >= 1 && size <= 4,
+          type == GL_SHORT || type == GL_INT || type == GL_FLOAT || type == GL_DOUBLE);
+}
+
+// Sets the arrays of one of GL's interleaved layouts and enables exactly those (the vertex
+// array always). Executed at once in a display list, as the pointer commands are.
+void pfglInterleavedArrays(GLenum format, GLsizei stride, const GLvoid* ptr) {
+  PFcontextRec* ctx = pf::contextOutsideBegin();
+  if (!ctx) return;
+  if (stride < 0) return ctx->setError(GL_INVALID_VALUE);
+  const Interleaved* f = nullptr;
+  for (const Interleaved& candidate : kInterleaved)
+    if (candidate.format == format) f = &candidate;
+  if (!f) return ctx->setError(GL_INVALID_ENUM);
+  const GLsizei step = stride ? stride : f->stride;
+  const auto* base = static_cast<const unsigned char*>(ptr);
+  auto set = [&](pf::ClientArray& a, int size, GLenum type, int offset) {
+    a.enabled = size > 0;
+    if (size == 0) return;
+    a.size = size;
+    a.type = type;
+    a.stride = step;
+    a.pointer = base ? base + offset : nullptr;
+  };
+  set(ctx->texcoord_array, f->texcoords, GL_FLOAT, 0);
+  set(ctx->color_array, f->colors, f->color_type, f->color_at);
+  set(ctx->normal_array, f->normals, GL_FLOAT, f->normal_at);
+  set(ctx->vertex_array, f->vertices, GL_FLOAT, f->vertex_at);
+}
+
+// The arrays' pointers; those of arrays and buffers primflow does not have are NULL.
+void pfglGetPointerv(GLenum pname, GLvoid** params) {
+  PFcontextRec* ctx = pf::contextOutsideBegin();
+  if (!ctx) return;
+  const void* p = nullptr;
+  switch (pname) {
+    case GL_VERTEX_ARRAY_POINTER: p = ctx->vertex_array.pointer; break;
+    case GL_COLOR_ARRAY_POINTER: p = ctx->color_array.pointer; break;
+    case GL_NORMAL_ARRAY_POINTER: p = ctx->normal_array.pointer; break;
+    case GL_TEXTURE_COORD_ARRAY_POINTER: p = ctx->texcoord_array.pointer; break;
+    case GL_INDEX_ARRAY_POINTER: case GL_EDGE_FLAG_ARRAY_POINTER: case GL_FOG_COORD_ARRAY_POINTER:
+    case GL_SECONDARY_COLOR_ARRAY_POINTER: case GL_FEEDBACK_BUFFER_POINTER: case GL_SELECTION_BUFFER_POINTER: break;
+    default: return ctx->setError(GL_INVALID_ENUM);
+  }
+  if (params) *params = const_cast<void*>(p);
 }
 
 void pfglArrayElement(GLint i) {

@@ -4,6 +4,7 @@
 #include <GL/osmesa.h>
 
 #include <cmath>
+#include <cstring>
 #include <string>
 #include <vector>
 

@@ -3,6 +3,7 @@
 #include <primflow/gl_mangle.h>
 
 #include <cmath>
+#include <cstring>
 #include <string>
 #include <vector>
 

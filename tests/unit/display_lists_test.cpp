@@ -277,7 +277,10 @@ std::vector<Family> families() {
                  static const GLshort normals[12] = {0, 0, 32767, 0, 32767, 0, 32767, 0, 0, 0, 0, 32767};
                  pfglVertexPointer(2, GL_FLOAT, 0, xy);
                  pfglColorPointer(3, GL_UNSIGNED_BYTE, 0, rgb);
+                 static const GLdouble st[8] = {0.5, 0.25, 1, 2, 3, 4, 5, 6};
                  pfglNormalPointer(GL_SHORT, 0, normals);
+                 pfglTexCoordPointer(2, GL_DOUBLE, 0, st);
+                 pfglEnableClientState(GL_TEXTURE_COORD_ARRAY);
                  pfglEnableClientState(GL_VERTEX_ARRAY);
                  pfglEnableClientState(GL_COLOR_ARRAY);
                  pfglEnableClientState(GL_NORMAL_ARRAY);

@@ -186,7 +186,7 @@ TEST(EntryPoints, ArrayElementNormalPointerAndClientState) {
   EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_INVALID_ENUM));
   pfglDrawArrays(0x31FFF, 0, 1);
   EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_INVALID_ENUM));
-  pfglEnableClientState(GL_TEXTURE_COORD_ARRAY);
+  pfglEnableClientState(GL_INDEX_ARRAY);  // an array primflow does not have
   EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_INVALID_ENUM));
 }
 

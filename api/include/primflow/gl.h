@@ -66,13 +66,17 @@ void pfglColorMaterial(GLenum face, GLenum mode);
 void pfglGetLightfv(GLenum light, GLenum pname, GLfloat *params);
 void pfglGetMaterialfv(GLenum face, GLenum pname, GLfloat *params);
 
-/* Vertex arrays: GL_VERTEX_ARRAY, GL_COLOR_ARRAY, GL_NORMAL_ARRAY. glDrawArrays /
- * glDrawElements are glBegin, glArrayElement per index, glEnd, as GL defines them. */
+/* Vertex arrays: GL_VERTEX_ARRAY, GL_COLOR_ARRAY, GL_NORMAL_ARRAY, GL_TEXTURE_COORD_ARRAY.
+ * glDrawArrays / glDrawElements are glBegin, glArrayElement per index, glEnd, as GL defines
+ * them; glInterleavedArrays sets them from one of GL's 14 layouts. */
 void pfglEnableClientState(GLenum array);
 void pfglDisableClientState(GLenum array);
 void pfglVertexPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *pointer);
 void pfglColorPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *pointer);
 void pfglNormalPointer(GLenum type, GLsizei stride, const GLvoid *pointer);
+void pfglTexCoordPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *pointer);
+void pfglInterleavedArrays(GLenum format, GLsizei stride, const GLvoid *pointer);
+void pfglGetPointerv(GLenum pname, GLvoid **params);
 void pfglArrayElement(GLint i);
 void pfglDrawArrays(GLenum mode, GLint first, GLsizei count);
 void pfglDrawElements(GLenum mode, GLsizei count, GLenum type, const GLvoid *indices);

@@ -96,6 +96,9 @@
 #define glVertexPointer pfglVertexPointer
 #define glColorPointer pfglColorPointer
 #define glNormalPointer pfglNormalPointer
+#define glTexCoordPointer pfglTexCoordPointer
+#define glInterleavedArrays pfglInterleavedArrays
+#define glGetPointerv pfglGetPointerv
 #define glArrayElement pfglArrayElement
 #define glDrawArrays pfglDrawArrays
 #define glDrawElements pfglDrawElements
