@@ -118,7 +118,7 @@ void pfglPushClientAttrib(GLbitfield mask) {
   if (ctx->client_attrib_stack.size() >= pf::kMaxAttribStackDepth) return ctx->setError(GL_STACK_OVERFLOW);
   try {
     ctx->client_attrib_stack.push_back(
-        {mask, ctx->pack_alignment, ctx->vertex_array, ctx->color_array, ctx->normal_array, ctx->texcoord_array});
+        {mask, ctx->pack, ctx->unpack, ctx->vertex_array, ctx->color_array, ctx->normal_array, ctx->texcoord_array});
   } catch (const std::bad_alloc&) {
     ctx->setError(GL_OUT_OF_MEMORY);
   }
@@ -130,7 +130,10 @@ void pfglPopClientAttrib(void) {
   if (ctx->client_attrib_stack.empty()) return ctx->setError(GL_STACK_UNDERFLOW);
   const pf::ClientAttribState s = ctx->client_attrib_stack.back();
   ctx->client_attrib_stack.pop_back();
-  if (s.mask & GL_CLIENT_PIXEL_STORE_BIT) ctx->pack_alignment = s.pack_alignment;
+  if (s.mask & GL_CLIENT_PIXEL_STORE_BIT) {
+    ctx->pack = s.pack;
+    ctx->unpack = s.unpack;
+  }
   if (s.mask & GL_CLIENT_VERTEX_ARRAY_BIT) {
     ctx->vertex_array = s.vertex_array;
     ctx->color_array = s.color_array;

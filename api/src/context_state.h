@@ -97,10 +97,17 @@ struct AttribState {
   GLuint list_base;                                  // GL_LIST_BIT
 };
 
-// What glPushClientAttrib saves: the pack alignment and the vertex arrays.
+// glPixelStore's modes for one direction (GL 1.5 table 3.1): pack (glReadPixels writes by
+// them) or unpack (kept and read back: nothing in primflow reads client images yet).
+struct PixelStore {
+  bool swap_bytes = false, lsb_first = false;
+  int row_length = 0, skip_rows = 0, skip_pixels = 0, alignment = 4, image_height = 0, skip_images = 0;
+};
+
+// What glPushClientAttrib saves: the pixel store modes and the vertex arrays.
 struct ClientAttribState {
   GLbitfield mask;
-  int pack_alignment;
+  PixelStore pack, unpack;
   ClientArray vertex_array, color_array, normal_array, texcoord_array;
 };
 
@@ -174,7 +181,7 @@ struct PFcontextRec {
   GLenum front_face = GL_CCW;
   GLenum shade_model = GL_SMOOTH;
   uint8_t color_mask = 0xf;  // bit k: RGBA channel k written
-  int pack_alignment = 4;
+  pf::PixelStore pack, unpack;
   GLenum matrix_mode = GL_MODELVIEW;
   pf::MatrixStack modelview{32}, projection{4}, texture{4};
   glm::vec4 current_color{1.0f, 1.0f, 1.0f, 1.0f};

@@ -1,5 +1,5 @@
-// Reading state back: glGet{Boolean,Integer,Float,Double}v for the state primflow has
-// (GL 1.5 section 6.1), glPixelStorei's pack alignment, and glReadPixels.
+// Reading state back: glGet{Boolean,Integer,Float,Double}v (GL 1.5 section 6.1). (glPixelStore
+// and glReadPixels: pixels.cpp.)
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -95,7 +95,22 @@ bool query(const PFcontextRec& ctx, GLenum pname, Query& q) {
       set({t.v[0], t.v[1], t.v[2], t.v[3]});
       return true;
     }
-    case GL_PACK_ALIGNMENT: set({double(ctx.pack_alignment)}); return true;
+    case GL_PACK_SWAP_BYTES: set({double(ctx.pack.swap_bytes)}); return true;
+    case GL_PACK_LSB_FIRST: set({double(ctx.pack.lsb_first)}); return true;
+    case GL_PACK_ROW_LENGTH: set({double(ctx.pack.row_length)}); return true;
+    case GL_PACK_SKIP_ROWS: set({double(ctx.pack.skip_rows)}); return true;
+    case GL_PACK_SKIP_PIXELS: set({double(ctx.pack.skip_pixels)}); return true;
+    case GL_PACK_ALIGNMENT: set({double(ctx.pack.alignment)}); return true;
+    case GL_PACK_IMAGE_HEIGHT: set({double(ctx.pack.image_height)}); return true;
+    case GL_PACK_SKIP_IMAGES: set({double(ctx.pack.skip_images)}); return true;
+    case GL_UNPACK_SWAP_BYTES: set({double(ctx.unpack.swap_bytes)}); return true;
+    case GL_UNPACK_LSB_FIRST: set({double(ctx.unpack.lsb_first)}); return true;
+    case GL_UNPACK_ROW_LENGTH: set({double(ctx.unpack.row_length)}); return true;
+    case GL_UNPACK_SKIP_ROWS: set({double(ctx.unpack.skip_rows)}); return true;
+    case GL_UNPACK_SKIP_PIXELS: set({double(ctx.unpack.skip_pixels)}); return true;
+    case GL_UNPACK_ALIGNMENT: set({double(ctx.unpack.alignment)}); return true;
+    case GL_UNPACK_IMAGE_HEIGHT: set({double(ctx.unpack.image_height)}); return true;
+    case GL_UNPACK_SKIP_IMAGES: set({double(ctx.unpack.skip_images)}); return true;
     case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS: set({8}); return true;
     case GL_DEPTH_BITS: set({double(ctx.depth_bits > 0 ? 24 : 0)}); return true;
     // Display lists: the list being compiled and its mode (0 when none is), the base; names as
@@ -175,87 +190,6 @@ void pfglGetDoublev(GLenum pname, GLdouble* params) {
   Query q;
   if (!lookup(pname, q) || !params) return;
   for (int i = 0; i < q.count; ++i) params[i] = q.v[i];
-}
-
-void pfglPixelStorei(GLenum pname, GLint param) {
-  PFcontextRec* ctx = pf::contextOutsideBegin();
-  if (!ctx) return;
-  if (pname != GL_PACK_ALIGNMENT) {
-    ctx->setError(GL_INVALID_ENUM);
-    return;
-  }
-  if (param != 1 && param != 2 && param != 4 && param != 8) {
-    ctx->setError(GL_INVALID_VALUE);
-    return;
-  }
-  ctx->pack_alignment = param;
-}
-
-// Colour as RGBA or RGB, bytes or floats; depth as floats, or unsigned ints / shorts scaled to
-// their range. Rows start on GL_PACK_ALIGNMENT boundaries; pixels outside the framebuffer
-// are left as they are in `pixels` (GL leaves them undefined). Drawing is finished first.
-void pfglReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type, GLvoid* pixels) {
-  PFcontextRec* ctx = pf::contextOutsideBegin();
-  if (!ctx) return;
-  if (width < 0 || height < 0) {
-    ctx->setError(GL_INVALID_VALUE);
-    return;
-  }
-  int components;
-  switch (format) {
-    case GL_RGBA: components = 4; break;
-    case GL_RGB: components = 3; break;
-    case GL_DEPTH_COMPONENT: components = 1; break;
-    default: ctx->setError(GL_INVALID_ENUM); return;
-  }
-  size_t bytes;
-  switch (type) {
-    case GL_UNSIGNED_BYTE: bytes = 1; break;
-    case GL_UNSIGNED_SHORT: bytes = 2; break;
-    case GL_UNSIGNED_INT: case GL_FLOAT: bytes = 4; break;
-    default: ctx->setError(GL_INVALID_ENUM); return;
-  }
-  if (format == GL_DEPTH_COMPONENT && ctx->depth_bits <= 0) {
-    ctx->setError(GL_INVALID_OPERATION);
-    return;
-  }
-  if (!pixels || !ctx->color || width == 0 || height == 0) return;
-  ctx->finish();
-  const size_t align = static_cast<size_t>(ctx->pack_alignment);
-  const size_t row_bytes = (static_cast<size_t>(width) * components * bytes + align - 1) / align * align;
-  auto* out = static_cast<unsigned char*>(pixels);
-  for (int row = 0; row < height; ++row) {
-    const long fy = static_cast<long>(y) + row;
-    if (fy < 0 || fy >= ctx->height) continue;
-    for (int col = 0; col < width; ++col) {
-      const long fx = static_cast<long>(x) + col;
-      if (fx < 0 || fx >= ctx->width) continue;
-      const size_t at = static_cast<size_t>(fy) * ctx->width + static_cast<size_t>(fx);
-      double v[4] = {0, 0, 0, 0};
-      if (format == GL_DEPTH_COMPONENT) {
-        v[0] = ctx->depth[at];
-      } else {
-        for (int c = 0; c < 4; ++c) v[c] = ctx->color[at * 4 + c] / 255.0;
-      }
-      unsigned char* dst = out + row * row_bytes + static_cast<size_t>(col) * components * bytes;
-      for (int c = 0; c < components; ++c) {
-        const double f = std::clamp(v[c], 0.0, 1.0);
-        if (type == GL_FLOAT) {
-          const float s = static_cast<float>(format == GL_DEPTH_COMPONENT ? v[c] : f);
-          std::memcpy(dst + c * 4, &s, 4);
-        } else if (type == GL_UNSIGNED_BYTE) {
-          dst[c] = format == GL_DEPTH_COMPONENT ? static_cast<unsigned char>(std::nearbyint(f * 255.0))
-                                                : ctx->color[at * 4 + c];
-        } else if (type == GL_UNSIGNED_SHORT) {
-          const uint16_t s = static_cast<uint16_t>(std::nearbyint(f * 65535.0));
-          std::memcpy(dst + c * 2, &s, 2);
-        } else {
-          const uint32_t s = static_cast<uint32_t>(std::nearbyint(f * 4294967295.0));
-          std::memcpy(dst + c * 4, &s, 4);
-        }
-      }
-    }
-  }
 }
 
 }  // extern "C"

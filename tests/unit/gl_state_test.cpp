@@ -239,7 +239,7 @@ TEST(GlState, ReadPixelsFormatsTypesAndAlignment) {
   EXPECT_EQ(error(), static_cast<GLenum>(GL_INVALID_ENUM));
   pfglPixelStorei(GL_PACK_ALIGNMENT, 3);
   EXPECT_EQ(error(), static_cast<GLenum>(GL_INVALID_VALUE));
-  pfglPixelStorei(GL_UNPACK_SWAP_BYTES, 1);
+  pfglPixelStorei(0x1234, 1);  // not a pixel store mode
   EXPECT_EQ(error(), static_cast<GLenum>(GL_INVALID_ENUM));
   pfglReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);  // NULL: nothing, no crash
   EXPECT_EQ(error(), static_cast<GLenum>(GL_NO_ERROR));

@@ -89,9 +89,10 @@ void pfglGetFloatv(GLenum pname, GLfloat *params);
 void pfglGetDoublev(GLenum pname, GLdouble *params);
 
 /* Reading pixels: GL_RGBA / GL_RGB / GL_DEPTH_COMPONENT x GL_UNSIGNED_BYTE / GL_UNSIGNED_SHORT /
- * GL_UNSIGNED_INT / GL_FLOAT; rows aligned to GL_PACK_ALIGNMENT (glPixelStorei: 1, 2, 4 or 8).
- * Finishes drawing first. */
+ * GL_UNSIGNED_INT / GL_FLOAT, written by the pack modes of glPixelStore (every pack and unpack
+ * mode of GL 1.x is kept). Finishes drawing first. */
 void pfglPixelStorei(GLenum pname, GLint param);
+void pfglPixelStoref(GLenum pname, GLfloat param);
 void pfglReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type,
                     GLvoid *pixels);
 

@@ -50,6 +50,7 @@
 #define glGetFloatv pfglGetFloatv
 #define glGetDoublev pfglGetDoublev
 #define glPixelStorei pfglPixelStorei
+#define glPixelStoref pfglPixelStoref
 #define glReadPixels pfglReadPixels
 #define glMatrixMode pfglMatrixMode
 #define glLoadIdentity pfglLoadIdentity
