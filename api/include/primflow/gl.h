@@ -231,9 +231,9 @@ void pfglRectdv(const GLdouble *v1, const GLdouble *v2);
 
 /* Display lists (GL 1.5 section 5.4): every command above that GL compiles is recorded, and the
  * extension's pfglRastParam*EXT, pfglSequencePointEXT and pfglMaterialInterpEXT too; queries,
- * glFinish / glFlush, glReadPixels, glPixelStorei, client state and array pointers execute at
- * once (glArrayElement, glDrawArrays, glDrawElements record what they draw). Nesting up to
- * GL_MAX_LIST_NESTING (64). docs/api.md, "Display lists". */
+ * glFinish / glFlush, glReadPixels, glPixelStore, client state (glPushClientAttrib too), array
+ * pointers and glInterleavedArrays execute at once (glArrayElement, glDrawArrays, glDrawElements
+ * record what they draw). Nesting up to GL_MAX_LIST_NESTING (64). docs/api.md, "Display lists". */
 GLuint pfglGenLists(GLsizei range);
 void pfglNewList(GLuint list, GLenum mode);
 void pfglEndList(void);
