@@ -9,11 +9,15 @@
 
 namespace {
 
+// A value; a colour-like one (normalised when read as an integer); a capability (glIsEnabled
+// answers for it, and glEnable cannot turn it on).
+enum Kind { kValue, kNormalized, kCapability };
+
 struct Constant {
   GLenum pname;
   int count;
   double v[4];
-  bool normalized = false;
+  Kind kind = kValue;
 };
 
 constexpr double kTrue = 1.0, kFalse = 0.0;
@@ -23,21 +27,21 @@ constexpr Constant kConstants[] = {
     {GL_CURRENT_INDEX, 1, {1}},
     {GL_CURRENT_RASTER_POSITION, 4, {0, 0, 0, 1}},
     {GL_CURRENT_RASTER_DISTANCE, 1, {0}},
-    {GL_CURRENT_RASTER_COLOR, 4, {1, 1, 1, 1}, true},
+    {GL_CURRENT_RASTER_COLOR, 4, {1, 1, 1, 1}, kNormalized},
     {GL_CURRENT_RASTER_INDEX, 1, {1}},
     {GL_CURRENT_RASTER_TEXTURE_COORDS, 4, {0, 0, 0, 1}},
     {GL_CURRENT_RASTER_POSITION_VALID, 1, {kTrue}},
     {GL_EDGE_FLAG, 1, {kTrue}},
     {GL_CURRENT_FOG_COORD, 1, {0}},
-    {GL_CURRENT_SECONDARY_COLOR, 4, {0, 0, 0, 1}, true},
+    {GL_CURRENT_SECONDARY_COLOR, 4, {0, 0, 0, 1}, kNormalized},
     // Vertex arrays primflow does not have.
-    {GL_INDEX_ARRAY, 1, {kFalse}},
+    {GL_INDEX_ARRAY, 1, {kFalse}, kCapability},
     {GL_INDEX_ARRAY_TYPE, 1, {GL_FLOAT}},
     {GL_INDEX_ARRAY_STRIDE, 1, {0}},
-    {GL_EDGE_FLAG_ARRAY, 1, {kFalse}},
+    {GL_EDGE_FLAG_ARRAY, 1, {kFalse}, kCapability},
     {GL_EDGE_FLAG_ARRAY_STRIDE, 1, {0}},
-    {GL_FOG_COORD_ARRAY, 1, {kFalse}},
-    {GL_SECONDARY_COLOR_ARRAY, 1, {kFalse}},
+    {GL_FOG_COORD_ARRAY, 1, {kFalse}, kCapability},
+    {GL_SECONDARY_COLOR_ARRAY, 1, {kFalse}, kCapability},
     {GL_CLIENT_ACTIVE_TEXTURE, 1, {GL_TEXTURE0}},
     {GL_ARRAY_BUFFER_BINDING, 1, {0}},
     {GL_ELEMENT_ARRAY_BUFFER_BINDING, 1, {0}},
@@ -48,74 +52,74 @@ constexpr Constant kConstants[] = {
     {GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING, 1, {0}},
     {GL_EDGE_FLAG_ARRAY_BUFFER_BINDING, 1, {0}},
     // Clip planes, fog, secondary colour.
-    {GL_CLIP_PLANE0, 1, {kFalse}},
-    {GL_CLIP_PLANE1, 1, {kFalse}},
-    {GL_CLIP_PLANE2, 1, {kFalse}},
-    {GL_CLIP_PLANE3, 1, {kFalse}},
-    {GL_CLIP_PLANE4, 1, {kFalse}},
-    {GL_CLIP_PLANE5, 1, {kFalse}},
-    {GL_FOG, 1, {kFalse}},
-    {GL_FOG_COLOR, 4, {0, 0, 0, 0}, true},
+    {GL_CLIP_PLANE0, 1, {kFalse}, kCapability},
+    {GL_CLIP_PLANE1, 1, {kFalse}, kCapability},
+    {GL_CLIP_PLANE2, 1, {kFalse}, kCapability},
+    {GL_CLIP_PLANE3, 1, {kFalse}, kCapability},
+    {GL_CLIP_PLANE4, 1, {kFalse}, kCapability},
+    {GL_CLIP_PLANE5, 1, {kFalse}, kCapability},
+    {GL_FOG, 1, {kFalse}, kCapability},
+    {GL_FOG_COLOR, 4, {0, 0, 0, 0}, kNormalized},
     {GL_FOG_INDEX, 1, {0}},
     {GL_FOG_DENSITY, 1, {1}},
     {GL_FOG_START, 1, {0}},
     {GL_FOG_END, 1, {1}},
     {GL_FOG_MODE, 1, {GL_EXP}},
     {GL_FOG_COORD_SRC, 1, {GL_FRAGMENT_DEPTH}},
-    {GL_COLOR_SUM, 1, {kFalse}},
+    {GL_COLOR_SUM, 1, {kFalse}, kCapability},
     {GL_LIGHT_MODEL_COLOR_CONTROL, 1, {GL_SINGLE_COLOR}},
     // Points, lines, polygons: size and width 1, no smoothing, stipple, modes or offset.
     {GL_POINT_SIZE, 1, {1}},
-    {GL_POINT_SMOOTH, 1, {kFalse}},
+    {GL_POINT_SMOOTH, 1, {kFalse}, kCapability},
     {GL_POINT_SIZE_MIN, 1, {0}},
     {GL_POINT_FADE_THRESHOLD_SIZE, 1, {1}},
     {GL_POINT_DISTANCE_ATTENUATION, 3, {1, 0, 0}},
     {GL_LINE_WIDTH, 1, {1}},
-    {GL_LINE_SMOOTH, 1, {kFalse}},
-    {GL_LINE_STIPPLE, 1, {kFalse}},
+    {GL_LINE_SMOOTH, 1, {kFalse}, kCapability},
+    {GL_LINE_STIPPLE, 1, {kFalse}, kCapability},
     {GL_LINE_STIPPLE_PATTERN, 1, {65535}},
     {GL_LINE_STIPPLE_REPEAT, 1, {1}},
-    {GL_POLYGON_SMOOTH, 1, {kFalse}},
+    {GL_POLYGON_SMOOTH, 1, {kFalse}, kCapability},
     {GL_POLYGON_MODE, 2, {GL_FILL, GL_FILL}},
     {GL_POLYGON_OFFSET_FACTOR, 1, {0}},
     {GL_POLYGON_OFFSET_UNITS, 1, {0}},
-    {GL_POLYGON_OFFSET_POINT, 1, {kFalse}},
-    {GL_POLYGON_OFFSET_LINE, 1, {kFalse}},
-    {GL_POLYGON_OFFSET_FILL, 1, {kFalse}},
-    {GL_POLYGON_STIPPLE, 1, {kFalse}},
-    {GL_MULTISAMPLE, 1, {kTrue}},
-    {GL_SAMPLE_ALPHA_TO_COVERAGE, 1, {kFalse}},
-    {GL_SAMPLE_ALPHA_TO_ONE, 1, {kFalse}},
-    {GL_SAMPLE_COVERAGE, 1, {kFalse}},
+    {GL_POLYGON_OFFSET_POINT, 1, {kFalse}, kCapability},
+    {GL_POLYGON_OFFSET_LINE, 1, {kFalse}, kCapability},
+    {GL_POLYGON_OFFSET_FILL, 1, {kFalse}, kCapability},
+    {GL_POLYGON_STIPPLE, 1, {kFalse}, kCapability},
+    {GL_MULTISAMPLE, 1, {kTrue}, kCapability},
+    {GL_SAMPLE_ALPHA_TO_COVERAGE, 1, {kFalse}, kCapability},
+    {GL_SAMPLE_ALPHA_TO_ONE, 1, {kFalse}, kCapability},
+    {GL_SAMPLE_COVERAGE, 1, {kFalse}, kCapability},
     {GL_SAMPLE_COVERAGE_VALUE, 1, {1}},
     {GL_SAMPLE_COVERAGE_INVERT, 1, {kFalse}},
     // Texturing.
-    {GL_TEXTURE_1D, 1, {kFalse}},
-    {GL_TEXTURE_2D, 1, {kFalse}},
-    {GL_TEXTURE_3D, 1, {kFalse}},
-    {GL_TEXTURE_CUBE_MAP, 1, {kFalse}},
+    {GL_TEXTURE_1D, 1, {kFalse}, kCapability},
+    {GL_TEXTURE_2D, 1, {kFalse}, kCapability},
+    {GL_TEXTURE_3D, 1, {kFalse}, kCapability},
+    {GL_TEXTURE_CUBE_MAP, 1, {kFalse}, kCapability},
     {GL_TEXTURE_BINDING_1D, 1, {0}},
     {GL_TEXTURE_BINDING_2D, 1, {0}},
     {GL_TEXTURE_BINDING_3D, 1, {0}},
     {GL_TEXTURE_BINDING_CUBE_MAP, 1, {0}},
     {GL_ACTIVE_TEXTURE, 1, {GL_TEXTURE0}},
-    {GL_TEXTURE_GEN_S, 1, {kFalse}},
-    {GL_TEXTURE_GEN_T, 1, {kFalse}},
-    {GL_TEXTURE_GEN_R, 1, {kFalse}},
-    {GL_TEXTURE_GEN_Q, 1, {kFalse}},
+    {GL_TEXTURE_GEN_S, 1, {kFalse}, kCapability},
+    {GL_TEXTURE_GEN_T, 1, {kFalse}, kCapability},
+    {GL_TEXTURE_GEN_R, 1, {kFalse}, kCapability},
+    {GL_TEXTURE_GEN_Q, 1, {kFalse}, kCapability},
     // Fragment operations.
-    {GL_SCISSOR_TEST, 1, {kFalse}},
-    {GL_ALPHA_TEST, 1, {kFalse}},
+    {GL_SCISSOR_TEST, 1, {kFalse}, kCapability},
+    {GL_ALPHA_TEST, 1, {kFalse}, kCapability},
     {GL_ALPHA_TEST_FUNC, 1, {GL_ALWAYS}},
-    {GL_ALPHA_TEST_REF, 1, {0}, true},
-    {GL_STENCIL_TEST, 1, {kFalse}},
+    {GL_ALPHA_TEST_REF, 1, {0}, kNormalized},
+    {GL_STENCIL_TEST, 1, {kFalse}, kCapability},
     {GL_STENCIL_FUNC, 1, {GL_ALWAYS}},
     {GL_STENCIL_VALUE_MASK, 1, {255}},
     {GL_STENCIL_REF, 1, {0}},
     {GL_STENCIL_FAIL, 1, {GL_KEEP}},
     {GL_STENCIL_PASS_DEPTH_FAIL, 1, {GL_KEEP}},
     {GL_STENCIL_PASS_DEPTH_PASS, 1, {GL_KEEP}},
-    {GL_BLEND, 1, {kFalse}},
+    {GL_BLEND, 1, {kFalse}, kCapability},
     {GL_BLEND_SRC, 1, {GL_ONE}},
     {GL_BLEND_DST, 1, {GL_ZERO}},
     {GL_BLEND_SRC_RGB, 1, {GL_ONE}},
@@ -123,10 +127,10 @@ constexpr Constant kConstants[] = {
     {GL_BLEND_SRC_ALPHA, 1, {GL_ONE}},
     {GL_BLEND_DST_ALPHA, 1, {GL_ZERO}},
     {GL_BLEND_EQUATION, 1, {GL_FUNC_ADD}},
-    {GL_BLEND_COLOR, 4, {0, 0, 0, 0}, true},
-    {GL_DITHER, 1, {kTrue}},
-    {GL_INDEX_LOGIC_OP, 1, {kFalse}},
-    {GL_COLOR_LOGIC_OP, 1, {kFalse}},
+    {GL_BLEND_COLOR, 4, {0, 0, 0, 0}, kNormalized},
+    {GL_DITHER, 1, {kTrue}, kCapability},
+    {GL_INDEX_LOGIC_OP, 1, {kFalse}, kCapability},
+    {GL_COLOR_LOGIC_OP, 1, {kFalse}, kCapability},
     {GL_LOGIC_OP_MODE, 1, {GL_COPY}},
     // Framebuffer: one front buffer, no index, stencil or accumulation buffer.
     {GL_DRAW_BUFFER, 1, {GL_FRONT}},
@@ -135,7 +139,7 @@ constexpr Constant kConstants[] = {
     {GL_STENCIL_WRITEMASK, 1, {255}},
     {GL_INDEX_CLEAR_VALUE, 1, {0}},
     {GL_STENCIL_CLEAR_VALUE, 1, {0}},
-    {GL_ACCUM_CLEAR_VALUE, 4, {0, 0, 0, 0}, true},
+    {GL_ACCUM_CLEAR_VALUE, 4, {0, 0, 0, 0}, kNormalized},
     {GL_RGBA_MODE, 1, {kTrue}},
     {GL_INDEX_MODE, 1, {kFalse}},
     {GL_DOUBLEBUFFER, 1, {kFalse}},
@@ -177,25 +181,25 @@ constexpr Constant kConstants[] = {
     {GL_PIXEL_MAP_B_TO_B_SIZE, 1, {1}},
     {GL_PIXEL_MAP_A_TO_A_SIZE, 1, {1}},
     // Evaluators.
-    {GL_AUTO_NORMAL, 1, {kFalse}},
-    {GL_MAP1_COLOR_4, 1, {kFalse}},
-    {GL_MAP1_INDEX, 1, {kFalse}},
-    {GL_MAP1_NORMAL, 1, {kFalse}},
-    {GL_MAP1_TEXTURE_COORD_1, 1, {kFalse}},
-    {GL_MAP1_TEXTURE_COORD_2, 1, {kFalse}},
-    {GL_MAP1_TEXTURE_COORD_3, 1, {kFalse}},
-    {GL_MAP1_TEXTURE_COORD_4, 1, {kFalse}},
-    {GL_MAP1_VERTEX_3, 1, {kFalse}},
-    {GL_MAP1_VERTEX_4, 1, {kFalse}},
-    {GL_MAP2_COLOR_4, 1, {kFalse}},
-    {GL_MAP2_INDEX, 1, {kFalse}},
-    {GL_MAP2_NORMAL, 1, {kFalse}},
-    {GL_MAP2_TEXTURE_COORD_1, 1, {kFalse}},
-    {GL_MAP2_TEXTURE_COORD_2, 1, {kFalse}},
-    {GL_MAP2_TEXTURE_COORD_3, 1, {kFalse}},
-    {GL_MAP2_TEXTURE_COORD_4, 1, {kFalse}},
-    {GL_MAP2_VERTEX_3, 1, {kFalse}},
-    {GL_MAP2_VERTEX_4, 1, {kFalse}},
+    {GL_AUTO_NORMAL, 1, {kFalse}, kCapability},
+    {GL_MAP1_COLOR_4, 1, {kFalse}, kCapability},
+    {GL_MAP1_INDEX, 1, {kFalse}, kCapability},
+    {GL_MAP1_NORMAL, 1, {kFalse}, kCapability},
+    {GL_MAP1_TEXTURE_COORD_1, 1, {kFalse}, kCapability},
+    {GL_MAP1_TEXTURE_COORD_2, 1, {kFalse}, kCapability},
+    {GL_MAP1_TEXTURE_COORD_3, 1, {kFalse}, kCapability},
+    {GL_MAP1_TEXTURE_COORD_4, 1, {kFalse}, kCapability},
+    {GL_MAP1_VERTEX_3, 1, {kFalse}, kCapability},
+    {GL_MAP1_VERTEX_4, 1, {kFalse}, kCapability},
+    {GL_MAP2_COLOR_4, 1, {kFalse}, kCapability},
+    {GL_MAP2_INDEX, 1, {kFalse}, kCapability},
+    {GL_MAP2_NORMAL, 1, {kFalse}, kCapability},
+    {GL_MAP2_TEXTURE_COORD_1, 1, {kFalse}, kCapability},
+    {GL_MAP2_TEXTURE_COORD_2, 1, {kFalse}, kCapability},
+    {GL_MAP2_TEXTURE_COORD_3, 1, {kFalse}, kCapability},
+    {GL_MAP2_TEXTURE_COORD_4, 1, {kFalse}, kCapability},
+    {GL_MAP2_VERTEX_3, 1, {kFalse}, kCapability},
+    {GL_MAP2_VERTEX_4, 1, {kFalse}, kCapability},
     {GL_MAP1_GRID_DOMAIN, 2, {0, 1}},
     {GL_MAP2_GRID_DOMAIN, 4, {0, 1, 0, 1}},
     {GL_MAP1_GRID_SEGMENTS, 1, {1}},
@@ -238,8 +242,17 @@ bool pf::constantQuery(GLenum pname, Query& q) {
     if (c.pname != pname) continue;
     q.count = c.count;
     for (int k = 0; k < c.count; ++k) q.v[k] = c.v[k];
-    q.normalized = c.normalized;
+    q.normalized = c.kind == kNormalized;
     return true;
   }
+  return false;
+}
+
+bool pf::constantCapability(GLenum cap, bool& enabled) {
+  for (const Constant& c : kConstants)
+    if (c.pname == cap && c.kind == kCapability) {
+      enabled = c.v[0] != 0.0;
+      return true;
+    }
   return false;
 }

@@ -26,5 +26,7 @@ struct Query {
 // OSMesa reports in a new context); and primflow's implementation limits for them. False for a
 // token that is not GL 1.x state.
 bool constantQuery(GLenum pname, Query& q);
+// The same for glIsEnabled: whether `cap` is one of those capabilities, and its (fixed) value.
+bool constantCapability(GLenum cap, bool& enabled);
 
 }  // namespace pf
