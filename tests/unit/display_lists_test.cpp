@@ -645,3 +645,29 @@ TEST(VertexAttributes, ShorterTexCoordFormsFillZeroZeroOne) {
   pfglGetFloatv(GL_CURRENT_TEXTURE_COORDS, t);
   EXPECT_EQ(std::vector<GLfloat>(t, t + 4), (std::vector<GLfloat>{0.5f, 0, 0, 1}));
 }
+
+// Under GL_COMPILE_AND_EXECUTE, glEndList between glBegin and glEnd ends the list without an
+// error (as Mesa does); the glBegin goes on and draws, and the list holds what came before.
+TEST(DisplayLists, EndListInsideAnExecutingBegin) {
+  Ctx c;
+  pfglNewList(1, GL_COMPILE_AND_EXECUTE);
+  pfglBegin(GL_TRIANGLES);
+  pfglColor3f(1, 0, 0);
+  pfglVertex2f(2, 2);
+  pfglVertex2f(40, 2);
+  pfglEndList();
+  pfglVertex2f(2, 40);
+  pfglEnd();
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  EXPECT_EQ(pfglIsList(1), GL_TRUE);
+  pfglFinish();
+  EXPECT_EQ(c.at(8, 8)[0], 255) << "the triangle begun in the list and ended outside it is drawn";
+  // Called later, the list opens a glBegin with two vertices; one more and glEnd complete it.
+  pfglClear(GL_COLOR_BUFFER_BIT);
+  pfglCallList(1);
+  pfglVertex2f(2, 40);
+  pfglEnd();
+  pfglFinish();
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  EXPECT_EQ(c.at(8, 8)[0], 255);
+}
