@@ -116,7 +116,7 @@ TEST(Passes, OptimizedProgramsComputeTheSame) {
   std::fclose(fp);
   auto opt = compile(text, "s.pfl", true), raw = compile(text, "s.pfl", false);
   ASSERT_TRUE(opt.ok && raw.ok);
-  std::vector<float> verts = {0.5f, 0.25f, 0.1f, 7.75f, 1.5f, 0.6f, 2.25f, 7.5f, 0.9f};
+  std::vector<float> verts = {0.5f, 0.25f, 0.1f, 1.0f, 7.75f, 1.5f, 0.6f, 1.0f, 2.25f, 7.5f, 0.9f, 1.0f};
   std::vector<float> ch = {1, 0, 0, 1, 0, 1, 0, 1, 0, 0, 1, 1};
   BlockRun a = runBlock(*opt.find("screen_triangle"), verts, ch, 4, true, 1.0f, InterpKind::Linear);
   BlockRun b = runBlock(*raw.find("screen_triangle"), verts, ch, 4, true, 1.0f, InterpKind::Linear);
