@@ -23,10 +23,21 @@ using pf::currentContext;
 
 namespace {
 
+// How a glBegin's parameters are transformed (seed 003 section 2.1: a primitive only declares
+// which values are points, vectors and normals; the system transforms them).
+struct ParamTransforms {
+  const glm::mat4& point;   // to clip coordinates (a shared interpolator's: to eye coordinates)
+  const glm::mat4& modelview;
+  const glm::mat3& normal;  // the inverse transpose of the modelview's 3x3, rescaled as GL asks
+  bool normalize;           // GL_NORMALIZE
+};
+
 // Converts the current value `v` to parameter `p`'s type (one sequence point's element):
 // false, with `why`, if it does not fit. Points take 2 to 4 values (z = 0, w = 1 by default)
-// and are transformed to clip coordinates, as glVertex's; colours 3 or 4 (alpha 1).
-bool convertValue(const pf::ParamInfo& p, const pf::ParamValue& v, const glm::mat4& transform, uint32_t* out,
+// and are transformed to clip coordinates, as glVertex's; vectors go to eye coordinates by the
+// modelview's upper 3x3 and normals by its inverse transpose, normalised under GL_NORMALIZE, as
+// glNormal's are for lighting; colours take 3 or 4 values (alpha 1).
+bool convertValue(const pf::ParamInfo& p, const pf::ParamValue& v, const ParamTransforms& transform, uint32_t* out,
                   std::string& why) {
   using pf::BaseType;
   const int want = p.components;
@@ -44,8 +55,20 @@ bool convertValue(const pf::ParamInfo& p, const pf::ParamValue& v, const glm::ma
     if (v.count < 2 || v.count > 4) return bad("2 to 4 values");
     glm::vec4 q(static_cast<float>(v.v[0]), static_cast<float>(v.v[1]), v.count > 2 ? static_cast<float>(v.v[2]) : 0.0f,
                 v.count > 3 ? static_cast<float>(v.v[3]) : 1.0f);
-    q = transform * q;
+    q = transform.point * q;
     for (int c = 0; c < 4; ++c) out[c] = std::bit_cast<uint32_t>(q[c]);
+    return true;
+  }
+  if (element_is_base && (p.type.base == BaseType::Vector || p.type.base == BaseType::Normal)) {
+    if (v.count != 3) return bad("3 values");
+    glm::vec3 d(static_cast<float>(v.v[0]), static_cast<float>(v.v[1]), static_cast<float>(v.v[2]));
+    if (p.type.base == BaseType::Vector) {
+      d = glm::mat3(transform.modelview) * d;
+    } else {
+      d = transform.normal * d;
+      if (transform.normalize && glm::length(d) > 0.0f) d = glm::normalize(d);
+    }
+    for (int c = 0; c < 3; ++c) out[c] = std::bit_cast<uint32_t>(d[c]);
     return true;
   }
   if (element_is_base && p.type.base == BaseType::Color) {
@@ -110,7 +133,8 @@ void recordSequencePoint(PFcontextRec& ctx) {
     std::string why;
     // A primitive's points go to clip coordinates; a shared interpolator's to eye coordinates,
     // the space of the P it reads.
-    const glm::mat4& to = f.shared >= 0 ? ctx.begin_modelview : ctx.begin_mvp;
+    const ParamTransforms to{f.shared >= 0 ? ctx.begin_modelview : ctx.begin_mvp, ctx.begin_modelview,
+                             ctx.begin_normal_matrix, ctx.lighting.normalize};
     if (!convertValue(*f.info, ctx.param(f.name), to, out + f.row_offset, why) &&
         ctx.reject_reason.empty())
       ctx.reject_reason = "sequence point " + std::to_string(row) + ": " + why;
@@ -380,9 +404,10 @@ static void startBegin(PFcontextRec& context, GLenum mode, const pf::CompiledPri
   ctx->begin_lit = vertices && !ctx->begin_vertices_per_pixel;
   if (ctx->begin_lit) ctx->begin_equation.emplace(ctx->lighting);
   ctx->begin_modelview = ctx->modelview.top;
-  if (vertices) {
-    // Normals go by the inverse transpose of the modelview's upper 3x3; GL_RESCALE_NORMAL
-    // divides by the length of the inverse's third row (GL 1.5 section 2.11.3).
+  {
+    // Normals -- glNormal's for lighting and every `normal` parameter -- go by the inverse
+    // transpose of the modelview's upper 3x3; GL_RESCALE_NORMAL divides by the length of the
+    // inverse's third row (GL 1.5 section 2.11.3).
     glm::mat3 inverse = glm::inverse(glm::mat3(ctx->modelview.top));
     ctx->begin_normal_matrix = glm::transpose(inverse);
     if (ctx->lighting.rescale_normal && !ctx->lighting.normalize) {

@@ -207,3 +207,91 @@ TEST(SequencePoints, Errors) {
   pfglRastParamiEXT(p, 3);
   EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
 }
+
+namespace {
+
+// Writes one component of its vector or normal parameter as the depth of each pixel of the
+// bottom row: columns 0-2 the vector's x, y, z, columns 3-5 the normal's (depth 0.5 + c / 8).
+const char* kDirectionProbe =
+    "primitive probe(vector v[1]; normal n[1]; inout varying float Z) {\n"
+    "  bound(0, 0, 6, 1);\n"
+    "  float c = v[0].x;\n"
+    "  if (X > 1) c = v[0].y;\n"
+    "  if (X > 2) c = v[0].z;\n"
+    "  if (X > 3) c = n[0].x;\n"
+    "  if (X > 4) c = n[0].y;\n"
+    "  if (X > 5) c = n[0].z;\n"
+    "  Z = 0.5 + c / 8;\n"
+    "}\n";
+
+struct Directions {
+  double v[3], n[3];
+};
+
+// Draws the probe with v and n as given under the current modelview; what arrived.
+Directions probeDirections(Ctx& c, const float v[3], const float n[3]) {
+  const GLuint vn = pfglGetParamNameEXT("v"), nn = pfglGetParamNameEXT("n");
+  pfglClear(GL_DEPTH_BUFFER_BIT);
+  pfglBegin(pfglGetPrimitiveEXT("probe"));
+  pfglRastParam3fEXT(vn, v[0], v[1], v[2]);
+  pfglRastParam3fEXT(nn, n[0], n[1], n[2]);
+  pfglSequencePointEXT();
+  pfglEnd();
+  pfglFinish();
+  GLint w, h, bpv;
+  void* p = nullptr;
+  EXPECT_EQ(pfGetDepthBuffer(c.ctx, &w, &h, &bpv, &p), GL_TRUE);
+  const float* d = static_cast<const float*>(p);
+  Directions r{};
+  for (int i = 0; i < 3; ++i) {
+    r.v[i] = (d[i] - 0.5) * 8;
+    r.n[i] = (d[3 + i] - 0.5) * 8;
+  }
+  return r;
+}
+
+}  // namespace
+
+// Seed 003 section 2.1: a primitive declares which values are points, vectors and normals and
+// the system transforms them -- vectors by the modelview's upper 3x3, normals by its inverse
+// transpose (GL_NORMALIZE and GL_RESCALE_NORMAL as for glNormal), both to eye coordinates.
+// Expected values are worked out here by hand from the matrices.
+TEST(SequencePoints, VectorsAndNormalsAreTransformedToEyeCoordinates) {
+  Ctx c;
+  ASSERT_NE(pfglCompilePrimitivesEXT(kDirectionProbe), 0u);
+  pfglEnable(GL_DEPTH_TEST);
+  pfglDepthFunc(GL_ALWAYS);
+  const double tol = 1e-6;
+  auto expect = [&](const Directions& got, std::initializer_list<double> v, std::initializer_list<double> n,
+                    const char* what) {
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_NEAR(got.v[i], v.begin()[i], tol) << what << ": vector component " << i;
+      EXPECT_NEAR(got.n[i], n.begin()[i], tol) << what << ": normal component " << i;
+    }
+  };
+  const float x[3] = {1, 0, 0}, xy[3] = {1, 1, 0}, z[3] = {0, 0, 1};
+
+  pfglLoadIdentity();
+  expect(probeDirections(c, xy, xy), {1, 1, 0}, {1, 1, 0}, "identity");
+
+  pfglLoadIdentity();
+  pfglRotatef(90, 0, 0, 1);  // x goes to y
+  expect(probeDirections(c, x, x), {0, 1, 0}, {0, 1, 0}, "rotated 90 degrees about z");
+
+  pfglLoadIdentity();
+  pfglTranslatef(3, -2, 1);  // translation moves points, never directions
+  pfglScalef(2, 1, 1);       // a vector stretches with x; a normal shrinks (inverse transpose)
+  expect(probeDirections(c, xy, xy), {2, 1, 0}, {0.5, 1, 0}, "translated and scaled by (2, 1, 1)");
+
+  pfglEnable(GL_NORMALIZE);  // normals to unit length; vectors keep theirs
+  const double s = 1 / std::sqrt(1.25);
+  expect(probeDirections(c, xy, xy), {2, 1, 0}, {0.5 * s, s, 0}, "GL_NORMALIZE");
+  pfglDisable(GL_NORMALIZE);
+
+  pfglLoadIdentity();
+  pfglScalef(4, 4, 4);
+  expect(probeDirections(c, z, z), {0, 0, 4}, {0, 0, 0.25}, "uniform scale 4");
+  pfglEnable(GL_RESCALE_NORMAL);  // divides by the inverse's third row's length, 1/4
+  expect(probeDirections(c, z, z), {0, 0, 4}, {0, 0, 1}, "uniform scale 4, GL_RESCALE_NORMAL");
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
