@@ -87,6 +87,7 @@ class Analyzer {
   static bool alwaysReturns(const std::vector<StmtPtr>& body);
 
   void unitParams(Unit& u);
+  void fixedPixelBuiltins(Unit& u);
 
   DiagnosticLog& log_;
   FunctionTable& functions_;

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <deque>
 #include <functional>
+#include <map>
 #include <set>
 #include <vector>
 
@@ -126,7 +127,69 @@ bool Analyzer::alwaysReturns(const std::vector<StmtPtr>& body) {
   return false;
 }
 
+namespace {
+
+// Every read of the built-ins in `fixed` (X, Y or Z, by name) in `e` becomes the conversion
+// fixed<bits,frac>(name) into its declared format.
+void convertPixelReads(ExprPtr& e, const std::map<std::string, Type>& fixed) {
+  if (!e) return;
+  if (e->kind == ExprKind::Name) {
+    auto it = fixed.find(e->name);
+    if (it == fixed.end()) return;
+    auto call = std::make_unique<Expr>();
+    call->kind = ExprKind::Call;
+    call->loc = e->loc;
+    call->name = "fixed";
+    call->conversion = it->second;
+    call->height = e->height + 1;
+    call->args.push_back(std::move(e));
+    e = std::move(call);
+    return;
+  }
+  for (ExprPtr& a : e->args) convertPixelReads(a, fixed);
+}
+
+void convertPixelReads(std::vector<StmtPtr>& body, const std::map<std::string, Type>& fixed);
+
+void convertPixelReads(Stmt& s, const std::map<std::string, Type>& fixed) {
+  convertPixelReads(s.value, fixed);
+  // An assignment's target stays the float built-in (a fixed value converts into it); only the
+  // indices inside a target are reads.
+  if (s.target && s.target->kind != ExprKind::Name)
+    for (ExprPtr& a : s.target->args) convertPixelReads(a, fixed);
+  for (ExprPtr& a : s.bound_args) convertPixelReads(a, fixed);
+  convertPixelReads(s.body, fixed);
+  convertPixelReads(s.else_body, fixed);
+  for (InterpolationCase& c : s.cases) convertPixelReads(c.body, fixed);
+  if (s.init) convertPixelReads(*s.init, fixed);
+  if (s.step) convertPixelReads(*s.step, fixed);
+}
+
+void convertPixelReads(std::vector<StmtPtr>& body, const std::map<std::string, Type>& fixed) {
+  for (StmtPtr& s : body)
+    if (s) convertPixelReads(*s, fixed);
+}
+
+}  // namespace
+
+// The paper's figures 6 and 7 declare the pixel built-ins in fixed point
+// (`varying fixed<32,16> X, Y; inout varying fixed<32,32> Z`). The built-ins themselves are
+// floats (the rasterizer's pixel centres and depth buffer); such a declaration makes every read
+// of the name in the unit's own body a conversion into the declared format (rounded to nearest,
+// saturated, as every conversion into a fixed type) and leaves writes to Z converting back into
+// the float depth. Functions the unit calls see the float built-ins.
+void Analyzer::fixedPixelBuiltins(Unit& u) {
+  std::map<std::string, Type> fixed;
+  for (Param& p : u.params)
+    if ((p.name == "X" || p.name == "Y" || p.name == "Z") && p.type.base == BaseType::Fixed && !p.type.isArray()) {
+      fixed[p.name] = p.type;
+      p.type = Type::of(BaseType::Float);
+    }
+  if (!fixed.empty()) convertPixelReads(u.body, fixed);
+}
+
 void Analyzer::unitParams(Unit& u) {
+  if (u.kind == UnitKind::Primitive || u.kind == UnitKind::Interpolator) fixedPixelBuiltins(u);
   std::set<std::string> seen;
   for (Param& p : u.params) {
     if (!seen.insert(p.name).second) {
@@ -139,7 +202,8 @@ void Analyzer::unitParams(Unit& u) {
     }
     if (p.name == "X" || p.name == "Y" || p.name == "Z") {
       if (p.type != Type::of(BaseType::Float))
-        log_.error(p.loc, "the built-in '" + p.name + "' has type float (declare it as 'varying float " + p.name + "')");
+        log_.error(p.loc, "the built-in '" + p.name + "' has type float or fixed<bits,frac> (declare it as 'varying float " +
+                              p.name + "' or, as the paper's figure 7, 'varying fixed<32,16> " + p.name + "')");
       if (p.name == "Z" && p.qualifier != Qualifier::InoutVarying && p.qualifier != Qualifier::Inout)
         log_.error(p.loc, "the built-in 'Z' is the depth buffer: declare it 'inout varying float Z'");
       if (p.name != "Z" && (p.qualifier == Qualifier::Uniform || p.qualifier == Qualifier::Inout))

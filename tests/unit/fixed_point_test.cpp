@@ -399,3 +399,67 @@ TEST(FixedLanguage, BatchedSetupMatchesScalarSetupBitForBit) {
   // the batch; all ran the fixed-point arithmetic before it in the batch's lanes.
   EXPECT_GE(batch.counters.lanes_batched, static_cast<uint64_t>(kMinBatchLanes));
 }
+
+// ---- the pixel built-ins declared in fixed point (the paper's figures 6 and 7) ----
+
+// Figure 7 declares `varying fixed<32,16> X, Y; inout varying fixed<32,32> Z`. The shipped
+// screen_triangle in that form: pixel centres (k + 1/2) are exact in fixed<32,16>, so every
+// lane's coverage, depth and channels equal the float form's, bit for bit.
+TEST(FixedLanguage, PaperFigure7DeclaresThePixelBuiltinsFixed) {
+  FILE* fp = std::fopen((std::string(PF_SOURCE_DIR) + "/primitives/screen_triangle.pfl").c_str(), "rb");
+  ASSERT_NE(fp, nullptr);
+  std::string text;
+  char buf[4096];
+  for (size_t n; (n = std::fread(buf, 1, sizeof buf, fp)) > 0;) text.append(buf, n);
+  std::fclose(fp);
+  const std::string floats = "varying float X, Y; inout varying float Z)";
+  const size_t at = text.find(floats);
+  ASSERT_NE(at, std::string::npos);
+  std::string fixed = text;
+  fixed.replace(at, floats.size(), "varying fixed<32,16> X, Y; inout varying fixed<32,32> Z)");
+  Compiled a = compile(text, "float.pfl"), b = compile(fixed, "fixed.pfl");
+  ASSERT_TRUE(a.ok) << a.diagnostics;
+  ASSERT_TRUE(b.ok) << b.diagnostics;
+  const std::vector<float> verts = {0.5f, 0.25f, 0.1f, 1.0f, 7.75f, 1.5f, 0.6f, 2.0f, 2.25f, 7.5f, 0.9f, 4.0f};
+  const std::vector<float> ch = {1, 0, 0, 1, 0, 1, 0, 1, 0, 0, 1, 1};
+  for (InterpKind kind : {InterpKind::PerspectiveLinear, InterpKind::Linear}) {
+    BlockRun fa = runBlock(*a.find("screen_triangle"), verts, ch, 4, true, 1.0f, kind);
+    BlockRun fb = runBlock(*b.find("screen_triangle"), verts, ch, 4, true, 1.0f, kind);
+    int covered = 0;
+    for (int i = 0; i < 64; ++i) {
+      EXPECT_EQ(fa.depth[i], fb.depth[i]) << i;
+      covered += fa.depth[i] < 1.0f;
+      for (int k = 0; k < 4; ++k) EXPECT_EQ(fa.channel(k, i % 8, i / 8), fb.channel(k, i % 8, i / 8)) << i;
+    }
+    EXPECT_GT(covered, 10);
+  }
+}
+
+// Reading a fixed-declared built-in converts it into its format as any conversion does: rounded
+// to nearest and saturated. X in fixed<8,2> (range [-32, 31.75]) rounds X * 1 exactly but
+// saturates X * 16; Z in the paper's fixed<32,32> holds [-1/2, 1/2), so a depth of 0.75 reads
+// as its largest value. Writes to Z convert the fixed value back into the float depth.
+TEST(FixedLanguage, FixedPixelBuiltinsRoundAndSaturateOnRead) {
+  Compiled c = compile(
+      "primitive p(varying fixed<8,2> X, Y; inout varying fixed<32,32> Z) {\n"
+      "  fixed<8,2> big = X * 16.0;\n"  // a float product, converted into the format: saturates
+      "  float z = float(X) / 64.0 + float(big) / 4096.0;\n"
+      "  if (Y > 4) z = float(Z);\n"
+      "  if (!ztest(0.0)) return;\n"
+      "  Z = fixed<32,32>(z);\n"
+      "}\n");
+  ASSERT_TRUE(c.ok) << c.diagnostics;
+  const std::vector<float> depth = runBlock(*c.find("p"), {}, {}, 0, true, 0.75f).depth;
+  ASSERT_EQ(depth.size(), 64u);
+  const double zmax = 0.5 - std::ldexp(1.0, -32);
+  for (int i = 0; i < 64; ++i) {
+    const double x = laneX(i), y = laneY(i);
+    const double big = std::min(x * 16.0, 31.75);
+    const double want = y > 4 ? zmax : std::min(x / 64.0 + big / 4096.0, zmax);
+    EXPECT_EQ(depth[i], static_cast<float>(want)) << "lane " << i;
+  }
+  // The float built-ins stay what functions see; a non-fixed, non-float declaration is an error.
+  Compiled bad = compile("primitive p(varying int X; inout varying float Z) { Z = 0.5; }\n");
+  EXPECT_FALSE(bad.ok);
+  EXPECT_NE(bad.diagnostics.find("the built-in 'X' has type float or fixed<bits,frac>"), std::string::npos) << bad.diagnostics;
+}
