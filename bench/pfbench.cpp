@@ -12,6 +12,8 @@
 // `--check` makes a mismatch the exit status (the ctest pfbench.scenes_match_osmesa).
 #include <CLI/CLI.hpp>
 
+#include "tools/command_line.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -108,7 +110,7 @@ int main(int argc, char** argv) {
   app.add_option("--lanes", lanes,
                  "comma-separated instruction sets of the pixel kernels to time primflow with (sse2, avx2, avx512, "
                  "or all the machine runs; default: the one chosen at start-up)");
-  CLI11_PARSE(app, argc, argv);
+  PF_PARSE_COMMAND_LINE(app, argc, argv);
   // Native code unless PF_JIT=0 (bench/run times both, interleaved).
   const bool native = pf::nativeCodeWantedByEnvironment();
   std::vector<pf::LaneIsa> lane_isas;

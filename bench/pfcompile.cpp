@@ -6,6 +6,8 @@
 //   pfcompile [--csv FILE]      CSV: what,name,ms
 #include <CLI/CLI.hpp>
 
+#include "tools/command_line.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -45,7 +47,7 @@ int main(int argc, char** argv) {
   CLI::App app{"pfcompile: the cost of native code: context creation, and each built-in program's compile"};
   std::string csv;
   app.add_option("--csv", csv, "write what,name,ms rows to this file (replaced)");
-  CLI11_PARSE(app, argc, argv);
+  PF_PARSE_COMMAND_LINE(app, argc, argv);
   if (!pf::nativeCodeAvailable()) {
     std::fprintf(stderr, "pfcompile: native code is unavailable here\n");
     return 1;

@@ -12,6 +12,8 @@
 // polynomial.
 #include <CLI/CLI.hpp>
 
+#include "tools/command_line.h"
+
 #include <primflow/gl.h>
 
 #include <algorithm>
@@ -196,7 +198,7 @@ int main(int argc, char** argv) {
                  "names as the float_evaluator reports them, e.g. AVX3 AVX2 SSE4 SCALAR)");
   app.add_flag("--no-accuracy", no_accuracy,
                "time only: no reference and no accuracy columns (for profiles; not with --csv)");
-  CLI11_PARSE(app, argc, argv);
+  PF_PARSE_COMMAND_LINE(app, argc, argv);
   if (no_accuracy && !csv.empty()) {
     std::fprintf(stderr, "pffields: --no-accuracy writes no CSV rows (they need the accuracy)\n");
     return 2;

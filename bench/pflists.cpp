@@ -10,6 +10,8 @@
 // otherwise).
 #include <CLI/CLI.hpp>
 
+#include "tools/command_line.h"
+
 #include <primflow/gl.h>
 
 #include <algorithm>
@@ -155,7 +157,7 @@ int main(int argc, char** argv) {
   app.add_option("--threads", threads, "rasterizer threads")->check(CLI::Range(1, 256));
   app.add_option("--csv", csv, "append scene,commands,size,threads,frames,direct_issue_ms,list_issue_ms,"
                                "direct_frame_ms,list_frame_ms,compile_ms to FILE");
-  CLI11_PARSE(app, argc, argv);
+  PF_PARSE_COMMAND_LINE(app, argc, argv);
 
   const std::vector<Scene> all = {{"torus", litPerspective, drawTorus},
                                   {"triangles", [size] { windowCoordinates(size); }, drawTriangles},

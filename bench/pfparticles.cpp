@@ -8,6 +8,8 @@
 // instances up one at a time (scalar) instead of 16 at a time.
 #include <CLI/CLI.hpp>
 
+#include "tools/command_line.h"
+
 #include <primflow/gl.h>
 
 #include <algorithm>
@@ -36,7 +38,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.01, 100.0));
   app.add_flag("--stats", stats, "print the work counters per frame");
   app.add_option("--csv", csv, "append primitive,count,size,threads,median_ms,fastest_ms,glend_ms to FILE");
-  CLI11_PARSE(app, argc, argv);
+  PF_PARSE_COMMAND_LINE(app, argc, argv);
 
   std::vector<unsigned char> pixels(static_cast<size_t>(size) * size * 4);
   const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_THREADS, threads, 0};

@@ -14,6 +14,8 @@
 // 2 on bad options.
 #include <CLI/CLI.hpp>
 
+#include "tools/command_line.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -158,7 +160,7 @@ int main(int argc, char** argv) {
                  "pixels: mismatches this close to a silhouette or intersection curve are not 'off-edge'")
       ->check(CLI::Range(0.0, 0.49));
   app.add_flag("--check", o.check, "exit 1 if primflow mismatches any pixel off the edges");
-  CLI11_PARSE(app, argc, argv);
+  PF_PARSE_COMMAND_LINE(app, argc, argv);
   std::vector<int> counts, levels;
   if (!parseList(o.counts, &counts) || !parseList(o.levels, &levels)) {
     std::fprintf(stderr, "pfspheres: --counts and --levels take comma-separated positive integers\n");

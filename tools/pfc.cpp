@@ -11,6 +11,8 @@
 #include <set>
 #include <CLI/CLI.hpp>
 
+#include "tools/command_line.h"
+
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -48,11 +50,7 @@ int main(int argc, char** argv) {
   app.add_flag("--explain", explain, "print why each optimization fired (folding, CSE, copies, dead code)");
   bool no_opt = false;
   app.add_flag("--no-optimize", no_opt, "skip the optimization passes (for comparison and debugging)");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;
-  }
+  PF_PARSE_COMMAND_LINE(app, argc, argv);
   std::string source, why;
   if (!pf::tools::readTextFile(file, source, why)) {
     std::cerr << "pfc: cannot read '" << file << "': " << why << "\n";

@@ -9,6 +9,8 @@
 //   (default: conformance-failures/ in the working directory).
 #include <CLI/CLI.hpp>
 
+#include "tools/command_line.h"
+
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -39,7 +41,7 @@ int main(int argc, char** argv) {
   app.add_option("--size", size, "image size of the GL cases (square)")->check(CLI::Range(16, 2048));
   app.add_option("--threads", threads, "primflow's rasterizer threads")->check(CLI::Range(1, 64));
   app.add_flag("--list", list, "list the cases and exit");
-  CLI11_PARSE(app, argc, argv);
+  PF_PARSE_COMMAND_LINE(app, argc, argv);
 
   const auto& gl = pfconf::glCases();
   const auto& ext = pfconf::extensionCases();

@@ -9,6 +9,8 @@
 // incomplete, is still written), out of memory, or an unwritable output; 2 a bad command line.
 #include <CLI/CLI.hpp>
 
+#include "tools/command_line.h"
+
 #include <primflow/gl.h>
 
 #include <chrono>
@@ -179,11 +181,7 @@ int run(int argc, char** argv) {
   auto* o_depth = app.add_option("--depth-out", depth_out, "model: write the visible surface's world z as a PFM (NaN: none)");
   auto* o_time = app.add_option("--time", time, "model: HyperFun's time x[4] (Fidget models have none and ignore it)")
                      ->check(kFinite);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;  // --help: 0; every other parse error is a bad command line
-  }
+  PF_PARSE_COMMAND_LINE(app, argc, argv);
   const bool is_model = !scene_path.empty() && pf::model::isModelPath(scene_path);
   if (!is_model) {
     for (CLI::Option* o : {o_bbox, o_ortho, o_method, o_steps, o_depth, o_time})

@@ -19,6 +19,8 @@
 // the tests drive the method keys and read the accuracy figure without a person at the window.
 #include <CLI/CLI.hpp>
 
+#include "tools/command_line.h"
+
 #include <GLFW/glfw3.h>
 
 #include <chrono>
@@ -253,11 +255,7 @@ int main(int argc, char** argv) {
   app.add_option("--screenshot", screenshot, "write primflow's last frame to this PNG (scripted mode: at exit)");
   app.add_option("--window-shot", window_shot, "write the window's content (overlay included) to this PNG at exit");
   app.add_option("--keys", keys, "press these keys before the first frame (letters, '[' and ']'; e.g. MM] )");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  }
+  PF_PARSE_COMMAND_LINE(app, argc, argv);
   if (!v.scene_path.empty() && std::filesystem::path(v.scene_path).extension() != ".json" &&
       !pf::model::isModelPath(v.scene_path)) {
     std::cerr << "pfview: " << v.scene_path << ": error: unknown scene type (pfview opens .json scene files and .vm models)\n";
