@@ -98,9 +98,32 @@ class Parser {
     if (log_.errorCount() >= DiagnosticLog::kMaxErrors) throw CompileAbort{};
   }
   Token expect(Tok k, const char* context) {
-    if (!at(k))
+    if (!at(k)) {
+      // A missing ';' is reported where it is missing, as GCC and Clang do: just after the
+      // token before it, not at the next statement (often on a later line).
+      if (k == Tok::Semi)
+        fail(afterPrevious(), std::string("expected ';' ") + context + ", before " + describe(cur()));
       fail(cur().loc, std::string("expected ") + tokenName(k) + " " + context + ", found " + describe(cur()));
+    }
     return take();
+  }
+  // Just past the end of the token before the current one (tokens never span lines).
+  SourceLoc afterPrevious() const {
+    if (pos_ == 0) return cur().loc;
+    const Token& p = t_[pos_ - 1];
+    SourceLoc loc = p.loc;
+    loc.col += static_cast<int>(p.text.size());
+    return loc;
+  }
+  // Whether the current token can begin an expression.
+  bool atExpressionStart() const {
+    switch (cur().kind) {
+      case Tok::IntLit: case Tok::FloatLit: case Tok::KwTrue: case Tok::KwFalse: case Tok::LParen:
+      case Tok::Ident: case Tok::Minus: case Tok::Bang: case Tok::Plus:
+        return true;
+      default:
+        return atConversion();
+    }
   }
   bool atUnitStart() const {
     return at(Tok::KwPrimitive) || at(Tok::KwInterpolator) || atFieldUnit() ||
@@ -368,7 +391,9 @@ class Parser {
     }
     if (accept(Tok::KwReturn)) {
       auto s = make(StmtKind::Return, loc);
-      if (!at(Tok::Semi)) s->value = expression();  // functions return a value; sema checks
+      // Functions return a value (sema checks). After a bare `return` missing its ';', the next
+      // statement (`float z = ...`, `if`, `}`) cannot be a value: the ';' is what is missing.
+      if (!at(Tok::Semi) && atExpressionStart()) s->value = expression();
       expect(Tok::Semi, "after 'return'");
       return s;
     }

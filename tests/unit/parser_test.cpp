@@ -60,6 +60,38 @@ TEST(Parser, MissingOperandPointsAtTheToken) {
   EXPECT_NE(p->errors.find("        float a = 1.0 +;\n                       ^"), std::string::npos) << p->errors;
 }
 
+// A missing ';' is reported where it is missing -- just after the token before it, as GCC and
+// Clang do -- not at the next statement: after a bare `return` (sphere.pfl's `if (disc < 0)
+// return` once read the next line's `float` as its value), after a declaration, an
+// assignment, and at the end of the file.
+TEST(Parser, MissingSemicolonIsReportedWhereItIsMissing) {
+  struct Case {
+    const char* source;
+    int line, col;
+    const char* message;
+  };
+  const Case cases[] = {
+      {"primitive p(inout varying float Z)\n{\n    if (X < 0) return\n    float z = 0.5;\n    Z = z;\n}\n", 3, 22,
+       "expected ';' after 'return', before 'float'"},
+      {"primitive p(inout varying float Z)\n{\n    if (X < 0) return\n}\n", 3, 22, "expected ';' after 'return', before '}'"},
+      {"primitive p(inout varying float Z)\n{\n    float z = 0.5\n    Z = z;\n}\n", 3, 18,
+       "expected ';' after the declaration, before 'Z'"},
+      {"primitive p(inout varying float Z)\n{\n    Z = 0.5\n}\n", 3, 12, "expected ';' after the assignment, before '}'"},
+      {"float f() { return 1.0", 1, 23, "expected ';' after 'return', before end of file"},
+  };
+  for (const Case& c : cases) {
+    auto p = parseString(c.source);
+    ASSERT_TRUE(p->log.hasErrors()) << c.source;
+    const Diagnostic& d = p->log.all()[0];
+    EXPECT_EQ(d.loc.line, c.line) << p->errors;
+    EXPECT_EQ(d.loc.col, c.col) << p->errors;
+    EXPECT_NE(d.message.find(c.message), std::string::npos) << p->errors;
+  }
+  // `return` followed by a value on the next line is still a return of that value.
+  auto ok = parseString("float f()\n{\n    return\n        1.0;\n}\n");
+  EXPECT_FALSE(ok->log.hasErrors()) << ok->errors;
+}
+
 TEST(Parser, RecoversAndReportsSeveralErrors) {
   auto p = parseString("primitive p() { float a = ; float b = 2; c = = 3; }");
   EXPECT_EQ(p->log.errorCount(), 2) << p->errors;
