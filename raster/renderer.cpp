@@ -265,6 +265,7 @@ void Renderer::submitInstances(const CompiledPrimitive& prim, int instances, con
     for (int b = from; b < to; ++b) setupBatch(b, worker);
   };
   if (jobs > 1) {
+    for (const auto& b : batch_setups_) b->reserveFor(prim, layout);
     // (A closure of one pointer: std::function keeps it without allocating.)
     auto* run = &setupJob;
     pool_.parallelFor(jobs, [run](int job, int worker) { (*run)(job, worker); });

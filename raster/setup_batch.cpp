@@ -139,6 +139,14 @@ NativeSetupFunction BatchSetupExecutor::nativeFunction(const CompiledPrimitive& 
   return reinterpret_cast<NativeSetupFunction>(cache.compileSetup(entry, prim.setup, v));
 }
 
+void BatchSetupExecutor::reserveFor(const CompiledPrimitive& prim, const ChannelLayout& layout) {
+  const SetupProgram& p = prim.setup;
+  const size_t words = (p.num_regs + p.constants.size() + static_cast<size_t>(prim.param_floats)) * K;
+  if (regs_.size() < words) regs_.resize(words);
+  const size_t interp = static_cast<size_t>(p.num_interp_regs) * static_cast<size_t>(layout.count) * K;
+  if (interp_.size() < interp) interp_.resize(interp);
+}
+
 void BatchSetupExecutor::runBatch(const CompiledPrimitive& prim, const SetupInput* in, int lanes,
                                   uint32_t* const* records, SetupOutput* out, NativeSetupFunction fn) {
   ++counters.batches;

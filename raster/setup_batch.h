@@ -58,6 +58,12 @@ class BatchSetupExecutor {
   // towards it: native_cache.h), or when native code is off, unavailable or refuses it.
   NativeSetupFunction nativeFunction(const CompiledPrimitive& prim, const ChannelLayout& layout, int instances);
 
+  // Sizes the batch's register files for `prim` with `layout`'s channels, as runBatch would on
+  // its first batch. The renderer calls it for every thread's executor on the submitting thread
+  // before spreading batches across the pool, so that which thread happens to run a batch first
+  // (the machine's load decides) never decides when memory is allocated.
+  void reserveFor(const CompiledPrimitive& prim, const ChannelLayout& layout);
+
   // True where batching can pay: a primitive with no callees (an Emit would leave the batch,
   // and the callees' instances must be binned between their callers').
   static bool batchable(const CompiledPrimitive& prim) { return prim.callees.empty(); }
