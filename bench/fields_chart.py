@@ -18,7 +18,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (after the backend is chosen)
 
-MARKERS = {"interval": "o", "analytic": "*", "march": "s", "sphere": "^"}
+MARKERS = {"interval": "o", "analytic": "*", "march": "s", "sphere": "^", "newton": "D", "regula-falsi": "v"}
 
 
 def main():
@@ -39,7 +39,7 @@ def main():
             ys = [max(float(r["max_depth_error"]), 1e-9) for r in pts]
             ax.plot(xs, ys, marker=MARKERS.get(method, "x"), label=method)
             for r, x, y in zip(pts, xs, ys):
-                tag = ("M=%s" % r["param"]) if method == "march" else ""
+                tag = ("M=%s" % r["param"]) if method in ("march", "newton", "regula-falsi") else ""
                 if int(r["coverage_mismatches"]):
                     tag += (" " if tag else "") + "%s px off" % r["coverage_mismatches"]
                 if tag:

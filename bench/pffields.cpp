@@ -184,7 +184,7 @@ int main(int argc, char** argv) {
                  "(default: tests/data/models/fidget/*.vm)");
   app.add_option("--time", time, "HyperFun models' time x[4]");
   std::vector<std::string> methods;
-  app.add_option("--methods", methods, "run only these methods (auto analytic interval march sphere; march: 64 steps)");
+  app.add_option("--methods", methods, "run only these methods (auto analytic interval march sphere newton regula-falsi; march, newton, regula-falsi: 64 steps)");
   app.add_option("--size", size, "3D models' image size (square)")->check(CLI::Range(8, 8192));
   app.add_option("--prospero-size", prospero_size, "2D models' image size (square)")->check(CLI::Range(8, 8192));
   app.add_option("--ref-size", ref_size, "3D accuracy image size")->check(CLI::Range(8, 1024));
@@ -225,7 +225,7 @@ int main(int argc, char** argv) {
       out << "model,method,param,size,threads,ms_median,ref_size,judged,coverage_mismatches,max_depth_error,"
              "mean_depth_error,max_normal_degrees,mean_normal_degrees,simd\n";
   }
-  std::printf("%-14s %-9s %7s %6s %6s %10s | %6s %8s %11s %11s %9s %9s\n", "model", "method", "param", "simd", "size",
+  std::printf("%-14s %-12s %7s %6s %6s %10s | %6s %8s %11s %11s %9s %9s\n", "model", "method", "param", "simd", "size",
               "ms", "judged", "mismatch", "max depth", "mean depth", "max N deg", "mean N");
   for (const std::string& entry : models) {
     // "FILE" or "FILE@x0,y0,z0,x1,y1,z1" (the model's box).
@@ -267,6 +267,9 @@ int main(int argc, char** argv) {
               {"march", GL_FIELD_METHOD_MARCH_EXT, 500.0f}};
       // M = 5000 (seed 004's finest) only where a frame of it takes seconds, not minutes.
       if (tape.size() < 100) runs.push_back({"march", GL_FIELD_METHOD_MARCH_EXT, 5000.0f});
+      // Seed 000's approximate refinements of the same 50-step march's brackets.
+      runs.push_back({"newton", GL_FIELD_METHOD_NEWTON_EXT, 50.0f});
+      runs.push_back({"regula-falsi", GL_FIELD_METHOD_REGULA_FALSI_EXT, 50.0f});
       const int degree = pf::field::fieldPolynomialDegree(tape);
       // Analytic where the field is one polynomial, or a CSG tree of them (csg_tree.h).
       if ((degree >= 0 && degree <= 4) || pf::field::csgTreeOf(tape))
@@ -280,7 +283,10 @@ int main(int argc, char** argv) {
           std::fprintf(stderr, "pffields: no method '%s'\n", name.c_str());
           return 2;
         }
-        runs.push_back({name, static_cast<int>(*method), *method == pf::field::RootMethod::March ? 64.0f : 0.0f});
+        runs.push_back({name, static_cast<int>(*method), *method == pf::field::RootMethod::March || *method == pf::field::RootMethod::Newton ||
+                                                             *method == pf::field::RootMethod::RegulaFalsi
+                                                         ? 64.0f
+                                                         : 0.0f});
       }
     }
     const int n = m.two_dimensional ? prospero_size : size;
@@ -291,13 +297,13 @@ int main(int argc, char** argv) {
         pf::field::useFloatSlotsTarget(target);
         const Frame timed = render(m, n, n, run, threads, frames, time);
         if (no_accuracy) {
-          std::printf("%-14s %-9s %7g %6s %6d %10.2f |\n", name.c_str(), run.method_name.c_str(), run.param,
+          std::printf("%-14s %-12s %7g %6s %6d %10.2f |\n", name.c_str(), run.method_name.c_str(), run.param,
                       target.c_str(), n, timed.ms);
           continue;
         }
         const Frame judged = rn == n ? timed : render(m, rn, rn, run, threads, 0, time);
         const Accuracy a = compare(judged.z, want, tape, m, rn);
-        std::printf("%-14s %-9s %7g %6s %6d %10.2f | %6d %8d %11.3g %11.3g %9.3g %9.3g\n", name.c_str(),
+        std::printf("%-14s %-12s %7g %6s %6d %10.2f | %6d %8d %11.3g %11.3g %9.3g %9.3g\n", name.c_str(),
                     run.method_name.c_str(), run.param, target.c_str(), n, timed.ms, a.judged, a.coverage_mismatches,
                     a.max_depth, a.mean_depth, a.max_normal_degrees, a.mean_normal_degrees);
         if (out)

@@ -35,6 +35,7 @@ struct CastLanes {
   // count returned.
   int evaluateAt(FloatEvaluator& eval, uint64_t set, const double* t_at, float* f, int* index,
                  FieldCounters& c) const {
+    if (!set) return 0;  // (and GCC then sees every point the evaluator reads written)
     float px[kLanes], py[kLanes], pz[kLanes];
     int n = 0;
     for (uint64_t p = set; p; p &= p - 1) {

@@ -6,7 +6,8 @@
 namespace pf::field {
 
 namespace {
-constexpr std::string_view kMethodNames[kRootMethodCount] = {"auto", "analytic", "interval", "march", "sphere"};
+constexpr std::string_view kMethodNames[kRootMethodCount] = {"auto",   "analytic", "interval",    "march",
+                                                             "sphere", "newton",   "regula-falsi"};
 }
 
 std::string_view rootMethodName(RootMethod m) {

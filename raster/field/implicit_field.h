@@ -22,8 +22,12 @@ enum class RootMethod : int {
   Interval = 2,  // interval subdivision in t, with region culling and tape simplification
   March = 3,     // M uniform steps, then bisection of the first sign change
   Sphere = 4,    // sphere tracing with the declared Lipschitz bound, checked as it goes
+  // Seed 000's approximate search: the march's M steps, then a fixed number of refinement
+  // steps instead of bisection to float resolution (bracket_refinement.cpp).
+  Newton = 5,       // Newton's method from the bracket's middle (f' from the gradient form)
+  RegulaFalsi = 6,  // regula falsi between the bracket's ends (Illinois variant)
 };
-constexpr int kRootMethodCount = 5;
+constexpr int kRootMethodCount = 7;
 
 std::string_view rootMethodName(RootMethod m);
 std::optional<RootMethod> parseRootMethod(std::string_view name);

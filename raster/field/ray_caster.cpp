@@ -251,8 +251,11 @@ void FieldRayCaster::castBlock(const CastRequest& r, int bx, int by, uint64_t ma
   }
   c.rays += std::popcount(lanes.pending);
   const uint64_t cast = lanes.pending;
-  switch (resolveMethod(*r.field, r.method)) {
-    case RootMethod::March: {
+  const RootMethod method = resolveMethod(*r.field, r.method);
+  switch (method) {
+    case RootMethod::March:
+    case RootMethod::Newton:
+    case RootMethod::RegulaFalsi: {
       double from[kLanes], to[kLanes];
       for (uint64_t p = lanes.pending; p; p &= p - 1) {
         const int i = std::countr_zero(p);
@@ -272,7 +275,12 @@ void FieldRayCaster::castBlock(const CastRequest& r, int bx, int by, uint64_t ma
         lanes.pending = 0;
         break;
       }
-      sampleAndBisect(fullEvaluator(*r.field), lanes, lanes.pending, from, to, steps, c);
+      FloatEvaluator& eval = fullEvaluator(*r.field);
+      if (method == RootMethod::March) {
+        sampleAndBisect(eval, lanes, lanes.pending, from, to, steps, c);
+        break;
+      }
+      sampleAndRefine(*r.field, method, eval, lanes, lanes.pending, from, to, steps, c);
       break;
     }
     case RootMethod::Sphere: castSphere(r, bx, by, lanes, c); break;

@@ -32,6 +32,7 @@
 
 #include "raster/field/field_rays.h"
 #include "raster/field/float_evaluator.h"
+#include "raster/field/gradient_evaluator.h"
 #include "raster/field/implicit_field.h"
 #include "raster/field/interval_evaluator.h"
 #include "raster/limits.h"
@@ -133,12 +134,22 @@ class FieldRayCaster {
   uint64_t sampleForBrackets(FloatEvaluator& eval, Lanes& lanes, uint64_t which, const double* from, const double* to,
                              int steps, double* lo, double* hi, FieldCounters& c, SampleGaps* gaps = nullptr);
   void bisectBrackets(FloatEvaluator& eval, Lanes& lanes, uint64_t bracketed, double* lo, double* hi, FieldCounters& c);
+  // The march's samples, then the brackets refined by `method`, Newton or RegulaFalsi.
+  void sampleAndRefine(const ImplicitField& field, RootMethod method, FloatEvaluator& eval, Lanes& lanes,
+                       uint64_t which, const double* from, const double* to, int steps, FieldCounters& c);
+  // Seed 000's approximate refinements of the march's brackets (bracket_refinement.cpp).
+  void newtonBrackets(const ImplicitField& field, Lanes& lanes, uint64_t bracketed, double* lo, double* hi,
+                      FieldCounters& c);
+  void regulaFalsiBrackets(FloatEvaluator& eval, Lanes& lanes, uint64_t bracketed, double* lo, double* hi,
+                           FieldCounters& c);
   void castSphere(const CastRequest& r, int bx, int by, Lanes& lanes, FieldCounters& c);
   void castAnalytic(const CastRequest& r, int bx, int by, Lanes& lanes, FieldCounters& c);
   FloatEvaluator& fullEvaluator(const ImplicitField& field);
   Scratch& scratch();
 
   std::unordered_map<const ImplicitField*, std::unique_ptr<FloatEvaluator>> full_evaluators_;
+  GradientEvaluator gradients_;  // Newton's: the full tape of gradients_field_
+  const ImplicitField* gradients_field_ = nullptr;
   std::unique_ptr<TileSlabs> tile_;  // the last tile's slabs (blocks of a tile come together)
   // The interval method's working storage, reused region after region (ray_caster.cpp).
   std::unique_ptr<Scratch> scratch_;

@@ -26,6 +26,44 @@ TEST(FieldRayCaster, EveryMethodFindsTheSphere) {
   }
 }
 
+// Seed 000's approximate search: the march's brackets refined by a fixed number of Newton or
+// regula falsi steps instead of bisection. Where the field is smooth at its root (a sphere, the
+// tanglecube quartic in perspective), the few steps reach the reference's depth as closely as
+// bisection does, with fewer point evaluations; both stay inside the march's bracket, so
+// coverage is the march's.
+TEST(FieldRayCaster, NewtonAndRegulaFalsiRefineTheMarchsBrackets) {
+  const ImplicitField sphere("sphere", sphereTape(1.0f));
+  const Vec3d lo = {-1.2, -1.2, -1.2}, hi = {1.2, 1.2, 1.2};
+  const FieldRays rays = orthoRays(40, 40, lo, hi);
+  const Comparison march = compare(sphere, rays, 40, 40, RootMethod::March, 64.0f, 4000);
+  for (RootMethod m : {RootMethod::Newton, RootMethod::RegulaFalsi}) {
+    SCOPED_TRACE(std::string(rootMethodName(m)));
+    const Comparison c = compare(sphere, rays, 40, 40, m, 64.0f, 4000);
+    std::printf("sphere %-12s: %d coverage mismatches, max depth error %.3g, %llu point evaluations (march: %.3g, %llu)\n",
+                std::string(rootMethodName(m)).c_str(), c.coverage_mismatches, c.max_depth_error,
+                static_cast<unsigned long long>(c.counters.point_evaluations), march.max_depth_error,
+                static_cast<unsigned long long>(march.counters.point_evaluations));
+    EXPECT_EQ(c.coverage_mismatches, 0);
+    EXPECT_LT(c.max_depth_error, 2e-5);
+    EXPECT_LT(c.counters.point_evaluations, march.counters.point_evaluations);
+  }
+  const ImplicitField tangle("tanglecube", model("fidget/tanglecube.vm"));
+  const Vec3d tlo = {-4, -4, -4}, thi = {4, 4, 4};
+  const FieldRays persp = perspectiveRays(48, 48, 14.0, tlo, thi);
+  for (RootMethod m : {RootMethod::Newton, RootMethod::RegulaFalsi}) {
+    SCOPED_TRACE(std::string(rootMethodName(m)));
+    const Comparison c = compare(tangle, persp, 48, 48, m, 256.0f, 3000);
+    std::printf("tanglecube %-12s: %d coverage mismatches, max depth error %.3g\n", std::string(rootMethodName(m)).c_str(),
+                c.coverage_mismatches, c.max_depth_error);
+    EXPECT_LE(c.coverage_mismatches, 1);
+    EXPECT_LT(c.max_depth_error, 1e-4);
+  }
+  // The names pffields, pfrender --method and scenes use.
+  EXPECT_EQ(parseRootMethod("newton"), RootMethod::Newton);
+  EXPECT_EQ(parseRootMethod("regula-falsi"), RootMethod::RegulaFalsi);
+  EXPECT_EQ(resolveMethod(sphere, RootMethod::Auto), RootMethod::Analytic) << "auto never picks an approximate method";
+}
+
 TEST(FieldRayCaster, TanglecubeInPerspectiveAnalyticAndInterval) {
   const ImplicitField tangle("tanglecube", model("fidget/tanglecube.vm"));
   EXPECT_EQ(resolveMethod(tangle, RootMethod::Auto), RootMethod::Analytic);

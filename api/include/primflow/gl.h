@@ -326,6 +326,8 @@ void pfglSequencePointEXT(void);
 #define GL_FIELD_METHOD_INTERVAL_EXT 2 /* interval subdivision, block culling, tape simplification */
 #define GL_FIELD_METHOD_MARCH_EXT 3    /* `steps` uniform steps, then bisection */
 #define GL_FIELD_METHOD_SPHERE_EXT 4   /* sphere tracing with the declared bound (or `steps` as the bound) */
+#define GL_FIELD_METHOD_NEWTON_EXT 5   /* `steps` uniform steps, then 4 Newton steps (seed 000's approximate search) */
+#define GL_FIELD_METHOD_REGULA_FALSI_EXT 6 /* `steps` uniform steps, then 6 regula falsi steps (seed 000) */
 GLuint pfglCompileFieldEXT(GLenum format, const GLchar *name, const GLchar *source, GLfloat lipschitz);
 /* pfglCompileFieldEXT with the model's parameters: for GL_FIELD_HYPERFUN_EXT, `time` is x[4] and
  * params[0 .. count-1] are a[1 .. count] (the rest of a[] is 0; more than a[] holds: the
