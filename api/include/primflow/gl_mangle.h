@@ -1,12 +1,24 @@
 /* primflow/gl_mangle.h: renames the standard GL entry points to primflow's, so that unchanged
  * GL-1.x source compiles against primflow:
- *     #include <primflow/gl_mangle.h>   // instead of, or before, <GL/gl.h>
- * One program can therefore link both OSMesa and primflow, one translation unit each. */
+ *     #include <primflow/gl_mangle.h>   // instead of, or after, <GL/gl.h> and the other GL headers
+ * One program can therefore link both OSMesa and primflow, one translation unit each.
+ *
+ * Every GL 1.0 - 1.5 entry point is named here (the names <GL/gl.h> and <GL/glext.h> declare for
+ * GL_VERSION_1_1 ... GL_VERSION_1_5), one of two ways:
+ *   - implemented: #define glX pfglX. The PixelFlow extensions keep the paper's names too
+ *     (glRastParamfEXT -> pfglRastParamfEXT, ...).
+ *   - not implemented: a use of the name stops the compilation with
+ *     "error: primflow does not implement glX", so that it cannot silently call another GL
+ *     library linked into the same program (OSMesa, libGL) on no context.
+ * This header is the one list: libprimflow-osmesa's unprefixed gl* symbols and its
+ * OSMesaGetProcAddress table are generated from these lines at configure time
+ * (api/osmesa/CMakeLists.txt), so keep each on one line in these two forms. */
 #ifndef PRIMFLOW_GL_MANGLE_H
 #define PRIMFLOW_GL_MANGLE_H
 
 #include <primflow/gl.h>
 
+/* ---- GL 1.x, implemented ---------------------------------------------------------------- */
 #define glGetError pfglGetError
 #define glGetString pfglGetString
 #define glFinish pfglFinish
@@ -195,5 +207,27 @@
 #define glListBase pfglListBase
 #define glDeleteLists pfglDeleteLists
 #define glIsList pfglIsList
+
+/* ---- The PixelFlow extensions by the paper's names (Olano et al. 1997, figure 3) ------- */
+#define glCompileFieldEXT pfglCompileFieldEXT
+#define glCompileFieldParamsEXT pfglCompileFieldParamsEXT
+#define glCompilePrimitivesEXT pfglCompilePrimitivesEXT
+#define glGetCompileLogEXT pfglGetCompileLogEXT
+#define glGetFieldEXT pfglGetFieldEXT
+#define glGetFieldLogEXT pfglGetFieldLogEXT
+#define glGetInterpolatorEXT pfglGetInterpolatorEXT
+#define glGetParamNameEXT pfglGetParamNameEXT
+#define glGetPrimitiveEXT pfglGetPrimitiveEXT
+#define glMaterialInterpEXT pfglMaterialInterpEXT
+#define glRastParam3fEXT pfglRastParam3fEXT
+#define glRastParam4fEXT pfglRastParam4fEXT
+#define glRastParamfEXT pfglRastParamfEXT
+#define glRastParamfvEXT pfglRastParamfvEXT
+#define glRastParamiEXT pfglRastParamiEXT
+#define glRastParamivEXT pfglRastParamivEXT
+#define glSequencePointEXT pfglSequencePointEXT
+
+/* ---- GL 1.x, not implemented (yet): using one is a compile error ---------------------------- */
+#include <primflow/gl_mangle_unsupported.h>
 
 #endif
