@@ -1,11 +1,15 @@
 // Context creation, binding to the caller's buffer, the depth buffer, destruction.
 // Built-in primitives are compiled here from their embedded source (primitives/*.pfl).
 #include <cstdio>
+#include <mutex>
 #include <new>
+#include <set>
+#include <string>
 #include <system_error>
 #include <vector>
 
 #include "api/src/context_state.h"
+#include "api/src/frame_hook.h"
 #include "compiler/builtin_primitives.h"
 #include "raster/limits.h"
 #include "raster/worker_pool.h"
@@ -46,6 +50,24 @@ bool registerBuiltins(PFcontextRec& ctx) {
 }  // namespace
 
 PFcontextRec* currentContext() { return g_current; }
+
+void setFrameHook(PFcontextRec* ctx, FrameHook hook, void* user) {
+  if (!ctx) return;
+  ctx->frame_hook = hook;
+  ctx->frame_hook_user = user;
+}
+
+void unsupportedEntryPoint(const char* name) {
+  if (PFcontextRec* ctx = g_current) ctx->setError(GL_INVALID_OPERATION);
+  static std::mutex reported_mutex;
+  static std::set<std::string> reported;
+  std::lock_guard<std::mutex> lock(reported_mutex);
+  try {
+    if (name && reported.insert(name).second)
+      std::fprintf(stderr, "primflow: %s is not implemented (GL_INVALID_OPERATION)\n", name);
+  } catch (const std::bad_alloc&) {  // the line is a courtesy; the error is recorded
+  }
+}
 
 PFcontextRec* contextOutsideBegin() {
   PFcontextRec* ctx = g_current;

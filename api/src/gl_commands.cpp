@@ -282,12 +282,13 @@ const GLubyte* pfglGetString(GLenum name) {
 }
 
 void pfglFinish(void) {
-  if (PFcontextRec* ctx = pf::contextOutsideBegin()) ctx->finish();
+  if (PFcontextRec* ctx = pf::contextOutsideBegin()) {
+    ctx->finish();
+    if (ctx->frame_hook) ctx->frame_hook(ctx->frame_hook_user);
+  }
 }
 
-void pfglFlush(void) {
-  if (PFcontextRec* ctx = pf::contextOutsideBegin()) ctx->finish();
-}
+void pfglFlush(void) { pfglFinish(); }
 
 void pfglClear(GLbitfield mask) { pf::dispatch<pf::GlOp::Clear>(mask); }
 void pfglClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) { pf::dispatch<pf::GlOp::ClearColor>(r, g, b, a); }

@@ -1,0 +1,20 @@
+// What libprimflow-osmesa (api/osmesa) needs from inside primflow beyond the public API: a call
+// after glFinish / glFlush have executed the drawing -- where OSMesa copies its frame into the
+// caller's buffer, in the caller's format -- and the error an entry point primflow does not
+// implement records. Declarations only: no internal type leaks into api/osmesa.
+#pragma once
+
+struct PFcontextRec;
+
+namespace pf {
+
+using FrameHook = void (*)(void* user);
+
+// glFinish and glFlush on `ctx` call hook(user) once its drawing has executed (null: none).
+void setFrameHook(PFcontextRec* ctx, FrameHook hook, void* user);
+
+// An entry point of GL that primflow does not implement was called: GL_INVALID_OPERATION on
+// the current context (none: nothing), and once per name a line on stderr.
+void unsupportedEntryPoint(const char* name);
+
+}  // namespace pf
