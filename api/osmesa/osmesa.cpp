@@ -83,7 +83,6 @@ bool validFormat(int format) {
 extern "C" {
 
 GLAPI OSMesaContext GLAPIENTRY OSMesaCreateContextAttribs(const int* attribList, OSMesaContext sharelist) {
-  (void)sharelist;  // display lists are not shared (docs/api.md, "Porting from OSMesa")
   GLenum format = GL_RGBA;
   int depth = 0, stencil = 0, accum = 0;
   int profile = OSMESA_COMPAT_PROFILE, major = 1, minor = 0;
@@ -123,6 +122,7 @@ GLAPI OSMesaContext GLAPIENTRY OSMesaCreateContextAttribs(const int* attribList,
     return nullptr;
   }
   pf::setFrameHook(c->pf, writeFrame, c);
+  if (sharelist) pf::shareDisplayLists(c->pf, sharelist->pf);  // as OSMesa: display lists
   return c;
 }
 

@@ -57,6 +57,10 @@ void setFrameHook(PFcontextRec* ctx, FrameHook hook, void* user) {
   ctx->frame_hook_user = user;
 }
 
+void shareDisplayLists(PFcontextRec* ctx, PFcontextRec* with) {
+  if (ctx && with) ctx->lists.names = with->lists.names;
+}
+
 void unsupportedEntryPoint(const char* name) {
   if (PFcontextRec* ctx = g_current) ctx->setError(GL_INVALID_OPERATION);
   static std::mutex reported_mutex;

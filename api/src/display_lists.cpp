@@ -17,38 +17,38 @@
 namespace pf {
 
 bool DisplayLists::isList(GLuint n) const {
-  if (defined.count(n)) return true;
-  auto it = reserved.upper_bound(n);
-  return it != reserved.begin() && n <= std::prev(it)->second;
+  if (names->defined.count(n)) return true;
+  auto it = names->reserved.upper_bound(n);
+  return it != names->reserved.begin() && n <= std::prev(it)->second;
 }
 
 void DisplayLists::erase(GLuint first, GLuint last) {
   // Over the range or over the lists, whichever is shorter (glDeleteLists(1, 2^31 - 1) with a few
   // lists defined must not walk two billion names).
-  if (uint64_t{last} - first < defined.size()) {
-    for (uint64_t n = first; n <= last; ++n) defined.erase(static_cast<GLuint>(n));
+  if (uint64_t{last} - first < names->defined.size()) {
+    for (uint64_t n = first; n <= last; ++n) names->defined.erase(static_cast<GLuint>(n));
   } else {
-    std::erase_if(defined, [&](const auto& entry) { return entry.first >= first && entry.first <= last; });
+    std::erase_if(names->defined, [&](const auto& entry) { return entry.first >= first && entry.first <= last; });
   }
-  auto it = reserved.upper_bound(first);
-  if (it != reserved.begin() && std::prev(it)->second >= first) --it;
-  while (it != reserved.end() && it->first <= last) {
+  auto it = names->reserved.upper_bound(first);
+  if (it != names->reserved.begin() && std::prev(it)->second >= first) --it;
+  while (it != names->reserved.end() && it->first <= last) {
     const GLuint a = it->first, b = it->second;
-    it = reserved.erase(it);
-    if (a < first) reserved.emplace(a, first - 1);
-    if (b > last) it = reserved.emplace(last + 1, b).first;
+    it = names->reserved.erase(it);
+    if (a < first) names->reserved.emplace(a, first - 1);
+    if (b > last) it = names->reserved.emplace(last + 1, b).first;
   }
 }
 
 GLuint DisplayLists::generate(GLuint range) {
   constexpr GLuint kLastName = 0xfffffffeu;  // Mesa's highest key
   uint64_t first;
-  if (range <= kLastName && kLastName - range > highest) {
-    first = uint64_t{highest} + 1;
+  if (range <= kLastName && kLastName - range > names->highest) {
+    first = uint64_t{names->highest} + 1;
   } else {
     // The names above the highest are used up: the lowest free block of `range` names.
-    std::vector<std::pair<GLuint, GLuint>> used(reserved.begin(), reserved.end());
-    for (const auto& entry : defined) used.emplace_back(entry.first, entry.first);
+    std::vector<std::pair<GLuint, GLuint>> used(names->reserved.begin(), names->reserved.end());
+    for (const auto& entry : names->defined) used.emplace_back(entry.first, entry.first);
     std::sort(used.begin(), used.end());
     first = 1;
     for (const auto& [a, b] : used) {
@@ -58,10 +58,10 @@ GLuint DisplayLists::generate(GLuint range) {
     if (first + range - 1 > kLastName) return 0;
   }
   const GLuint last = static_cast<GLuint>(first + range - 1);
-  auto before = reserved.lower_bound(static_cast<GLuint>(first));
-  if (before != reserved.begin() && std::prev(before)->second + 1 == first) std::prev(before)->second = last;
-  else reserved.emplace(static_cast<GLuint>(first), last);
-  highest = std::max(highest, last);
+  auto before = names->reserved.lower_bound(static_cast<GLuint>(first));
+  if (before != names->reserved.begin() && std::prev(before)->second + 1 == first) std::prev(before)->second = last;
+  else names->reserved.emplace(static_cast<GLuint>(first), last);
+  names->highest = std::max(names->highest, last);
   return static_cast<GLuint>(first);
 }
 
@@ -162,8 +162,8 @@ namespace cmd {
 void callList(PFcontextRec& ctx, GLuint name) {
   DisplayLists& lists = ctx.lists;
   if (lists.depth >= kMaxListNesting) return;
-  auto it = lists.defined.find(name);
-  if (it == lists.defined.end()) return;
+  auto it = lists.names->defined.find(name);
+  if (it == lists.names->defined.end()) return;
   // (Nothing a list executes can change the lists -- glNewList, glEndList, glDeleteLists and
   // glGenLists are never recorded -- so `it` stays valid while it runs.)
   ++lists.depth;
@@ -210,8 +210,8 @@ void pfglEndList(void) {
   try {
     // Stored at its size (the recording buffer grew by doubling); the old list is replaced now.
     std::vector<uint32_t> compact(lists.building.begin(), lists.building.end());
-    lists.defined[lists.name] = std::move(compact);
-    lists.highest = std::max(lists.highest, lists.name);
+    lists.names->defined[lists.name] = std::move(compact);
+    lists.names->highest = std::max(lists.names->highest, lists.name);
   } catch (const std::bad_alloc&) {
     pf::recordOutOfMemory(*ctx);
   }

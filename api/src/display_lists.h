@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <unordered_map>
 #include <vector>
 
@@ -16,13 +17,9 @@ namespace pf {
 // GL_MAX_LIST_NESTING: Mesa's 64. A glCallList deeper than that is ignored, without an error.
 constexpr int kMaxListNesting = 64;
 
-struct DisplayLists {
-  // Between glNewList and glEndList; `execute`: GL_COMPILE_AND_EXECUTE.
-  bool compiling = false;
-  bool execute = false;
-  GLuint name = 0;                 // the list being compiled; it replaces `name` at glEndList
-  std::vector<uint32_t> building;  // its commands so far
-  bool dropped = false;            // a command was left out of it for want of memory
+// The lists and their names: what contexts sharing display lists share (OSMesa's `sharelist`;
+// pf::shareDisplayLists).
+struct ListNames {
   // Lists that hold commands, by name.
   std::unordered_map<GLuint, std::vector<uint32_t>> defined;
   // Names glGenLists handed out, as ranges first -> last: they are lists (glIsList) and empty
@@ -31,6 +28,17 @@ struct DisplayLists {
   // The highest name ever used: glGenLists hands out the names above it while there are enough,
   // as Mesa does (a deleted name is not handed out again until then).
   GLuint highest = 0;
+};
+
+struct DisplayLists {
+  // Between glNewList and glEndList; `execute`: GL_COMPILE_AND_EXECUTE.
+  bool compiling = false;
+  bool execute = false;
+  GLuint name = 0;                 // the list being compiled; it replaces `name` at glEndList
+  std::vector<uint32_t> building;  // its commands so far
+  bool dropped = false;            // a command was left out of it for want of memory
+  // The lists themselves, this context's own or shared with others. Throws std::bad_alloc.
+  std::shared_ptr<ListNames> names = std::make_shared<ListNames>();
   GLuint base = 0;  // glListBase
   int depth = 0;    // lists executing now, one inside another
 

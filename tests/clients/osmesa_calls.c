@@ -186,6 +186,45 @@ static void procs(void) {
   OSMesaDestroyContext(c);
 }
 
+/* Display lists shared through `sharelist`: defined in one context, called in another. */
+static void sharing(void) {
+  OSMesaContext a = OSMesaCreateContext(OSMESA_RGBA, NULL);
+  OSMesaContext b = OSMesaCreateContext(OSMESA_RGBA, a);
+  OSMesaContext c = OSMesaCreateContext(OSMESA_RGBA, NULL);
+  OSMesaContext d = OSMesaCreateContextExt(OSMESA_BGRA, 16, 0, 0, b);
+  GLuint first;
+  OSMesaMakeCurrent(a, buffer, GL_UNSIGNED_BYTE, 2, 2);
+  first = glGenLists(2);
+  glNewList(first, GL_COMPILE);
+  glClearColor(0.0f, 0.0f, 1.0f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glEndList();
+  OSMesaMakeCurrent(b, buffer, GL_UNSIGNED_BYTE, 2, 2);
+  printf("shared: glIsList %d", glIsList(first));
+  printf(" %d", glIsList(first + 1));
+  memset(buffer, 0x11, 16);
+  glCallList(first);
+  glFinish();
+  printf(", glCallList draws %02x%02x%02x", buffer[0], buffer[1], buffer[2]);
+  printf(", next glGenLists %u\n", glGenLists(1) - first);
+  OSMesaMakeCurrent(c, buffer, GL_UNSIGNED_BYTE, 2, 2);
+  printf("not shared: glIsList %d", glIsList(first));
+  printf(", glGenLists %u\n", glGenLists(1));
+  OSMesaMakeCurrent(d, buffer, GL_UNSIGNED_BYTE, 2, 2);
+  printf("shared through a sharer, another format: glIsList %d\n", glIsList(first));
+  glDeleteLists(first, 1);
+  OSMesaMakeCurrent(a, buffer, GL_UNSIGNED_BYTE, 2, 2);
+  printf("deleted in one, seen in the other: glIsList %d\n", glIsList(first));
+  OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
+  OSMesaDestroyContext(a);
+  OSMesaMakeCurrent(b, buffer, GL_UNSIGNED_BYTE, 2, 2);
+  printf("after destroying the first: glIsList %d\n", glIsList(first + 2));
+  OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
+  OSMesaDestroyContext(b);
+  OSMesaDestroyContext(c);
+  OSMesaDestroyContext(d);
+}
+
 /* What crashes Mesa 22.3's OSMesa; primflow must answer. */
 static int crashers(void) {
   GLint w = -1, h = -1, bytes = -1, v = -7;
@@ -227,5 +266,6 @@ int main(int argc, char *argv[]) {
   binding();
   depth();
   procs();
+  sharing();
   return 0;
 }

@@ -441,7 +441,7 @@ TEST(DisplayLists, CommandsNeverCompiledExecuteAtOnce) {
   pfglPixelStorei(GL_PACK_ALIGNMENT, 4);
   pfglDisableClientState(GL_VERTEX_ARRAY);
   EXPECT_EQ(pfglIsList(7), GL_TRUE);
-  EXPECT_TRUE(c.ctx->lists.defined.at(7).empty());
+  EXPECT_TRUE(c.ctx->lists.names->defined.at(7).empty());
   pfglCallList(7);
   pfglGetIntegerv(GL_PACK_ALIGNMENT, &value);
   EXPECT_EQ(value, 4);
