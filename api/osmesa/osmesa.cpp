@@ -2,7 +2,8 @@
 // semantics (measured by calling it; docs/api.md, "Porting from OSMesa", lists what differs).
 // As OSMesa does, primflow draws into a frame of its own (RGBA, 8 bits a channel) and the
 // caller's buffer is written, in the caller's format, at glFinish / glFlush and when the
-// context is released or another one is made current. Where OSMesa would crash on bad input
+// context is released or another one is made current -- if anything was drawn since it was
+// last written. Where OSMesa would crash on bad input
 // (NULL context, no current context, NULL attribute list), these return GL_FALSE / NULL / 0.
 #include <cstdio>
 #include <cstring>

@@ -158,9 +158,11 @@ struct PFcontextRec {
   bool ever_bound = false;
   int first_size[2] = {0, 0};  // the first drawable's: GL's initial viewport and scissor box
   unsigned iteration_cap = 65536;
-  // Called by glFinish / glFlush after the drawing has executed (api/src/frame_hook.h).
+  // Called by glFinish / glFlush after the drawing has executed, if any drawing has since the
+  // last call (api/src/frame_hook.h).
   void (*frame_hook)(void* user) = nullptr;
   void* frame_hook_user = nullptr;
+  bool frame_changed = false;
 
   pf::PrimitiveRegistry primitives;
   // Fields for implicit surfaces (pfglCompileFieldEXT): by id - 1, with each compilation's log;

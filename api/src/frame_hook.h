@@ -10,7 +10,8 @@ namespace pf {
 
 using FrameHook = void (*)(void* user);
 
-// glFinish and glFlush on `ctx` call hook(user) once its drawing has executed (null: none).
+// glFinish and glFlush on `ctx` call hook(user) once its drawing has executed, when some
+// drawing (or a clear) has executed since the hook last ran (null: none).
 void setFrameHook(PFcontextRec* ctx, FrameHook hook, void* user);
 
 // `ctx` uses the display lists of `with` from now on (its own are dropped): the lists and their

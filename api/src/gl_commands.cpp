@@ -70,6 +70,7 @@ void PFcontextRec::outOfMemory(const char* command) {
 }
 
 void PFcontextRec::flush() {
+  if (renderer.pending()) frame_changed = true;
   try {
     renderer.flush();
   } catch (const std::bad_alloc&) {  // the renderer has dropped the frame
@@ -284,7 +285,12 @@ const GLubyte* pfglGetString(GLenum name) {
 void pfglFinish(void) {
   if (PFcontextRec* ctx = pf::contextOutsideBegin()) {
     ctx->finish();
-    if (ctx->frame_hook) ctx->frame_hook(ctx->frame_hook_user);
+    // The hook only when something was drawn since it last ran, as OSMesa copies its frame
+    // only when it has changed.
+    if (ctx->frame_hook && ctx->frame_changed) {
+      ctx->frame_changed = false;
+      ctx->frame_hook(ctx->frame_hook_user);
+    }
   }
 }
 

@@ -133,6 +133,12 @@ static void binding(void) {
   printf("after binding to another buffer: old %02x, new %02x\n", buffer[0], buffer[16]);
   glFinish();
   printf("then glFinish: new %02x%02x%02x\n", buffer[16], buffer[17], buffer[18]);
+  memset(buffer + 16, 0x11, 16);
+  glFinish();
+  printf("glFinish with nothing drawn since: %02x\n", buffer[16]);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glFinish();
+  printf("glFinish after a glClear: %02x\n", buffer[16]);
   OSMesaDestroyContext(a);
   printf("current after destroying it: %s\n", ok(OSMesaGetCurrentContext()));
   OSMesaDestroyContext(b);
