@@ -221,6 +221,22 @@ GLboolean pfGetDepthBuffer(PFcontext ctx, GLint* width, GLint* height, GLint* by
   return GL_TRUE;
 }
 
+GLboolean pfGetColorBuffer(PFcontext ctx, GLint* width, GLint* height, GLint* format, void** buffer) {
+  if (!ctx || !ctx->color) {
+    if (width) *width = 0;
+    if (height) *height = 0;
+    if (format) *format = 0;
+    if (buffer) *buffer = nullptr;
+    return GL_FALSE;
+  }
+  ctx->finish();
+  if (width) *width = ctx->width;
+  if (height) *height = ctx->height;
+  if (format) *format = GL_RGBA;
+  if (buffer) *buffer = ctx->color;
+  return GL_TRUE;
+}
+
 GLint pfGetThreadCount(PFcontext ctx) { return ctx ? ctx->renderer.threadCount() : 0; }
 
 void pfDestroyContext(PFcontext ctx) {

@@ -36,6 +36,28 @@ TEST(Api, CreateRejectsBadFormatAndAttributes) {
   pfDestroyContext(c);
 }
 
+// pfGetColorBuffer, as OSMesaGetColorBuffer: the caller's buffer, after pending drawing ran;
+// GL_FALSE and zeroed outputs for no context or one never bound.
+TEST(Api, GetColorBufferHandsBackTheBoundBufferAfterDrawing) {
+  GLint w = 1, h = 1, format = 1;
+  void* p = &w;
+  EXPECT_EQ(pfGetColorBuffer(nullptr, &w, &h, &format, &p), GL_FALSE);
+  EXPECT_EQ(p, nullptr);
+  EXPECT_EQ(w, 0);
+  PFcontext unbound = pfCreateContext(GL_RGBA, 0);
+  EXPECT_EQ(pfGetColorBuffer(unbound, nullptr, nullptr, nullptr, nullptr), GL_FALSE);
+  pfDestroyContext(unbound);
+  Ctx c(4, 3);
+  pfglClearColor(1, 0, 0, 1);
+  pfglClear(GL_COLOR_BUFFER_BIT);  // pending until something finishes it
+  ASSERT_EQ(pfGetColorBuffer(c.ctx, &w, &h, &format, &p), GL_TRUE);
+  EXPECT_EQ(p, c.pixels.data());
+  EXPECT_EQ(w, 4);
+  EXPECT_EQ(h, 3);
+  EXPECT_EQ(format, GL_RGBA);
+  EXPECT_EQ(c.pixels[0], 255);
+}
+
 TEST(Api, MakeCurrentValidatesArguments) {
   PFcontext c = pfCreateContext(GL_RGBA, 0);
   std::vector<unsigned char> buf(16);

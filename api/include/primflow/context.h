@@ -40,6 +40,11 @@ PFcontext pfGetCurrentContext(void);
 GLboolean pfGetDepthBuffer(PFcontext ctx, GLint *width, GLint *height, GLint *bytesPerValue,
                            void **buffer);
 
+/* The colour buffer, as OSMesaGetColorBuffer: the caller's buffer bound by pfMakeCurrent
+ * (width x height RGBA bytes, format GL_RGBA, row 0 at the bottom). Pending drawing is finished
+ * first. GL_FALSE when the context is not bound to a buffer. */
+GLboolean pfGetColorBuffer(PFcontext ctx, GLint *width, GLint *height, GLint *format, void **buffer);
+
 /* The rasterizer thread count the context uses. */
 GLint pfGetThreadCount(PFcontext ctx);
 
