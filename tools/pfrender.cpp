@@ -2,6 +2,7 @@
 //   pfrender [SCENE.json] [-o OUT.png] [--size WxH] [--threads N] [--stats]
 //   pfrender MODEL.vm|MODEL.hf|MODEL.pfl [-o OUT.png] [--size WxH] [--bbox x0,y0,z0,x1,y1,z1] [--ortho]
 //            [--method M] [--steps N] [--depth-out FILE.pfm] [--threads N] [--time T] [--stats]
+// --depth-out: a model's visible world z; for a scene, its depth buffer (window depth in [0, 1]).
 // A scene file (docs/scenes.md); with no scene, the built-in showcase (tools/showcase.cpp).
 // A model (tools/model/model_file.h, docs/models.md) is drawn as an implicit surface.
 // --size overrides the scene's own image size.
@@ -178,13 +179,15 @@ int run(int argc, char** argv) {
   auto* o_method = app.add_option("--method", method_name, "model: auto, analytic, interval, march or sphere");
   auto* o_steps = app.add_option("--steps", steps, "model: march's steps M, or sphere tracing's Lipschitz bound")
                       ->check(kFinite & CLI::Range(0.0, 1e6));
-  auto* o_depth = app.add_option("--depth-out", depth_out, "model: write the visible surface's world z as a PFM (NaN: none)");
+  app.add_option("--depth-out", depth_out,
+                 "write the depth as a PFM: a model's visible world z (NaN: none); a scene's depth buffer "
+                 "(window depth, 1 where nothing was drawn)");
   auto* o_time = app.add_option("--time", time, "model: HyperFun's time x[4] (Fidget models have none and ignore it)")
                      ->check(kFinite);
   PF_PARSE_COMMAND_LINE(app, argc, argv);
   const bool is_model = !scene_path.empty() && pf::model::isModelPath(scene_path);
   if (!is_model) {
-    for (CLI::Option* o : {o_bbox, o_ortho, o_method, o_steps, o_depth, o_time})
+    for (CLI::Option* o : {o_bbox, o_ortho, o_method, o_steps, o_time})
       if (o->count()) {
         std::cerr << "pfrender: " << o->get_name() << " applies to models (.vm, .hf, .pfl), not to scenes\n";
         return 2;
@@ -282,6 +285,20 @@ int run(int argc, char** argv) {
   if (err != GL_NO_ERROR)
     std::cerr << "pfrender: GL error 0x" << std::hex << err << std::dec << " while drawing: the image is incomplete\n";
   if (stats) printStats(ctx, std::chrono::duration<double, std::milli>(t1 - t0).count());
+  if (!model && !depth_out.empty()) {  // a scene's (or the showcase's) depth buffer as it is
+    GLint dw = 0, dh = 0, bytes = 0;
+    void* data = nullptr;
+    std::string error;
+    if (!pfGetDepthBuffer(ctx, &dw, &dh, &bytes, &data) ||
+        !pf::model::writePfm(depth_out, w, h,
+                             std::vector<float>(static_cast<const float*>(data),
+                                                static_cast<const float*>(data) + size_t(w) * h),
+                             &error)) {
+      std::cerr << "pfrender: " << (error.empty() ? "no depth buffer" : error) << "\n";
+      pfDestroyContext(ctx);
+      return 1;
+    }
+  }
   if (model && !depth_out.empty()) {
     GLint dw = 0, dh = 0, bytes = 0;
     void* data = nullptr;

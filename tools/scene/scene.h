@@ -130,4 +130,11 @@ void compileSceneSources(const Scene& scene);
 // rejects something (unknown primitive, a parameter missing or of the wrong size).
 void drawScene(const Scene& scene, int width, int height, bool compile_sources = true);
 
+// drawScene in pieces, for a renderer that draws only some of the objects (pfrender-mpi):
+// beginScene compiles the sources (unless compile_sources is false), clears, and sets the
+// camera and lights; drawObject draws one object as drawScene would (throws SceneError).
+// drawScene is beginScene, drawObject for each object in order, then glFinish.
+void beginScene(const Scene& scene, int width, int height, bool compile_sources = true);
+void drawObject(const Scene& scene, const Object& object);
+
 }  // namespace pf::scene

@@ -123,7 +123,7 @@ GLenum interpolatorId(const Scene& s, const Material& m, const std::string& name
   return id;
 }
 
-void drawObject(const Scene& s, const Object& o, ParamIds& ids) {
+void drawObjectWith(const Scene& s, const Object& o, ParamIds& ids) {
   const GLenum mode = pfglGetPrimitiveEXT(o.primitive.c_str());
   if (mode == 0) {
     pfglGetError();
@@ -195,7 +195,7 @@ void compileSceneSources(const Scene& s) {
       fail(s, f.origin, "the field '" + f.name + "' does not compile");
 }
 
-void drawScene(const Scene& s, int width, int height, bool compile_sources) {
+void beginScene(const Scene& s, int width, int height, bool compile_sources) {
   pfglGetError();
   if (compile_sources) compileSceneSources(s);
   pfglClearColor(static_cast<GLfloat>(s.background.r), static_cast<GLfloat>(s.background.g),
@@ -205,8 +205,17 @@ void drawScene(const Scene& s, int width, int height, bool compile_sources) {
   pfglEnable(GL_DEPTH_TEST);
   setCamera(s.camera, width, height);
   setLights(s);
+}
+
+void drawObject(const Scene& s, const Object& o) {
   ParamIds ids;
-  for (const Object& o : s.objects) drawObject(s, o, ids);
+  drawObjectWith(s, o, ids);
+}
+
+void drawScene(const Scene& s, int width, int height, bool compile_sources) {
+  beginScene(s, width, height, compile_sources);
+  ParamIds ids;
+  for (const Object& o : s.objects) drawObjectWith(s, o, ids);
   pfglFinish();
 }
 
