@@ -319,6 +319,29 @@ TEST(CompositeMpi, NullCommunicatorIsAnErrorNotACrash) {
   EXPECT_EQ(pfCompositeDepthMPI(MPI_COMM_NULL, nullptr, nullptr), PF_COMPOSITE_MPI_ERROR);
 }
 
+// A rank that never arrives: the others give up at their deadline with PF_COMPOSITE_TIMEOUT
+// instead of waiting for ever. On a communicator of its own (a timed-out one must not be used
+// again), and last: the late rank then calls in too and times out in its turn.
+TEST(CompositeMpi, ARankThatNeverArrivesCostsTheOthersTheTimeout) {
+  if (g_ranks < 2) GTEST_SKIP() << "one rank";
+  MPI_Comm comm;
+  MPI_Comm_dup(MPI_COMM_WORLD, &comm);
+  Frame f(32, 24);
+  drawShare(f, Split::RoundRobin, false);
+  PFcompositeOptions o = options(PF_COMPOSITE_AUTO, 0, PF_COMPOSITE_GATHER, 0);
+  o.timeout_seconds = 0.5;
+  const bool late = g_rank == g_ranks - 1;
+  if (late) std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  const auto t0 = std::chrono::steady_clock::now();
+  const int rc = pfCompositeDepthMPI(comm, &o, nullptr);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_EQ(rc, PF_COMPOSITE_TIMEOUT) << "rank " << g_rank << ": " << pfCompositeErrorString(rc);
+  EXPECT_GE(seconds, 0.45);
+  EXPECT_LT(seconds, 5.0);
+  // (comm is left as it is: it has abandoned requests.)
+  MPI_Barrier(MPI_COMM_WORLD);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
