@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numeric>
 
 namespace pf::cloud {
 
@@ -36,11 +37,26 @@ float baseRadius(const SphereCloud& c) {
   return static_cast<float>(0.1 * std::cbrt(2000.0 / n)) * c.radius_scale;
 }
 
+// Object o's slab of the box along x: a permutation of the objects (a stride coprime to their
+// count), so an object is a thin slab somewhere in the box and consecutive objects are far apart.
+uint64_t slabOf(const SphereCloud& c, uint64_t object) {
+  const uint64_t n = objectCount(c);
+  if (n <= 1) return 0;
+  uint64_t stride = n * 5 / 8 + 1;
+  while (std::gcd(stride, n) != 1) ++stride;
+  return static_cast<uint64_t>((static_cast<unsigned __int128>(object) * stride) % n);
+}
+
 }  // namespace
 
 Sphere sphereAt(const SphereCloud& c, uint64_t i) {
   Sphere s;
-  for (int k = 0; k < 3; ++k) s.center[k] = (unit(c, i, k) - 0.5f) * kBox[k];
+  // x within the slab of the sphere's object, y and z anywhere in the box.
+  const uint64_t objects = objectCount(c);
+  const uint64_t object = i / static_cast<uint64_t>(std::max(c.per_object, 1));
+  const double x = (static_cast<double>(slabOf(c, object)) + unit(c, i, 0)) / static_cast<double>(objects);
+  s.center[0] = static_cast<float>(x - 0.5) * kBox[0];
+  for (int k = 1; k < 3; ++k) s.center[k] = (unit(c, i, k) - 0.5f) * kBox[k];
   s.radius = baseRadius(c) * (0.5f + unit(c, i, 3));
   // Colours from a few hues, so neighbours differ.
   static const float kPalette[6][3] = {{0.9f, 0.3f, 0.2f}, {0.95f, 0.75f, 0.2f}, {0.3f, 0.75f, 0.35f},

@@ -4,6 +4,9 @@
 // fraction of the primitives (Molnar et al. 1992, cited in seed 003 section 1). Sphere i's
 // centre, radius and colour come from a hash of (seed, i), so any rank makes any sphere alone,
 // and writeCloudScene writes the same spheres as a scene file (docs/scenes.md) for pfrender.
+// Each object (per_object consecutive spheres, one glBegin) fills a thin slab of the box along
+// x, the slabs in a scrambled order: so `spatial` splits the screen into strips, `block` and
+// `round-robin` give every rank spheres all over it.
 #pragma once
 
 #include <cstddef>
