@@ -235,6 +235,11 @@ def field_table(name, with_simd=False):
     return table(header + (["SIMD"] if with_simd else []), body)
 
 
+# "Compositing over MPI": bench/composite_report.py (bench/run_composite's CSV and the model).
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import composite_report  # noqa: E402
+
+
 TABLES = {
     "llvmpipe": table_llvmpipe,
     "lists": table_lists,
@@ -249,6 +254,10 @@ TABLES = {
     "csg": lambda: field_table("results_csg.csv"),
     "seed000": lambda: field_table("results_seed000.csv", True),
     "simd": lambda: field_table("results_simd.csv", True),
+    "composite": lambda: composite_report.table_composite(rows("results_composite.csv"), table, fmt),
+    "composite_costs": lambda: composite_report.table_composite_costs(rows("results_composite.csv"), table, fmt),
+    "composite_model": lambda: composite_report.table_composite_model(rows("results_composite.csv"), table, fmt),
+    "composite_summary": lambda: composite_report.model_summary(rows("results_composite.csv")),
 }
 
 
