@@ -34,7 +34,7 @@ int fromOutcome(Outcome o) {
 }
 
 // An MPI_MAX all-reduce of `n` ints under the deadline. The buffers are heap-allocated and,
-// if the deadline passes, leaked: MPI may still write into them.
+// if the deadline passes, kept for good (keepAbandoned): MPI may still write into them.
 WaitResult agree(MPI_Comm comm, const int* mine, int* out, int n, const Deadline& deadline) {
   int* buffers = new int[2 * static_cast<size_t>(n)];
   for (int i = 0; i < n; ++i) buffers[i] = mine[i];
@@ -45,7 +45,10 @@ WaitResult agree(MPI_Comm comm, const int* mine, int* out, int n, const Deadline
   }
   std::vector<MPI_Status> statuses;
   const WaitResult r = waitAll(request, statuses, deadline);
-  if (r == WaitResult::TimedOut) return r;  // buffers leaked on purpose
+  if (r == WaitResult::TimedOut) {
+    keepAbandoned(buffers);  // MPI may still write into them
+    return r;
+  }
   for (int i = 0; i < n; ++i) out[i] = buffers[n + i];
   delete[] buffers;
   return r;
@@ -211,7 +214,7 @@ int pfCompositeDepthMPI(MPI_Comm comm, const PFcompositeOptions* options, PFcomp
                                                          : band_of(rank);
   st.first_row = mine_band.first_row;
   st.row_count = mine_band.row_count;
-  delete transport;  // after a timeout it leaks its scratch, which MPI may still write into
+  delete transport;  // after a timeout it keeps its scratch, which MPI may still write into
   if (outcome != Outcome::Timeout) MPI_Comm_free(&work);  // (after one, leaked with its requests)
   st.seconds = MPI_Wtime() - t0;
   return local;

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <climits>
 #include <cstring>
+#include <mutex>
 #include <new>
 #include <thread>
 
@@ -23,6 +24,13 @@ int tag(int phase, int kind) { return phase * kTagsPerPhase + kind; }
 bool fitsInt(size_t n) { return n <= static_cast<size_t>(INT_MAX); }
 
 }  // namespace
+
+void keepAbandoned(void* memory) {
+  static std::mutex mutex;
+  static std::vector<void*>* kept = new std::vector<void*>;  // never destroyed: outlives every request
+  std::lock_guard<std::mutex> lock(mutex);
+  kept->push_back(memory);
+}
 
 Deadline::Deadline(double timeout_seconds) {
   if (timeout_seconds > 0) {
@@ -55,7 +63,8 @@ Transport::Transport(MPI_Comm comm, bool compress, const Deadline& deadline)
 
 Transport::~Transport() {
   if (abandoned_) {
-    // MPI may still write into the arena: leak it (the communicator is unusable anyway).
+    // MPI may still write into the arena: keep it (the communicator is unusable anyway).
+    keepAbandoned(arena_);
     // Receives into the caller's buffers are cancelled so that MPI lets go of them.
     for (size_t i : into_user_)
       if (requests_[i] != MPI_REQUEST_NULL) {

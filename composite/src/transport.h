@@ -18,6 +18,10 @@ namespace pf::composite {
 
 enum class WaitResult { Done, TimedOut, Failed };
 
+// Memory MPI may still write into after a timeout: kept for the life of the process, reachable
+// (so leak checkers do not report it), never freed.
+void keepAbandoned(void* memory);
+
 // A deadline: none when timeout_seconds <= 0.
 class Deadline {
  public:
@@ -37,7 +41,7 @@ WaitResult waitAll(std::vector<MPI_Request>& requests, std::vector<MPI_Status>& 
 // sent from the caller's buffers without a copy) or, compressed, as one message of the run-length
 // code (pixel_merge.h). Tags: phase * 4 + 0 (colours), + 1 (depths), + 2 (code). Scratch comes
 // from one arena reserved before any pixel moves (reserve), so running out of memory is found
-// while every rank can still be told; after a timeout the arena is leaked, never freed under a
+// while every rank can still be told; after a timeout the arena is kept, never freed under a
 // pending receive.
 class Transport {
  public:
