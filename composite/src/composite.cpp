@@ -124,7 +124,9 @@ int pfCompositeDepthMPI(MPI_Comm comm, const PFcompositeOptions* options, PFcomp
 
   Frame frame{nullptr, nullptr, 0, 0};
   int local = checkLocal(o, ranks, frame);
-  const Deadline deadline(local == PF_COMPOSITE_OK ? o.timeout_seconds : 0.0);
+  // (A rank whose options are bad still keeps a valid timeout while it tells the others.)
+  const bool timeout_ok = o.timeout_seconds >= 0 && std::isfinite(o.timeout_seconds);
+  const Deadline deadline(timeout_ok ? o.timeout_seconds : 0.0);
   const int algorithm = o.algorithm != PF_COMPOSITE_AUTO ? o.algorithm
                         : isPowerOfTwo(ranks)          ? PF_COMPOSITE_BINARY_SWAP
                                                        : PF_COMPOSITE_DIRECT_SEND;
