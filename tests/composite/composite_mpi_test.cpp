@@ -15,7 +15,6 @@
 #include <cstring>
 #include <functional>
 #include <string>
-#include <thread>
 #include <vector>
 
 namespace {
@@ -279,7 +278,7 @@ void expectAllFail(const std::function<void(Frame&, PFcompositeOptions&)>& setup
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   EXPECT_EQ(rc, culprit < 0 || g_rank == culprit ? culprit_code : others_code)
       << "rank " << g_rank << ": " << pfCompositeErrorString(rc);
-  EXPECT_LT(seconds, 5.0) << "an error must not wait for the timeout";
+  EXPECT_LT(seconds, 15.0) << "an error must not wait for the timeout (20 s)";
   f.bind();  // rebind for the next test
 }
 
@@ -330,14 +329,16 @@ TEST(CompositeMpi, ARankThatNeverArrivesCostsTheOthersTheTimeout) {
   drawShare(f, Split::RoundRobin, false);
   PFcompositeOptions o = options(PF_COMPOSITE_AUTO, 0, PF_COMPOSITE_GATHER, 0);
   o.timeout_seconds = 0.5;
+  // The last rank comes only once the others have given up (the barrier on MPI_COMM_WORLD).
   const bool late = g_rank == g_ranks - 1;
-  if (late) std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  if (late) MPI_Barrier(MPI_COMM_WORLD);
   const auto t0 = std::chrono::steady_clock::now();
   const int rc = pfCompositeDepthMPI(comm, &o, nullptr);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (!late) MPI_Barrier(MPI_COMM_WORLD);
   EXPECT_EQ(rc, PF_COMPOSITE_TIMEOUT) << "rank " << g_rank << ": " << pfCompositeErrorString(rc);
   EXPECT_GE(seconds, 0.45);
-  EXPECT_LT(seconds, 5.0);
+  EXPECT_LT(seconds, 20.0);
   // (comm is left as it is: it has abandoned requests.)
   MPI_Barrier(MPI_COMM_WORLD);
 }
