@@ -70,8 +70,19 @@ def measured_costs(rows):
         best = max(draws, key=lambda r: int(r["spheres"]))
         per_sphere = float(best["draw_ms"]) * 1e-3 / int(best["spheres"])
         threads = int(best.get("threads", 0) or 0)
+    # Memory a sphere holds until glFinish: the peak of the big one-rank draw over the small one's
+    # at the same image size.
+    bytes_per_sphere = None
+    if draws and "max_rss_kb" in draws[0]:
+        big = max(draws, key=lambda r: int(r["spheres"]))
+        small = [r for r in rows if int(r["ranks"]) == 1 and int(r["spheres"]) < int(big["spheres"])
+                 and r["width"] == big["width"] and r["height"] == big["height"]]
+        if small:
+            s = min(small, key=lambda r: int(r["spheres"]))
+            bytes_per_sphere = ((float(big["max_rss_kb"]) - float(s["max_rss_kb"])) * 1024
+                                / (int(big["spheres"]) - int(s["spheres"])))
     return {"merge_s_per_pixel": per_pixel(raw), "coded_s_per_pixel": per_pixel(packed), "s_per_byte": per_byte,
-            "draw_s_per_sphere": per_sphere, "draw_threads": threads}
+            "draw_s_per_sphere": per_sphere, "draw_threads": threads, "bytes_per_sphere": bytes_per_sphere}
 
 
 def table_composite_costs(rows, table, fmt):
@@ -82,6 +93,9 @@ def table_composite_costs(rows, table, fmt):
         ["merging with the run-length code, ns per pixel (encode + merge-from-code)", ns(c["coded_s_per_pixel"])],
         ["moving a byte between ranks (shared memory, busiest rank, 1920x1080 and up), ns", ns(c["s_per_byte"])],
         [f"drawing one sphere impostor at 3840x2160 ({c['draw_threads'] or '?'} threads), ns", ns(c["draw_s_per_sphere"])],
+        ["memory a sphere holds until glFinish, bytes (so 100M spheres: GB)",
+         f"{c['bytes_per_sphere']:.0f} ({c['bytes_per_sphere'] * MODEL_SPHERES / 1e9:.1f} GB)"
+         if c["bytes_per_sphere"] is not None else "--"],
     ])
 
 

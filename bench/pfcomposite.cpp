@@ -6,9 +6,12 @@
 //   mpirun -np P pfcomposite [--sizes 512x512,1920x1080] [--spheres N] [--split round-robin|spatial]
 //                            [--repeats R] [--threads T] [--csv FILE]
 // Rank 0 appends one CSV row per run: the slowest rank's time, the largest and mean bytes sent,
-// the merge time and pixels merged (per-pixel cost), and the slowest rank's draw time (the
-// per-sphere cost the model in bench/composite_report.py scales up).
+// the merge time and pixels merged (per-pixel cost), the slowest rank's draw time (the
+// per-sphere cost the model in bench/composite_report.py scales up) and the largest peak
+// resident memory (what a sphere costs to hold until glFinish).
 #include <CLI/CLI.hpp>
+
+#include <sys/resource.h>
 
 #include <primflow/composite.h>
 #include <primflow/gl.h>
@@ -102,6 +105,9 @@ int main(int argc, char** argv) {
     for (uint64_t o : mine) pf::cloud::drawCloudObject(cloud, o);
     pfglFinish();
     const double draw_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);  // the peak so far: the frame's instances are held until glFinish
+    const double max_rss_kb = static_cast<double>(usage.ru_maxrss);
     GLint w, h, f;
     void *color = nullptr, *depth = nullptr;
     pfGetColorBuffer(ctx, &w, &h, &f, &color);
@@ -130,10 +136,10 @@ int main(int argc, char** argv) {
             break;
           }
           // Slowest rank's times; largest and mean bytes.
-          double mine_v[4] = {st.seconds, st.merge_seconds, static_cast<double>(st.bytes_sent), draw_ms};
-          double max_v[4], sum_v[4];
-          MPI_Reduce(mine_v, max_v, 4, MPI_DOUBLE, MPI_MAX, 0, MPI_COMM_WORLD);
-          MPI_Reduce(mine_v, sum_v, 4, MPI_DOUBLE, MPI_SUM, 0, MPI_COMM_WORLD);
+          double mine_v[5] = {st.seconds, st.merge_seconds, static_cast<double>(st.bytes_sent), draw_ms, max_rss_kb};
+          double max_v[5], sum_v[5];
+          MPI_Reduce(mine_v, max_v, 5, MPI_DOUBLE, MPI_MAX, 0, MPI_COMM_WORLD);
+          MPI_Reduce(mine_v, sum_v, 5, MPI_DOUBLE, MPI_SUM, 0, MPI_COMM_WORLD);
           double merged = static_cast<double>(st.pixels_merged), merged_sum = 0;
           MPI_Reduce(&merged, &merged_sum, 1, MPI_DOUBLE, MPI_SUM, 0, MPI_COMM_WORLD);
           if (rank == 0) {
@@ -141,10 +147,10 @@ int main(int argc, char** argv) {
             std::printf("%d ranks %dx%d %-11s %-12s %-12s %8.2f ms  %10.0f bytes sent (max)\n", ranks, s.w, s.h,
                         split_name.c_str(), name, compress ? "compressed" : "raw", max_v[0] * 1e3, max_v[2]);
             if (out)
-              std::fprintf(out, "%d,%d,%d,%s,%s,%d,%d,%.6f,%.6f,%.6f,%.0f,%.0f,%.0f,%.3f,%llu,%d\n", ranks, s.w, s.h,
-                           split_name.c_str(), name, compress, rep, max_v[0], max_v[1], sum_v[1], max_v[2],
+              std::fprintf(out, "%d,%d,%d,%s,%s,%d,%d,%.6f,%.6f,%.6f,%.0f,%.0f,%.0f,%.3f,%llu,%d,%.0f\n", ranks, s.w,
+                           s.h, split_name.c_str(), name, compress, rep, max_v[0], max_v[1], sum_v[1], max_v[2],
                            sum_v[2] / ranks, merged_sum, max_v[3], static_cast<unsigned long long>(spheres),
-                           pfGetThreadCount(ctx));
+                           pfGetThreadCount(ctx), max_v[4]);
           }
         }
   }
