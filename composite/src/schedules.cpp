@@ -28,7 +28,7 @@ ConstPixelSpan constant(PixelSpan s) { return {s.color, s.depth, s.count}; }
 
 // --- binary-swap ---------------------------------------------------------------------------------
 
-BinarySwap::BinarySwap(int ranks, int height) : ranks_(ranks), height_(height) {
+BinarySwap::BinarySwap(int ranks, int height) : height_(height) {
   while ((2 << rounds_) <= ranks) ++rounds_;
   extra_ = ranks - (1 << rounds_);
 }

@@ -47,7 +47,7 @@ class BinarySwap {
  private:
   int activeIndex(int rank) const;  // -1: folded away
   int rankOfActive(int v) const;
-  int ranks_, height_, rounds_ = 0, extra_ = 0;
+  int height_, rounds_ = 0, extra_ = 0;
 };
 
 // Direct-send: band j is rows [j*H/p, (j+1)*H/p); every rank sends band j to rank j in one round,
