@@ -176,7 +176,7 @@ int run(int argc, char** argv) {
   app.add_flag("--stats", stats, "print the renderer's work counters");
   auto* o_bbox = app.add_option("--bbox", bbox, "model: box x0,y0,z0,x1,y1,z1 (default [-1,1]^3 for .vm, [-10,10]^3 for .hf, [-2,2]^3 for .pfl)");
   auto* o_ortho = app.add_flag("--ortho", ortho, "model: look down -z from above the box, the image covering its x and y");
-  auto* o_method = app.add_option("--method", method_name, "model: auto, analytic, interval, march or sphere");
+  auto* o_method = app.add_option("--method", method_name, "model: auto, analytic, interval, march, sphere, newton or regula-falsi");
   auto* o_steps = app.add_option("--steps", steps, "model: march's steps M, or sphere tracing's Lipschitz bound")
                       ->check(kFinite & CLI::Range(0.0, 1e6));
   app.add_option("--depth-out", depth_out,
@@ -206,7 +206,7 @@ int run(int argc, char** argv) {
     }
     auto method = pf::field::parseRootMethod(method_name);
     if (!method) {
-      std::cerr << "pfrender: --method must be auto, analytic, interval, march or sphere, not '" << method_name << "'\n";
+      std::cerr << "pfrender: --method must be auto, analytic, interval, march, sphere, newton or regula-falsi, not '" << method_name << "'\n";
       return 2;
     }
     view.method = static_cast<int>(*method);
