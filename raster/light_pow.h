@@ -8,11 +8,20 @@
 // plain IEEE double arithmetic with selects, no calls and no branches, so the same inline
 // definition vectorizes in LightingEquation::shadeRun and runs scalar in shade() (per vertex,
 // per point), and the two agree to the bit, on every machine (no contraction: CMakeLists'
-// -ffp-contract=off). It is exp(y ln x) in double: ln x from the float's exponent and an atanh
-// series for the mantissa, exp from Cody and Waite's reduction and a Taylor polynomial; their
-// relative error (~1e-14) is far below a float's half ulp, so the float result is the correctly
-// rounded power except within ~1e-7 ulp of a rounding tie (tests/unit/light_pow_test.cpp checks
-// it against double std::pow).
+// -ffp-contract=off).
+//
+// Two ways, chosen by the exponent, each far more exact than a float:
+// - a whole exponent e (shininess is almost always one: 10, 32, 64, 128): x^e by binary
+//   powering in double (lightPowWhole), at most 7 squarings and 8 products, each rounding by at
+//   most 2^-53, so the relative error stays below 128 * 2^-53 ~ 1.4e-14 -- a few times cheaper
+//   than a logarithm and an exponential, and the shading pass runs it with the exponent uniform
+//   over a run (wholePowers);
+// - any other: exp(y ln x) in double (lightPowExpLog), ln x from the float's exponent and an
+//   atanh series for the mantissa, exp from Cody and Waite's reduction and a Taylor polynomial;
+//   their relative error is ~1e-14.
+// Either is far below a float's half ulp, so the float result is the correctly rounded power
+// except within ~2e-7 ulp of a rounding tie (tests/unit/light_pow_test.cpp checks it against
+// double std::pow).
 #pragma once
 
 #include <bit>
@@ -32,10 +41,47 @@ inline double horner(double x, const double (&c)[N]) {
 }
 }  // namespace detail
 
-// x^y for x >= 0 (or NaN) and finite y, as C's powf gives it there: x^0 = 1 and 1^y = 1, 0^y = 0
-// for y > 0 and +inf for y < 0, +inf^y = +inf for y > 0 and 0 for y < 0, NaN in, NaN out. A
-// negative x, outside the lighting equation's domain, gives NaN.
-inline float lightPow(float x, float y) {
+// The largest whole exponent lightPowWhole takes: GL's largest shininess and spot exponent.
+constexpr int kLightPowMaxWhole = 128;
+
+// Whether lightPow takes exponent y as a whole number (lightPowWhole): y in [0, 128] with no
+// fraction. NaN is not.
+inline bool lightPowIsWhole(float y) {
+  const bool in_range = y >= 0.0f && y <= static_cast<float>(kLightPowMaxWhole);
+  const int e = in_range ? static_cast<int>(y) : 0;
+  return in_range && static_cast<float>(e) == y;
+}
+
+// The double x^e of lightPowWhole before its edges, e in [0, 128]: the powers x^(2^k) of the
+// bits of e multiplied in from the lowest bit up (a loop of constant trip count: unrolled, and
+// the same operations in the same order wherever it is inlined; wholePowers runs the same
+// products).
+inline double wholePower(double x, int e) {
+  double power = 1.0, square = x;
+  for (int bit = 0; bit < 8; ++bit) {
+    power = (e >> bit) & 1 ? power * square : power;
+    square = square * square;
+  }
+  return power;
+}
+
+// lightPow's edges for a whole exponent, as C's powf has them: x^0 = 1, a negative x (outside
+// the lighting equation's domain) NaN.
+inline float wholePowerEdges(float x, int e, double power) {
+  float out = static_cast<float>(power);
+  out = x < 0.0f ? __builtin_nanf("") : out;
+  out = e == 0 ? 1.0f : out;
+  return out;
+}
+
+// x^e for a whole e in [0, 128] (lightPowIsWhole), x >= 0 or NaN: 0^e = 0 for e > 0, inf^e = inf,
+// NaN^e = NaN for e > 0; overflow gives inf and underflow 0, as powf.
+inline float lightPowWhole(float x, int e) { return wholePowerEdges(x, e, wholePower(x, e)); }
+
+// x^y through exp(y ln x) for x >= 0 (or NaN) and finite y, as C's powf gives it there: x^0 = 1
+// and 1^y = 1, 0^y = 0 for y > 0 and +inf for y < 0, +inf^y = +inf for y > 0 and 0 for y < 0,
+// NaN in, NaN out. A negative x, outside the lighting equation's domain, gives NaN.
+inline float lightPowExpLog(float x, float y) {
   // ln x = e ln 2 + ln m, with x = m 2^e and m in [sqrt(1/2), sqrt(2)). A subnormal x is scaled
   // by 2^24 first (exactly) to give its mantissa the leading bit.
   const bool subnormal = x < 0x1p-126f;
@@ -87,6 +133,35 @@ inline float lightPow(float x, float y) {
   out = x != x || y != y ? x + y : out;  // NaN
   out = y == 0.0f || x == 1.0f ? 1.0f : out;
   return out;
+}
+
+// x^y as the lighting equation needs it (the domain and edges of lightPowExpLog): by
+// lightPowWhole where y is whole, by lightPowExpLog elsewhere. Both are computed and one chosen
+// (no branch), so a loop of it vectorizes.
+inline float lightPow(float x, float y) {
+  const bool whole = lightPowIsWhole(y);
+  const float by_whole = lightPowWhole(x, whole ? static_cast<int>(y) : 0);
+  const float by_exp_log = lightPowExpLog(x, y);
+  return whole ? by_whole : by_exp_log;
+}
+
+// out[i] = lightPowWhole(x[i], e) for i < n: the exponent uniform, so each bit of it is a
+// product over the whole run or none -- the same products, in the same order, as wholePower's
+// selects make lane by lane, so the same bits, at the cost of only the bits e has.
+template <int kMax>
+inline void wholePowers(const float* x, int e, int n, float* out) {
+  alignas(64) double power[kMax], square[kMax];
+  for (int i = 0; i < n; ++i) {
+    power[i] = 1.0;
+    square[i] = x[i];
+  }
+  for (int bit = 0; bit < 8 && (e >> bit) != 0; ++bit) {
+    if ((e >> bit) & 1)
+      for (int i = 0; i < n; ++i) power[i] = power[i] * square[i];
+    if ((e >> (bit + 1)) != 0)
+      for (int i = 0; i < n; ++i) square[i] = square[i] * square[i];
+  }
+  for (int i = 0; i < n; ++i) out[i] = wholePowerEdges(x[i], e, power[i]);
 }
 
 }  // namespace pf

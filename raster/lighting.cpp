@@ -197,14 +197,23 @@ PF_SIMD_CLONES void LightingEquation::shadeRun(const LitPoints& in, float* const
     }
     // (Every lane's value computed, then chosen, here and below: an operation in one arm of a
     // select is one the compiler may not run for every lane, and the loop would not vectorize.)
-    int shiny = 0;
-    for (int i = 0; i < n; ++i) shiny |= in.shininess[i] != 0.0f ? 1 : 0;
-    if (shiny)
-      for (int i = 0; i < n; ++i) {
-        const float power = lightPow(spec[i], in.shininess[i]);
-        spec[i] = in.shininess[i] == 0.0f ? 1.0f : n_dot_vp[i] > 0.0f ? power : 0.0f;
-      }
-    else
+    int shiny = 0, varies = 0;
+    const float shininess = in.shininess[0];
+    for (int i = 0; i < n; ++i) {
+      shiny |= in.shininess[i] != 0.0f ? 1 : 0;
+      varies |= in.shininess[i] != shininess ? 1 : 0;
+    }
+    if (shiny) {
+      // One whole exponent over the run (a material's shininess, as a rule): its powers by
+      // wholePowers, the bits lightPow would give each lane.
+      alignas(64) float power[LitPoints::kMax];
+      if (!varies && lightPowIsWhole(shininess))
+        wholePowers<LitPoints::kMax>(spec, static_cast<int>(shininess), n, power);
+      else
+        for (int i = 0; i < n; ++i) power[i] = lightPow(spec[i], in.shininess[i]);
+      for (int i = 0; i < n; ++i)
+        spec[i] = in.shininess[i] == 0.0f ? 1.0f : n_dot_vp[i] > 0.0f ? power[i] : 0.0f;
+    } else
       for (int i = 0; i < n; ++i) spec[i] = 1.0f;
     for (int k = 0; k < 3; ++k) {
       const float ls = l.specular[k];

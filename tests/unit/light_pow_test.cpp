@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
 
@@ -78,4 +79,62 @@ TEST(LightPow, EdgesAsCPowHasThem) {
   EXPECT_TRUE(std::isnan(lightPow(nan, 1.0f)));
   EXPECT_TRUE(std::isnan(lightPow(0.5f, nan)));
   EXPECT_TRUE(std::isnan(lightPow(-0.5f, 2.0f))) << "a negative base is outside the domain";
+}
+
+TEST(LightPow, WholeExponentsByBinaryPoweringMatchDoublePrecisionPow) {
+  // Every whole exponent GL allows, over random bases and the edges of the domain: within one
+  // ulp of the double-precision power (exactly it but for rounding ties) and C's edges.
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<float> base(0.0f, 1.0f);
+  int inexact = 0, total = 0;
+  for (int e = 0; e <= pf::kLightPowMaxWhole; ++e) {
+    ASSERT_TRUE(pf::lightPowIsWhole(static_cast<float>(e)));
+    for (int i = 0; i < 4000; ++i) {
+      const float x = i < 3000 ? base(rng) : 1.0f - base(rng) * 0x1p-12f;  // and near 1
+      const float got = lightPow(x, static_cast<float>(e)), want = reference(x, static_cast<float>(e));
+      ASSERT_EQ(got, pf::lightPowWhole(x, e));
+      const double err = ulps(got, want);
+      ASSERT_LE(err, 1.0) << std::hexfloat << x << "^" << e << " = " << got << ", reference " << want;
+      inexact += err != 0 ? 1 : 0;
+      ++total;
+    }
+    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    for (float x : {0.0f, 1.0f, 1e-30f, 1e-45f, 1.5f, 3.0f, inf}) {
+      const float want = std::pow(x, static_cast<float>(e));
+      if (std::isinf(want) || want == 0.0f || e == 0 || x == 1.0f)
+        EXPECT_EQ(lightPow(x, static_cast<float>(e)), want) << x << "^" << e;
+      else
+        EXPECT_LE(ulps(lightPow(x, static_cast<float>(e)), reference(x, static_cast<float>(e))), 1.0) << x << "^" << e;
+    }
+    EXPECT_EQ(lightPow(nan, static_cast<float>(e)) == 1.0f, e == 0);
+    EXPECT_EQ(std::isnan(lightPow(-0.5f, static_cast<float>(e))), e != 0);
+  }
+  EXPECT_LE(inexact, total / 100000);
+  // Not whole: a fraction, NaN, outside [0, 128].
+  for (float y : {0.5f, 31.999998f, 128.5f, -1.0f, 129.0f, std::numeric_limits<float>::quiet_NaN()})
+    EXPECT_FALSE(pf::lightPowIsWhole(y)) << y;
+}
+
+TEST(LightPow, WholePowersOverARunAreLightPowLaneByLane) {
+  // The shading pass's uniform-exponent loop against lightPow point by point, to the bit.
+  constexpr int kRun = 64;
+  std::mt19937 rng(29);
+  std::uniform_real_distribution<float> base(0.0f, 1.0f);
+  float x[kRun], out[kRun];
+  for (int e = 0; e <= pf::kLightPowMaxWhole; ++e) {
+    for (int i = 0; i < kRun; ++i) x[i] = base(rng);
+    x[0] = 0.0f;
+    x[1] = 1.0f;
+    x[2] = std::numeric_limits<float>::quiet_NaN();
+    x[3] = 2.5f;  // overflows for large e
+    x[4] = 1e-40f;
+    for (int n : {kRun, 17, 1}) {
+      pf::wholePowers<kRun>(x, e, n, out);
+      for (int i = 0; i < n; ++i) {
+        const float want = lightPow(x[i], static_cast<float>(e));
+        ASSERT_TRUE(std::memcmp(&out[i], &want, sizeof want) == 0 || (std::isnan(out[i]) && std::isnan(want)))
+            << std::hexfloat << x[i] << "^" << e << ": " << out[i] << " vs " << want;
+      }
+    }
+  }
 }
