@@ -95,8 +95,14 @@ RegionVerdict PixelExecutor::blockVerdict(const PixelProgram& program, const uin
       bounds[2][i] = y + 0.5;
       bounds[3][i] = y + kBlockSize - 0.5;
     }
+    BlockWalkTally& tally = blockWalkTally(program);
+    if (tally.walks >= kProbeWalks && 2 * tally.decided < tally.walks * kBlocksPerRegion) return RegionVerdict::Unknown;
     if (!native_.verdicts(program, record, state, kNativeVerdictLanes, &bounds[0][0], v.blocks))
       return RegionVerdict::Unknown;
+    ++tally.walks;
+    ++counters.region_walks;
+    for (uint8_t b : v.blocks)
+      tally.decided += b == static_cast<uint8_t>(RegionVerdict::Rejected) || b == static_cast<uint8_t>(RegionVerdict::Accepted);
     v.blocks_known = true;
   }
   const uint8_t b = v.blocks[(by - v.y) / kBlockSize * kPerRow + (bx - v.x) / kBlockSize];
@@ -106,7 +112,19 @@ RegionVerdict PixelExecutor::blockVerdict(const PixelProgram& program, const uin
   return static_cast<RegionVerdict>(b);
 }
 
+PixelExecutor::BlockWalkTally& PixelExecutor::blockWalkTally(const PixelProgram& program) {
+  for (size_t i = 0; i < block_walk_tallies_live_; ++i) {
+    BlockWalkTally& t = block_walk_tallies_[i];
+    if (t.program == &program && t.code == program.code.data()) return t;
+  }
+  if (block_walk_tallies_live_ == block_walk_tallies_.size()) block_walk_tallies_.emplace_back();
+  BlockWalkTally& t = block_walk_tallies_[block_walk_tallies_live_++];
+  t = BlockWalkTally{&program, program.code.data(), 0, 0};
+  return t;
+}
+
 void PixelExecutor::startFrame() {
+  block_walk_tallies_live_ = 0;
   for (RegionMemo& m : region_memos_) m.program = nullptr;  // a program may be freed, its address reused
   decoded_live_ = 0;
   decoded_last_[0] = decoded_last_[1] = 0;

@@ -57,6 +57,7 @@ struct BlockCounters {
   // rejected or accepted by their own verdict where their region's was undecided (native
   // code's walk over a region's blocks; in blocks_rejected or blocks_accepted)
   uint64_t blocks_walked = 0;
+  uint64_t region_walks = 0;     // native code's walks over an undecided region's blocks
   uint64_t blocks_packed = 0;    // run on packed lanes (in blocks_run)
   uint64_t blocks_ganged = 0;    // packed blocks holding lanes of several instances (in blocks_packed)
   uint64_t lanes_started = 0;
@@ -145,6 +146,9 @@ class PixelExecutor {
   // PF_NO_BLOCK_REJECTION in the environment turns it off for the executors made afterwards.
   bool use_block_rejection = blockRejectionWanted();
   static bool blockRejectionWanted();
+  // How many walks over an undecided region's blocks a program makes in a frame (on one
+  // thread) before its tally decides whether more pay (BlockWalkTally, below).
+  static constexpr uint32_t kProbeWalks = 32;
   // Run pixel programs as native code where it can (raster/native_blocks.h), else the
   // interpreter; on unless the environment says PF_JIT=0. Images are identical either way.
   bool use_native = nativeWanted();
@@ -233,6 +237,22 @@ class PixelExecutor {
   // per block on the interpreter costs more than the blocks it saves: docs/performance.md).
   RegionVerdict blockVerdict(const PixelProgram& program, const uint32_t* record, const RasterState& state, int bx,
                              int by);
+  // Whether walking a region's blocks pays for a program, learnt in each frame: the walk costs
+  // about what running a few blocks does, so it pays only where it decides most of the 16 --
+  // triangles, tori, quadrics decide about three in four; a sphere's silhouette one in four
+  // or five, and spheres drew faster without the walks (docs/performance.md). A program's first
+  // kProbeWalks walks of the frame (on this thread) are made; after them, a region's blocks are
+  // walked only while the walks so far decided at least half of their blocks. Which blocks run
+  // changes, never the image (the blocks not decided run the full program).
+  struct BlockWalkTally {
+    const PixelProgram* program = nullptr;
+    const Instr* code = nullptr;
+    uint32_t walks = 0;    // walks over a region's blocks this frame
+    uint32_t decided = 0;  // the blocks they rejected or accepted
+  };
+  std::vector<BlockWalkTally> block_walk_tallies_;
+  size_t block_walk_tallies_live_ = 0;
+  BlockWalkTally& blockWalkTally(const PixelProgram& program);
   float field_box_[6] = {0, 0, 0, 0, 0, 0};
   std::unordered_map<const field::ImplicitField*, std::unique_ptr<field::GradientEvaluator>> gradients_;
   // The gradient of a short tape (HitTapes): one evaluator per executor -- so per rasterizer

@@ -682,6 +682,7 @@ void Renderer::flush() {
     stats_.blocks_covered += s->executor.counters.blocks_covered;
     stats_.blocks_accepted += s->executor.counters.blocks_accepted;
     stats_.blocks_walked += s->executor.counters.blocks_walked;
+    stats_.region_walks += s->executor.counters.region_walks;
     stats_.blocks_packed += s->executor.counters.blocks_packed;
     stats_.blocks_native += s->executor.counters.blocks_native;
     stats_.blocks_ganged += s->executor.counters.blocks_ganged;

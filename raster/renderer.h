@@ -38,6 +38,8 @@ struct FrameStats {
   uint64_t blocks_accepted = 0;       // blocks run without coverage tests (PixelProgram::covered)
   uint64_t blocks_walked = 0;         // blocks rejected or accepted by their own verdict, their
                                       // region's undecided (native code: PixelExecutor::blockVerdict)
+  uint64_t region_walks = 0;          // native code's walks over an undecided region's 16 blocks
+                                      // (PixelExecutor::BlockWalkTally: only where they pay)
   uint64_t blocks_native = 0;         // blocks run by native code (compiler/native/), not the interpreter
   uint64_t blocks_packed = 0;         // blocks run on packed lanes (a small bound's pixels)
   uint64_t blocks_ganged = 0;         // packed blocks holding several instances' pixels (raster/gang_block.h)

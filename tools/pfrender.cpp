@@ -17,6 +17,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <algorithm>
 #include <filesystem>
 #include <optional>
 #include <iostream>
@@ -34,10 +35,17 @@
 
 namespace {
 
-void printStats(PFcontext ctx, double ms) {
+// `ms`: the frame's time (with --frames N > 1, the median of the frames after the first, and
+// `first_ms` the first's: it compiles what the frame draws natively); the counters are the last
+// frame's.
+void printStats(PFcontext ctx, double ms, int frames, double first_ms) {
   const pf::FrameStats& s = ctx->renderer.stats();
   std::printf("threads            %d\n", pfGetThreadCount(ctx));
-  std::printf("frame time         %.2f ms\n", ms);
+  if (frames > 1)
+    std::printf("frame time         %.2f ms (median of %d frames after the first, which took %.2f ms)\n", ms,
+                frames - 1, first_ms);
+  else
+    std::printf("frame time         %.2f ms\n", ms);
   std::printf("instances          %llu submitted, %llu killed in setup\n",
               static_cast<unsigned long long>(s.instances_submitted), static_cast<unsigned long long>(s.instances_killed));
   std::printf("bin entries        %llu\n", static_cast<unsigned long long>(s.bin_entries));
@@ -54,8 +62,8 @@ void printStats(PFcontext ctx, double ms) {
               static_cast<unsigned long long>(s.blocks_accepted),
               s.blocks_run ? 100.0 * s.blocks_accepted / double(s.blocks_run) : 0.0);
   std::printf("blocks walked      %llu (rejected or accepted by a verdict of their own, their 32x32 region's "
-              "undecided)\n",
-              static_cast<unsigned long long>(s.blocks_walked));
+              "undecided: %llu walks over such a region's blocks)\n",
+              static_cast<unsigned long long>(s.blocks_walked), static_cast<unsigned long long>(s.region_walks));
   std::printf("blocks packed      %llu (a small bound's pixels packed into whole blocks: %.1f%% of the blocks run)\n",
               static_cast<unsigned long long>(s.blocks_packed),
               s.blocks_run ? 100.0 * s.blocks_packed / double(s.blocks_run) : 0.0);
@@ -164,7 +172,7 @@ int run(int argc, char** argv) {
   std::string scene_path;
   std::string out;
   std::string size;
-  int threads = 0;
+  int threads = 0, frames = 1;
   bool stats = false;
   std::string bbox, method_name = "auto", depth_out;
   bool ortho = false;
@@ -174,6 +182,10 @@ int run(int argc, char** argv) {
   app.add_option("--size", size, "image size WxH (each 1..8192; default: the scene's, or 960x640)");
   app.add_option("--threads", threads, "rasterizer threads (0: PF_NUM_THREADS or all cores)")->check(CLI::Range(0, 256));
   app.add_flag("--stats", stats, "print the renderer's work counters");
+  app.add_option("--frames", frames,
+                 "draw the picture this many times (--stats: the frame time is the median of the frames after the "
+                 "first, the counters the last frame's)")
+      ->check(CLI::Range(1, 10000));
   auto* o_bbox = app.add_option("--bbox", bbox, "model: box x0,y0,z0,x1,y1,z1 (default [-1,1]^3 for .vm, [-10,10]^3 for .hf, [-2,2]^3 for .pfl)");
   auto* o_ortho = app.add_flag("--ortho", ortho, "model: look down -z from above the box, the image covering its x and y");
   auto* o_method = app.add_option("--method", method_name, "model: auto, analytic, interval, march, sphere, newton or regula-falsi");
@@ -258,33 +270,46 @@ int run(int argc, char** argv) {
     pfDestroyContext(ctx);
     return 1;
   }
-  auto t0 = std::chrono::steady_clock::now();
-  if (model) {
-    view.width = w;
-    view.height = h;
-    try {
-      pf::model::drawModel(*model, view);
-    } catch (const pf::model::ModelError& e) {
-      std::cerr << e.what();
-      pfDestroyContext(ctx);
-      return 1;
+  // Each frame draws the whole picture again (glClear first); the first also compiles what the
+  // picture draws natively.
+  std::vector<double> frame_ms;
+  for (int frame = 0; frame < frames; ++frame) {
+    if (frame == frames - 1) ctx->renderer.resetStats();
+    auto t0 = std::chrono::steady_clock::now();
+    if (model) {
+      view.width = w;
+      view.height = h;
+      try {
+        pf::model::drawModel(*model, view);
+      } catch (const pf::model::ModelError& e) {
+        std::cerr << e.what();
+        pfDestroyContext(ctx);
+        return 1;
+      }
+    } else if (scene) {
+      try {
+        pf::scene::drawScene(*scene, w, h);
+      } catch (const pf::scene::SceneError& e) {
+        std::cerr << e.what() << "\n";
+        pfDestroyContext(ctx);
+        return 1;
+      }
+    } else {
+      pf::drawShowcase(w, h);
     }
-  } else if (scene) {
-    try {
-      pf::scene::drawScene(*scene, w, h);
-    } catch (const pf::scene::SceneError& e) {
-      std::cerr << e.what() << "\n";
-      pfDestroyContext(ctx);
-      return 1;
-    }
-  } else {
-    pf::drawShowcase(w, h);
+    auto t1 = std::chrono::steady_clock::now();
+    frame_ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
   }
-  auto t1 = std::chrono::steady_clock::now();
   GLenum err = pfglGetError();
   if (err != GL_NO_ERROR)
     std::cerr << "pfrender: GL error 0x" << std::hex << err << std::dec << " while drawing: the image is incomplete\n";
-  if (stats) printStats(ctx, std::chrono::duration<double, std::milli>(t1 - t0).count());
+  if (stats) {
+    std::vector<double> after_first(frame_ms.begin() + (frames > 1 ? 1 : 0), frame_ms.end());
+    std::sort(after_first.begin(), after_first.end());
+    const size_t n = after_first.size();
+    const double median = n % 2 ? after_first[n / 2] : 0.5 * (after_first[n / 2 - 1] + after_first[n / 2]);
+    printStats(ctx, median, frames, frame_ms.front());
+  }
   if (!model && !depth_out.empty()) {  // a scene's (or the showcase's) depth buffer as it is
     GLint dw = 0, dh = 0, bytes = 0;
     void* data = nullptr;

@@ -258,7 +258,87 @@ LargeTriangles drawLargeTriangles(int native) {
   return out;
 }
 
+// Spheres 120-180 pixels across, or large triangles, over a 512x512 framebuffer, one thread,
+// native code or not: the spheres' silhouettes' regions are undecided, and a walk over such a
+// region's blocks decides about one in four of them; along the triangles' edges, most.
+struct SphereFrame {
+  std::vector<unsigned char> pixels = std::vector<unsigned char>(512 * 512 * 4);
+  std::vector<float> depth = std::vector<float>(512 * 512);
+  FrameStats stats;
+};
+
+SphereFrame drawSpheresOrTriangles(int native, bool spheres) {
+  SphereFrame out;
+  const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_THREADS, 1, PF_JIT, native, 0};
+  PFcontext ctx = pfCreateContextAttribs(attribs);
+  EXPECT_TRUE(ctx && pfMakeCurrent(ctx, out.pixels.data(), GL_UNSIGNED_BYTE, 512, 512));
+  const GLenum sphere = pfglGetPrimitiveEXT("sphere");
+  const GLuint centre = pfglGetParamNameEXT("center"), radius = pfglGetParamNameEXT("radius");
+  pfglMatrixMode(GL_PROJECTION);
+  pfglOrtho(0, 512, 0, 512, -200, 200);
+  pfglEnable(GL_DEPTH_TEST);
+  pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  if (!spheres) {
+    // Triangles 300-460 pixels across, edges at every slope: their walks decide most blocks.
+    pfglBegin(GL_TRIANGLES);
+    for (int i = 0; i < 24; ++i) {
+      const float a = 0.52f * static_cast<float>(i), cx = 256.0f + 60.0f * std::cos(3.0f * a),
+                  cy = 256.0f + 60.0f * std::sin(3.0f * a), r = 150.0f + 3.5f * static_cast<float>(i);
+      for (int k = 0; k < 3; ++k) {
+        const float t = a + 2.0944f * static_cast<float>(k);
+        pfglColor3f(0.04f * static_cast<float>(i), 0.3f * static_cast<float>(k), 0.5f);
+        pfglVertex3f(cx + r * std::cos(t), cy + r * std::sin(t), 5.0f * static_cast<float>(k) - 2.0f * static_cast<float>(i % 5));
+      }
+    }
+    pfglEnd();
+  }
+  pfglBegin(sphere);
+  for (int i = 0; i < (spheres ? 24 : 0); ++i) {
+    pfglColor3f(0.04f * static_cast<float>(i), 0.5f, 1.0f - 0.03f * static_cast<float>(i));
+    pfglRastParamfEXT(radius, 60.0f + static_cast<float>(i % 5) * 7.5f);
+    pfglRastParam3fEXT(centre, 40.0f + static_cast<float>((i * 97) % 432), 40.0f + static_cast<float>((i * 181) % 432),
+                       static_cast<float>(i % 7) * 20.0f - 60.0f);
+    pfglSequencePointEXT();
+  }
+  pfglEnd();
+  pfglFinish();
+  pfglReadPixels(0, 0, 512, 512, GL_DEPTH_COMPONENT, GL_FLOAT, out.depth.data());
+  out.stats = ctx->renderer.stats();
+  pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
+  pfDestroyContext(ctx);
+  return out;
+}
+
+size_t depthDifferences(const SphereFrame& a, const SphereFrame& b) {
+  size_t n = 0;
+  for (size_t i = 0; i < a.depth.size(); ++i)
+    n += std::bit_cast<uint32_t>(a.depth[i]) != std::bit_cast<uint32_t>(b.depth[i]);
+  return n;
+}
+
 }  // namespace
+
+TEST(NativeCode, RegionsBlocksAreWalkedOnlyForProgramsWhoseWalksDecideMost) {
+  // The spheres' first walks over their silhouette regions' blocks decide fewer than half of
+  // them, so the frame stops walking them after its probe (PixelExecutor::BlockWalkTally): at
+  // most kProbeWalks walks' worth of blocks decided by their own verdicts. The image and the
+  // depths are the interpreter's all the same.
+  if (!nativeCodeAvailable()) GTEST_SKIP() << "native code is unavailable here";
+  NativeProgramCache::instance().setThreshold(0);
+  NativeProgramCache::instance().setWalkThreshold(0);
+  const SphereFrame interpreted = drawSpheresOrTriangles(0, true);
+  const SphereFrame native = drawSpheresOrTriangles(1, true);
+  EXPECT_EQ(native.pixels, interpreted.pixels);
+  EXPECT_EQ(depthDifferences(native, interpreted), 0u);
+  EXPECT_EQ(native.stats.region_walks, PixelExecutor::kProbeWalks) << "the probe's walks, and no more";
+  EXPECT_GT(native.stats.blocks_walked, 0u);
+  // Triangles' walks decide most of their blocks: they go on walking.
+  const SphereFrame triangles_interpreted = drawSpheresOrTriangles(0, false);
+  const SphereFrame triangles = drawSpheresOrTriangles(1, false);
+  EXPECT_EQ(triangles.pixels, triangles_interpreted.pixels);
+  EXPECT_EQ(depthDifferences(triangles, triangles_interpreted), 0u);
+  EXPECT_GT(triangles.stats.region_walks, 2 * PixelExecutor::kProbeWalks);
+}
 
 TEST(NativeCode, BlocksDecidedByTheirOwnVerdictsDrawWhatTheInterpreterDraws) {
   // Where a 32x32 region's walk is undecided -- along a triangle's edges -- native code walks
