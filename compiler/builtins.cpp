@@ -248,6 +248,21 @@ void typeBuiltinCall(Expr& e, UnitKind unit, const std::function<void(SourceLoc,
     if (!needSpatial(1)) return;
     e.type = Type::of(BaseType::Vector);
     e.varying = true;
+  } else if (f == "field_color") {
+    // The colour a context's field defines at a point (its attributes, HyperFun's s[1..3]; seed
+    // 000's procedural colour), for a primitive's or a shared interpolator's shading parameters.
+    if (unit != UnitKind::Primitive && unit != UnitKind::Interpolator) {
+      err(e.loc, "field_color() is only available in a primitive or an interpolator");
+      return;
+    }
+    if (!arity(2, 2) || any_void) return;
+    if (!isNumericScalar(e.args[0]->type)) {
+      err(e.args[0]->loc, "field_color()'s field is a float, not " + typeName(e.args[0]->type));
+      return;
+    }
+    if (!needSpatial(1)) return;
+    e.type = Type::of(BaseType::Color);
+    e.varying = true;
   } else if (f == "float" || f == "int") {
     if (!arity(1, 1) || any_void || !needScalars()) return;
     e.type = Type::of(f == "float" ? BaseType::Float : BaseType::Int);

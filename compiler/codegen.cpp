@@ -51,14 +51,16 @@ class Generator {
       if (pixel_.code[pc].op == Op::Retire) pixel_.last_early_retire = static_cast<int32_t>(pc);
     for (size_t pc = 0; pc < pixel_.code.size(); ++pc) {
       const Op op = pixel_.code[pc].op;
-      if (op == Op::LoopBegin || op == Op::ZTest || op == Op::FieldBox || op == Op::FieldHit || op == Op::FieldGradient)
+      if (op == Op::LoopBegin || op == Op::ZTest || op == Op::FieldBox || op == Op::FieldHit || op == Op::FieldGradient ||
+          op == Op::FieldColor)
         break;
       if (op == Op::Retire) pixel_.last_coverage_retire = static_cast<int32_t>(pc);
     }
     pixel_.gangs = true;
     for (const Instr& ins : pixel_.code) {
       if (ins.op == Op::FieldHit) pixel_.casts_block_rays = true;
-      if (ins.op == Op::FieldHit || ins.op == Op::FieldBox || ins.op == Op::FieldGradient) pixel_.gangs = false;
+      if (ins.op == Op::FieldHit || ins.op == Op::FieldBox || ins.op == Op::FieldGradient || ins.op == Op::FieldColor)
+        pixel_.gangs = false;
       if (ins.op == Op::JmpIfNot) {
         if (operandKind(ins.b) == OperandKind::Uniform)
           pixel_.branch_slots.push_back(operandIndex(ins.b));

@@ -15,7 +15,7 @@ const char* opName(Op op) {
       "f2i", "flt", "fle", "feq", "fne", "ilt", "ile", "ieq", "ine", "band", "bor", "bnot", "sel", "cross_sign",
       "qadd", "qsub", "qmul", "qdiv", "qneg", "qabs", "qlt", "qle", "qeq", "qfromf", "qfromi", "qtof",
       "qtoi", "qconv", "mov", "xadd", "xsub", "xneg", "xmulf", "xdivf", "xmov", "xloadvertex", "xsel", "loadparamat", "xloadvertexat", "loadstate", "haskinds", "hasnamed",
-      "bound", "kill", "retire", "ztest", "interp_return", "interp_shared", "shadeout", "interp_named_return", "zcommit", "surfacecommit", "fieldbox", "fieldhit", "fieldgradient", "outparam", "outvertex", "emit", "backfacing", "depthbound",
+      "bound", "kill", "retire", "ztest", "interp_return", "interp_shared", "shadeout", "interp_named_return", "zcommit", "surfacecommit", "fieldbox", "fieldhit", "fieldgradient", "fieldcolor", "outparam", "outvertex", "emit", "backfacing", "depthbound",
       "loopbegin", "looptest", "break", "continue", "loopcontinue", "loopback", "loopend", "jmp",
       "jmpifnot", "maskif", "maskelse", "maskend", "jmpifnone"};
   static_assert(sizeof(names) / sizeof(names[0]) == static_cast<size_t>(Op::OpCount));

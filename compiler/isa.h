@@ -68,6 +68,8 @@ enum class Op : uint8_t {
                  // parameter c
   FieldGradient, // pixel: dst = component (imm & 3) of the gradient of field d at (a, b, c);
                  // imm & 4: by central differences instead of the derived gradient form
+  FieldColor,    // pixel: dst = component imm (0 red, 1 green, 2 blue) of the colour field d's
+                 // attributes give at (a, b, c) (field_color(); HyperFun's s[1..3])
   // calls of one primitive from another (setup; paper section 5: polygon -> screen_triangle):
   // the arguments fill an outgoing parameter block, then Emit submits the callee's instance
   OutParam,      // setup: outgoing parameter slot imm = a

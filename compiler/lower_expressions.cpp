@@ -406,6 +406,18 @@ Binding Lowerer::call(const Expr& e) {
     }
     return vec(e.type, out);
   }
+  if (f == "field_color") {
+    const std::vector<int>& c = args[1].comps;
+    const int field = farg(0);
+    std::vector<int> out;
+    for (int k = 0; k < 3; ++k) {
+      int v = emit(Op::FieldColor, ValueClass::F32, true, toFloat(c[0]), toFloat(c[1]), toFloat(c[2]), k, e.loc);
+      blocks_.back()->back().inst.d = field;  // the field: the fourth operand
+      out.push_back(v);
+    }
+    out.push_back(constF(1.0f));
+    return vec(e.type, out);
+  }
   if (f == "culled") {
     int front = frontFacing(farg(0));
     return scalar(e.type, emit(Op::Sel, ValueClass::Bool, false, front, stateOn(StateValue::CullFront),

@@ -329,7 +329,8 @@ std::string Analyzer::whyOf(const Expr& e) const {
     }
   }
   if (e.kind == ExprKind::Call && e.name == "ztest") return "it depends on ztest(), which reads the depth buffer";
-  if (e.kind == ExprKind::Call && (e.name == "field_hit" || e.name.rfind("field_gradient", 0) == 0))
+  if (e.kind == ExprKind::Call &&
+      (e.name == "field_hit" || e.name.rfind("field_gradient", 0) == 0 || e.name == "field_color"))
     return "it depends on " + e.name + "(), which is computed per pixel";
   for (const ExprPtr& a : e.args)
     if (a->varying) return whyOf(*a);

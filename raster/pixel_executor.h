@@ -14,6 +14,7 @@
 #include "compiler/record_reads.h"
 #include "raster/block_rejection.h"
 #include "raster/decoded_program.h"
+#include "raster/field/float_evaluator.h"
 #include "raster/field/gradient_evaluator.h"
 #include "raster/field/ray_caster.h"
 #include "raster/limits.h"
@@ -187,6 +188,10 @@ class PixelExecutor {
                 float* t);
   void fieldGradient(const RasterState& state, uint64_t exec, float field, int axis, bool by_differences,
                      const float* const p[3], const bool p_wide[3], float* out);
+  // field_color(): colour component `component` (0 red, 1 green, 2 blue) of the field's
+  // attributes at the lanes' points; 1 where the field defines no such attribute.
+  void fieldColor(const RasterState& state, uint64_t exec, float field, int component, const float* const p[3],
+                  const bool p_wide[3], float* out);
   const field::ImplicitField* lookUpField(const RasterState& state, float id, uint64_t exec);
 
   // The programs this frame ran, decoded (decoded_program.h); startFrame() forgets them but
@@ -255,6 +260,8 @@ class PixelExecutor {
   BlockWalkTally& blockWalkTally(const PixelProgram& program);
   float field_box_[6] = {0, 0, 0, 0, 0, 0};
   std::unordered_map<const field::ImplicitField*, std::unique_ptr<field::GradientEvaluator>> gradients_;
+  // The float form of each field's attribute tapes (field_color()), built when first asked.
+  std::unordered_map<const field::FieldTape*, std::unique_ptr<field::FloatEvaluator>> attribute_evaluators_;
   // The gradient of a short tape (HitTapes): one evaluator per executor -- so per rasterizer
   // thread -- reset() for each tape in turn, its storage reused.
   field::GradientEvaluator short_gradient_;

@@ -1,5 +1,6 @@
 // The pixel executor's implicit-surface instructions: FieldHit runs the field ray caster over
-// the block (raster/field/ray_caster.h), FieldGradient the gradient form. The rays are the
+// the block (raster/field/ray_caster.h), FieldGradient the gradient form, FieldColor the float
+// form of the field's attribute tapes (seed 000's procedural colour at the hit point). The rays are the
 // pixels' own, rebuilt in double from the state the language's object_ray_near()/_far() read.
 #include <algorithm>
 #include <cmath>
@@ -185,6 +186,28 @@ void PixelExecutor::fieldGradient(const RasterState& state, uint64_t exec, float
     const int i = __builtin_ctzll(m);
     out[i] = gc.g[axis][i];
   }
+}
+
+void PixelExecutor::fieldColor(const RasterState& state, uint64_t exec, float field_id, int component,
+                               const float* const p[3], const bool p_wide[3], float* out) {
+  std::fill_n(out, kLanes, 1.0f);
+  const field::ImplicitField* f = lookUpField(state, field_id, exec);
+  if (!f || static_cast<size_t>(component) >= f->attributes.size() || !exec) return;
+  const field::FieldTape& tape = f->attributes[static_cast<size_t>(component)];
+  std::unique_ptr<field::FloatEvaluator>& fe = attribute_evaluators_[&tape];
+  if (!fe) fe = std::make_unique<field::FloatEvaluator>(tape);
+  float xs[kLanes], ys[kLanes], zs[kLanes], values[kLanes];
+  int n = 0;
+  for (uint64_t m = exec; m; m &= m - 1, ++n) {
+    const int i = __builtin_ctzll(m);
+    xs[n] = p_wide[0] ? p[0][i] : p[0][0];
+    ys[n] = p_wide[1] ? p[1][i] : p[1][0];
+    zs[n] = p_wide[2] ? p[2][i] : p[2][0];
+  }
+  fe->evaluate(xs, ys, zs, n, values);
+  n = 0;
+  for (uint64_t m = exec; m; m &= m - 1, ++n) out[__builtin_ctzll(m)] = values[n];
+  counters.field.point_evaluations += static_cast<uint64_t>(n);
 }
 
 }  // namespace pf

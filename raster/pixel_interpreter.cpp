@@ -346,17 +346,22 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const PixelProgra
         isa.masks.blend(R + static_cast<size_t>(operandIndex(ins.dst)) * kLanes, tmp, exec);
         continue;
       }
-      case Op::FieldGradient: {
+      case Op::FieldGradient:
+      case Op::FieldColor: {
+        // A point (a, b, c) per lane and the field d (uniform: the first active lane's).
         const float* p[3];
         bool wide[3];
         for (int k = 0; k < 3; ++k)
           p[k] = reinterpret_cast<const float*>(src(k == 0 ? ins.a : k == 1 ? ins.b : ins.c, wide[k]));
         bool wf;
         const uint32_t* fv = src(ins.d, wf);
-        alignas(64) float g[kLanes];
-        fieldGradient(state, exec, asF(wf ? fv[exec ? __builtin_ctzll(exec) : 0] : fv[0]), ins.imm & 3,
-                      (ins.imm & 4) != 0, p, wide, g);
-        std::memcpy(tmp, g, sizeof g);
+        const float field = asF(wf ? fv[exec ? __builtin_ctzll(exec) : 0] : fv[0]);
+        alignas(64) float v[kLanes];
+        if (ins.op == Op::FieldGradient)
+          fieldGradient(state, exec, field, ins.imm & 3, (ins.imm & 4) != 0, p, wide, v);
+        else
+          fieldColor(state, exec, field, ins.imm, p, wide, v);
+        std::memcpy(tmp, v, sizeof v);
         isa.masks.blend(R + static_cast<size_t>(operandIndex(ins.dst)) * kLanes, tmp, exec);
         continue;
       }

@@ -37,8 +37,10 @@ GLuint pfglCompileFieldParamsEXT(GLenum format, const GLchar* name, const GLchar
                         : format == GL_FIELD_HYPERFUN_EXT ? FieldFormat::HyperFun
                                                           : FieldFormat::Language;
   std::optional<pf::field::FieldTape> tape;
+  std::vector<pf::field::FieldTape> attributes;
   try {
-    tape = pf::field::compileFieldSource(f, name, source, std::vector<double>(params, params + count), time, log);
+    tape = pf::field::compileFieldSource(f, name, source, std::vector<double>(params, params + count), time, log, "",
+                                         &attributes);
   } catch (const std::bad_alloc&) {
     ctx->setError(GL_OUT_OF_MEMORY);
     ctx->field_failed_log = std::string(name) + ": error: out of memory while compiling";
@@ -52,7 +54,8 @@ GLuint pfglCompileFieldParamsEXT(GLenum format, const GLchar* name, const GLchar
     // Both lists grow together (an id names its field and its log) or neither does.
     ctx->field_logs.reserve(ctx->field_logs.size() + 1);
     ctx->fields.reserve(ctx->fields.size() + 1);
-    auto field = std::make_unique<const pf::field::ImplicitField>(name, std::move(*tape), lipschitz);
+    auto field = std::make_unique<const pf::field::ImplicitField>(name, std::move(*tape), lipschitz,
+                                                                  std::move(attributes));
     std::string field_log = log.format();
     ctx->fields.push_back(std::move(field));
     ctx->field_logs.push_back(std::move(field_log));

@@ -19,10 +19,11 @@ std::optional<FieldFormat> fieldFormatOfPath(const std::string& path) {
 
 std::optional<FieldTape> compileFieldSource(FieldFormat format, const std::string& name, const std::string& text,
                                             const std::vector<double>& params, double time, DiagnosticLog& log,
-                                            const std::string& unit) {
+                                            const std::string& unit, std::vector<FieldTape>* attributes) {
+  if (attributes) attributes->clear();
   switch (format) {
     case FieldFormat::Fidget: return readFidgetModel(name, text, log);
-    case FieldFormat::HyperFun: return readHyperFunModel(name, text, log, params, "my_model", time);
+    case FieldFormat::HyperFun: return readHyperFunModel(name, text, log, params, "my_model", time, attributes);
     case FieldFormat::Language: {
       const std::vector<float> values(params.begin(), params.end());
       return compileFieldUnit(name, text, unit.empty() ? std::filesystem::path(name).stem().string() : unit, values, log);

@@ -22,9 +22,11 @@ std::optional<FieldFormat> fieldFormatOfPath(const std::string& path);
 // or a language field's parameters after its point; `time`: HyperFun's x[4]. Fidget sources take
 // neither, language sources no time (the caller checks). The language's field is the unit named
 // `unit` (empty: `name`'s stem, as for a file foo.pfl), or the source's only one. nullopt with
-// errors in `log`.
+// errors in `log`. `attributes`, when given, receives the field's attributes -- HyperFun's s
+// array, one tape per item (readHyperFunModel) -- and stays empty for the other formats.
 std::optional<FieldTape> compileFieldSource(FieldFormat format, const std::string& name, const std::string& text,
                                             const std::vector<double>& params, double time, DiagnosticLog& log,
-                                            const std::string& unit = "");
+                                            const std::string& unit = "",
+                                            std::vector<FieldTape>* attributes = nullptr);
 
 }  // namespace pf::field

@@ -111,6 +111,12 @@ uint32_t FieldTapeBuilder::select(uint32_t cond, uint32_t if_true, uint32_t if_f
   return add({FieldOp::Select, cond, if_true, 0.0f, if_false});
 }
 
+FieldTape FieldTapeBuilder::tapeOf(uint32_t result) const {
+  FieldTape all = tape_;
+  all.result = result;
+  return removeDeadCode(all);
+}
+
 FieldTape FieldTapeBuilder::finish(uint32_t result) {
   tape_.result = result;
   FieldTape done = removeDeadCode(tape_);

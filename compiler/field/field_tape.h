@@ -90,6 +90,9 @@ class FieldTapeBuilder {
 
   // The finished tape with `result` as its value, dead instructions removed.
   FieldTape finish(uint32_t result);
+  // The tape of `result` built so far, dead instructions removed, leaving the builder as it is:
+  // for the other values a front end computes with the field's (HyperFun's attributes).
+  FieldTape tapeOf(uint32_t result) const;
 
  private:
   uint32_t add(const FieldInstr& in);

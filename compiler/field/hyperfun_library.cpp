@@ -492,8 +492,8 @@ Real hfSpaceMap(LibraryCall& c) {
 
 // Messages for the unsupported functions; '$' stands for the function's name.
 constexpr std::string_view kAttribute =
-    "attribute functions are not supported yet: '$' sets the s array's colour or material, and primflow's field "
-    "tapes carry the shape only";
+    "'$' is not supported yet: of the attribute library primflow has hfA_SetColor, hfA_SetAttributes, hfA_Lerp, "
+    "hfA_Cerp, hfA_Clamp, hfA_Pulse, hfA_Step, hfA_SmoothStep, hfA_Wave, hfA_Union, hfA_Floor and hfA_Modulo";
 constexpr std::string_view kNotYet = "'$' is not supported yet";
 constexpr std::string_view kOnlyInR =
     "'$' is not supported: it calls back into R and exists only in HyperFun's R package";
@@ -576,16 +576,25 @@ const LibraryFunction kFunctions[] = {
     {"hfTaperZ", "xt, z1, z2, s1, s2", "ARRRR", hfTaper<2>, {}},
     {"hfSpaceMapExp", "xt, source, target, b", "AAAA", hfSpaceMap<false>, {}},
     {"hfSpaceMapCubic", "xt, source, target, b", "AAAA", hfSpaceMap<true>, {}},
+    // The attribute library (hyperfun_attributes.cpp): writes into s, or values for it.
+    {"hfA_SetColor", "f, s, r, g, b", "RARRR", hfASetColor, {}},
+    {"hfA_SetAttributes", "f, s, s1", "RAA", hfASetAttributes, {}},
+    {"hfA_Lerp", "s, s1, s2, f, fmin, fmax", "AAARRR", hfALerp, {}},
+    {"hfA_Cerp", "s, s1, s2, f, fmin, fmax", "AAARRR", hfALerp, {}},
+    {"hfA_Clamp", "f, a, b", "RRR", hfAClamp, {}},
+    {"hfA_Pulse", "f, upper, lower", "RRR", hfAPulse, {}},
+    {"hfA_Step", "f, a", "RR", hfAStep, {}},
+    {"hfA_SmoothStep", "f, a, b", "RRR", hfASmoothStep, {}},
+    {"hfA_Wave", "v, c1, c2, freq", "RRRR", hfAWave, {}},
+    {"hfA_Union", "f1, f2, s, s1, s2, op", "RRAAAR", hfAUnion, {}},
+    {"hfA_Floor", "v", "R", hfAFloor, {}},
+    {"hfA_Modulo", "a, b", "RR", hfAModulo, {}},
     // Registered in HyperFun but not supported yet.
     no("hfBezierVolume", kNotYet), no("hfSawtooth", kNotYet),
     no("hfR", kOnlyInR),
-    no("hfA_Wave", kAttribute), no("hfA_CheckerBoard", kAttribute), no("hfA_Union", kAttribute),
-    no("hfA_Crackles", kAttribute), no("hfA_Circles", kAttribute), no("hfA_NoiseG", kAttribute),
-    no("hfA_NoiseP", kAttribute), no("hfA_Turbulence", kAttribute), no("hfA_SetColor", kAttribute),
-    no("hfA_SetAttributes", kAttribute), no("hfA_Lerp", kAttribute), no("hfA_Cerp", kAttribute),
-    no("hfA_Clamp", kAttribute), no("hfA_Floor", kAttribute), no("hfA_Pulse", kAttribute),
-    no("hfA_LookUpTable", kAttribute), no("hfA_SmoothLookUpTable", kAttribute), no("hfA_Step", kAttribute),
-    no("hfA_SmoothStep", kAttribute), no("hfA_Modulo", kAttribute), no("hfA_Spline", kAttribute),
+    no("hfA_CheckerBoard", kAttribute), no("hfA_Crackles", kAttribute), no("hfA_Circles", kAttribute),
+    no("hfA_NoiseG", kAttribute), no("hfA_NoiseP", kAttribute), no("hfA_Turbulence", kAttribute),
+    no("hfA_LookUpTable", kAttribute), no("hfA_SmoothLookUpTable", kAttribute), no("hfA_Spline", kAttribute),
     no("hfA_RGBToHSV", kAttribute), no("hfA_HSVToRGB", kAttribute),
 };
 

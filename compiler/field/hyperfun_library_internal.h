@@ -1,5 +1,5 @@
 // Shared by the source files of HyperFun's library (hyperfun_library.cpp,
-// hyperfun_convolution.cpp and hyperfun_sardf.cpp), not by its users: the checks on a library call's arguments, which
+// hyperfun_convolution.cpp, hyperfun_sardf.cpp and hyperfun_attributes.cpp), not by its users: the checks on a library call's arguments, which
 // throw LibraryError with a message naming the argument, and the library functions defined
 // outside hyperfun_library.cpp, for its table.
 #pragma once
@@ -71,5 +71,18 @@ Real hfDSub(LibraryCall& c);
 Real hfDBlendUni(LibraryCall& c);
 Real hfDBlendInt(LibraryCall& c);
 Real hfDEllipsoid(LibraryCall& c);
+
+// The attribute library: what writes or computes the s array (hyperfun_attributes.cpp).
+Real hfASetColor(LibraryCall& c);
+Real hfASetAttributes(LibraryCall& c);
+Real hfALerp(LibraryCall& c);
+Real hfAClamp(LibraryCall& c);
+Real hfAPulse(LibraryCall& c);
+Real hfAStep(LibraryCall& c);
+Real hfASmoothStep(LibraryCall& c);
+Real hfAWave(LibraryCall& c);
+Real hfAUnion(LibraryCall& c);
+Real hfAFloor(LibraryCall& c);
+Real hfAModulo(LibraryCall& c);
 
 }  // namespace pf::field::hyperfun

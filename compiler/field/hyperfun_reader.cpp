@@ -478,7 +478,7 @@ std::string lowercase(std::string s) {
 
 std::optional<FieldTape> readHyperFunModel(const std::string& name, std::string text, DiagnosticLog& log,
                                            const std::vector<double>& params, const std::string& object,
-                                           double time) {
+                                           double time, std::vector<FieldTape>* attributes) {
   using namespace hyperfun;
   const SourceFile& file = log.addSource(name, std::move(text));
   const int errors_before = log.errorCount();
@@ -511,6 +511,11 @@ std::optional<FieldTape> readHyperFunModel(const std::string& name, std::string 
   std::vector<Real> s(static_cast<size_t>(def.s_size), Real::known(0.0));
   try {
     const Real value = compiler.compileObject(drawn, std::move(x), std::move(a), s);
+    if (attributes) {
+      attributes->clear();
+      if (def.declares_s)
+        for (const Real& item : s) attributes->push_back(builder.tapeOf(m.materialize(item)));
+    }
     return builder.finish(m.materialize(value));
   } catch (const CompileAbort&) {
     return std::nullopt;

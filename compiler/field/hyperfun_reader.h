@@ -24,8 +24,12 @@ namespace pf::field {
 // `time` is x[4], HyperFun's time coordinate (further coordinates are 0), known when the model
 // compiles: an animation is a model compiled once per frame.
 // Errors (file:line:col, source line, caret) go to `log`, named `name`; nullopt then.
+// `attributes`, when given, receives the model's attributes (seed 000's procedural colour): one
+// tape per item of the drawn object's s array, its value when the model has run -- s[1], s[2],
+// s[3] are the colour's red, green and blue -- or nothing when its header declares no s.
 std::optional<FieldTape> readHyperFunModel(const std::string& name, std::string text, DiagnosticLog& log,
                                            const std::vector<double>& params = {},
-                                           const std::string& object = "my_model", double time = 0.0);
+                                           const std::string& object = "my_model", double time = 0.0,
+                                           std::vector<FieldTape>* attributes = nullptr);
 
 }  // namespace pf::field

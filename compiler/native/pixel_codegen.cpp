@@ -24,8 +24,8 @@ NativeFault nativeFaultForTesting() { return fault_for_testing.load(); }
 
 bool nativePixelSupports(const PixelProgram& program, std::string* why) {
   for (const Instr& in : program.code)
-    if (in.op == Op::FieldBox || in.op == Op::FieldHit || in.op == Op::FieldGradient) {
-      if (why) *why = "it searches a field (field_hit / field_gradient cast the block's rays together)";
+    if (in.op == Op::FieldBox || in.op == Op::FieldHit || in.op == Op::FieldGradient || in.op == Op::FieldColor) {
+      if (why) *why = "it evaluates a field (field_hit / field_gradient / field_color run the field's evaluators on the block)";
       return false;
     }
   return true;

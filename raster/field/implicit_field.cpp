@@ -21,7 +21,8 @@ std::optional<RootMethod> parseRootMethod(std::string_view name) {
   return std::nullopt;
 }
 
-ImplicitField::ImplicitField(std::string n, FieldTape t, float l) : name(std::move(n)), tape(std::move(t)), lipschitz(l) {
+ImplicitField::ImplicitField(std::string n, FieldTape t, float l, std::vector<FieldTape> a)
+    : name(std::move(n)), tape(std::move(t)), lipschitz(l), attributes(std::move(a)) {
   polynomial_degree = fieldPolynomialDegree(tape);
   if (polynomial_degree < 0 || polynomial_degree > 4)
     if (auto tree = csgTreeOf(tape)) csg = std::make_shared<const CsgTree>(std::move(*tree));

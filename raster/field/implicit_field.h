@@ -40,9 +40,12 @@ struct ImplicitField {
   std::shared_ptr<const CsgTree> csg;
   bool reads[3] = {false, false, false};  // uses var-x, var-y, var-z
   float lipschitz = 0.0f;      // declared bound on |grad f| (0: none declared)
+  // The field's attributes (HyperFun's s array; seed 000's procedural colour), one tape per item:
+  // the values field_color() evaluates at a hit point. Empty when the model defines none.
+  std::vector<FieldTape> attributes;
 
   ImplicitField() = default;
-  ImplicitField(std::string name, FieldTape tape, float lipschitz = 0.0f);
+  ImplicitField(std::string name, FieldTape tape, float lipschitz = 0.0f, std::vector<FieldTape> attributes = {});
 };
 
 // A context's fields, by id - 1 (ids start at 1). Entries never move or change once added.

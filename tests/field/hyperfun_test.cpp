@@ -586,8 +586,8 @@ TEST(HyperFun, LibraryCallErrorsArePrecise) {
   expectHas(compileError(model("my_model = floor(x[1]);")), "m.hf:2:12: error: 'floor' of a value");
   expectHas(compileError(model("array e[3];\ne = [0, 0, 0];\nmy_model = hfDEllipsoid(x, e, 1, 0, 1);")),
             "m.hf:4:34: error: 'b' (argument 4 of 'hfDEllipsoid') is within 1e-6 of 0");
-  expectHas(compileError(model("my_model = hfA_Wave(1, 2, 3, 4);")),
-            "m.hf:2:12: error: attribute functions are not supported yet: 'hfA_Wave'");
+  expectHas(compileError(model("my_model = hfA_NoiseG(x, 2, 3);")),
+            "m.hf:2:12: error: 'hfA_NoiseG' is not supported yet: of the attribute library primflow has hfA_SetColor");
   expectHas(compileError(model("my_model = hfDUni(x[1], x[2], 1);")),
             "m.hf:2:12: error: 'hfDUni' takes 4 arguments (f1, f2, r, alpha), found 3");
   expectHas(compileError(model("my_model = hfNoSuchThing(x, a);")),

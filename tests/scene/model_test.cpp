@@ -94,6 +94,31 @@ TEST(Model, OrthoDepthIsTheWorldZOfTheSurface) {
   EXPECT_LT(max_err, 2e-6);  // the depth buffer's float precision over the box's depth
 }
 
+// A HyperFun model with attributes (scenes/models/painted_ring.hf: a banded ring and a gold
+// ball, hfA_Union) is drawn in its own colours, lit; a model without `s` is not coloured.
+TEST(Model, HyperFunAttributesColourTheModel) {
+  const pf::model::Model m = pf::model::loadModel(std::string(PF_SOURCE_DIR) + "/scenes/models/painted_ring.hf");
+  EXPECT_TRUE(m.coloured);
+  EXPECT_FALSE(pf::model::loadModel(std::string(PF_SOURCE_DIR) + "/tests/data/models/hyperfun/example.hf").coloured);
+  const int n = 64;
+  pf::test::GlContext gl(n, n);
+  pf::model::ModelView v;
+  v.width = v.height = n;
+  v.ortho = true;
+  v.box_min = {-7.0, -7.0, -4.0};
+  v.box_max = {7.0, 7.0, 4.0};
+  pf::model::drawModel(m, v);
+  // The ball's top, (0, 0): gold (0.9, 0.72, 0.2) lit. The ring's top near (-5, 0): green 0.3,
+  // red and blue from its waves, about (0.17, 0.3, 0.6): bluer than red there.
+  const unsigned char* ball = gl.at(n / 2, n / 2);
+  EXPECT_GT(ball[0], ball[2] + 80) << int(ball[0]) << " " << int(ball[1]) << " " << int(ball[2]);
+  EXPECT_GT(ball[1], ball[2] + 50);
+  const int ring_x = static_cast<int>((-5.0 + 7.0) / 14.0 * n);
+  const unsigned char* ring = gl.at(ring_x, n / 2);
+  EXPECT_GT(ring[2], ring[0] + 40) << int(ring[0]) << " " << int(ring[1]) << " " << int(ring[2]);
+  EXPECT_LT(ring[1], ball[1]);
+}
+
 // A HyperFun sphere whose radius grows with the time x[4]: --ortho depth against the formula.
 TEST(Model, HyperFunModelsReadTheTime) {
   const std::string path =

@@ -196,6 +196,17 @@ class Interpreter {
         scalar_[in.dst] = fromF(fieldGradientAt(ge, q, in.imm & 3, (in.imm & 4) != 0));
         return {};
       }
+      case Op::FieldColor: {
+        const field::ImplicitField* f = fieldById(st_, asF(get(in.d)));
+        const size_t k = static_cast<size_t>(in.imm);
+        if (!f || k >= f->attributes.size()) {
+          scalar_[in.dst] = fromF(1.0f);
+          return {};
+        }
+        field::FloatEvaluator fe(f->attributes[k]);
+        scalar_[in.dst] = fromF(fe.evaluate(asF(get(in.a)), asF(get(in.b)), asF(get(in.c))));
+        return {};
+      }
       case Op::LoadState: scalar_[in.dst] = fromF(state(in.imm)); return {};
       case Op::HasKinds: scalar_[in.dst] = layout_.hasKinds(static_cast<unsigned>(in.imm)) ? 1u : 0u; return {};
       case Op::HasNamed:

@@ -32,9 +32,12 @@ Model loadModel(const std::string& path, double time) {
     m.default_box_min = glm::dvec3(-half);
     m.default_box_max = glm::dvec3(half);
   }
-  const std::optional<field::FieldTape> tape = field::compileFieldSource(m.format, path, m.text, {}, time, log);
+  std::vector<field::FieldTape> attributes;
+  const std::optional<field::FieldTape> tape =
+      field::compileFieldSource(m.format, path, m.text, {}, time, log, "", &attributes);
   if (!tape) throw ModelError(log.format());
   m.two_dimensional = !tape->usesZ();
+  m.coloured = !attributes.empty();
   return m;
 }
 
@@ -120,6 +123,13 @@ void drawModel(const Model& model, const ModelView& view) {
     pfglMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, specular);
     pfglMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, 24.0f);
   }
+  if (model.coloured) {
+    // The model's own colour per hit point: the implicit primitive's `field_attributes` branch,
+    // tracked as the material's ambient and diffuse colour where the model is lit.
+    pfglMaterialInterpEXT(pfglGetParamNameEXT("color"), pfglGetPrimitiveEXT("implicit"),
+                          pfglGetInterpolatorEXT("field_attributes"));
+    pfglEnable(GL_COLOR_MATERIAL);
+  }
   loadMatrix(GL_MODELVIEW, m.modelview);
   const GLuint p_field = pfglGetParamNameEXT("field"), p_lo = pfglGetParamNameEXT("box_min"),
                p_hi = pfglGetParamNameEXT("box_max"), p_method = pfglGetParamNameEXT("method"),
@@ -174,6 +184,7 @@ scene::Scene sceneOfModel(const Model& model, const ModelView& view) {
   m.color = model.two_dimensional ? glm::dvec4(1.0) : glm::dvec4(0.85, 0.78, 0.62, 1.0);
   m.specular = {0.25, 0.25, 0.25, 1.0};
   m.shininess = 24;
+  if (model.coloured) m.interpolators["color"] = "field_attributes";  // the model's own colour
   s.materials["model"] = m;
   scene::Object o;
   o.primitive = "implicit";

@@ -8,6 +8,9 @@
 //   perspective view of the box from the +z side, a little from above and the right.
 // 2D models (no var-z) are coverage images over the box's x and y extent, as in the Prospero
 // challenge: white where the model is inside, black elsewhere, whatever the camera option.
+// A model with attributes (HyperFun's s array, seed 000's procedural colour) is drawn in the
+// colour they give at each hit point: the colour bound to the `field_attributes` interpolator,
+// lit through GL_COLOR_MATERIAL.
 #pragma once
 
 #include <primflow/gl.h>
@@ -34,6 +37,7 @@ struct Model {
   field::FieldFormat format = field::FieldFormat::Fidget;
   std::string text;
   bool two_dimensional = false;  // reads no z: drawn as a coverage image
+  bool coloured = false;         // defines attributes (HyperFun's s): drawn in the colour they give
   // [-1, 1]^3 (.vm), [-10, 10]^3 (.hf, HyperFun's polygonizer's), [-2, 2]^3 (.pfl)
   glm::dvec3 default_box_min{-1.0}, default_box_max{1.0};
 };
