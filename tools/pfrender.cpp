@@ -1,6 +1,6 @@
 // pfrender: renders a scene or a model with primflow to a PNG.
 //   pfrender [SCENE.json] [-o OUT.png] [--size WxH] [--threads N] [--stats]
-//   pfrender MODEL.vm|MODEL.hf|MODEL.pfl [-o OUT.png] [--size WxH] [--bbox x0,y0,z0,x1,y1,z1] [--ortho]
+//   pfrender MODEL.vm|MODEL.hf|MODEL.pfl|MODEL.pfgrid [-o OUT.png] [--size WxH] [--bbox x0,y0,z0,x1,y1,z1] [--ortho]
 //            [--method M] [--steps N] [--depth-out FILE.pfm] [--threads N] [--time T] [--stats]
 // --depth-out: a model's visible world z; for a scene, its depth buffer (window depth in [0, 1]).
 // A scene file (docs/scenes.md); with no scene, the built-in showcase (tools/showcase.cpp).
@@ -177,7 +177,7 @@ int run(int argc, char** argv) {
   std::string bbox, method_name = "auto", depth_out;
   bool ortho = false;
   double steps = 0.0, time = 0.0;
-  app.add_option("scene", scene_path, "scene file (.json) or model (.vm, .hf, .pfl); none: the built-in showcase");
+  app.add_option("scene", scene_path, "scene file (.json) or model (.vm, .hf, .pfl, .pfgrid); none: the built-in showcase");
   app.add_option("-o,--output", out, "output PNG file (default: the scene's name, or showcase.png)");
   app.add_option("--size", size, "image size WxH (each 1..8192; default: the scene's, or 960x640)");
   app.add_option("--threads", threads, "rasterizer threads (0: PF_NUM_THREADS or all cores)")->check(CLI::Range(0, 256));
@@ -186,7 +186,7 @@ int run(int argc, char** argv) {
                  "draw the picture this many times (--stats: the frame time is the median of the frames after the "
                  "first, the counters the last frame's)")
       ->check(CLI::Range(1, 10000));
-  auto* o_bbox = app.add_option("--bbox", bbox, "model: box x0,y0,z0,x1,y1,z1 (default [-1,1]^3 for .vm, [-10,10]^3 for .hf, [-2,2]^3 for .pfl)");
+  auto* o_bbox = app.add_option("--bbox", bbox, "model: box x0,y0,z0,x1,y1,z1 (default [-1,1]^3 for .vm, [-10,10]^3 for .hf, [-2,2]^3 for .pfl, the grid's for .pfgrid)");
   auto* o_ortho = app.add_flag("--ortho", ortho, "model: look down -z from above the box, the image covering its x and y");
   auto* o_method = app.add_option("--method", method_name, "model: auto, analytic, interval, march, sphere, newton or regula-falsi");
   auto* o_steps = app.add_option("--steps", steps, "model: march's steps M, or sphere tracing's Lipschitz bound")
@@ -201,7 +201,7 @@ int run(int argc, char** argv) {
   if (!is_model) {
     for (CLI::Option* o : {o_bbox, o_ortho, o_method, o_steps, o_time})
       if (o->count()) {
-        std::cerr << "pfrender: " << o->get_name() << " applies to models (.vm, .hf, .pfl), not to scenes\n";
+        std::cerr << "pfrender: " << o->get_name() << " applies to models (.vm, .hf, .pfl, .pfgrid), not to scenes\n";
         return 2;
       }
   }
@@ -235,7 +235,7 @@ int run(int argc, char** argv) {
     const std::string ext = std::filesystem::path(scene_path).extension().string();
     if (ext != ".json") {
       std::cerr << "pfrender: " << scene_path << ": error: unknown scene type '" << ext
-                << "' (pfrender reads .json scene files, docs/scenes.md, and .vm / .hf / .pfl models)\n";
+                << "' (pfrender reads .json scene files, docs/scenes.md, and .vm / .hf / .pfl / .pfgrid models)\n";
       return 1;
     }
     try {

@@ -36,7 +36,7 @@ inline float applyFieldOp(FieldOp op, float a, float b) {
     case FieldOp::Less: return a < b ? 1.0f : 0.0f;
     case FieldOp::LessEq: return a <= b ? 1.0f : 0.0f;
     case FieldOp::Select:  // ternary: applySelect
-    case FieldOp::X: case FieldOp::Y: case FieldOp::Z: case FieldOp::Const: break;
+    case FieldOp::X: case FieldOp::Y: case FieldOp::Z: case FieldOp::Const: case FieldOp::Sample: break;
   }
   return a;
 }

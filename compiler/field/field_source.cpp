@@ -6,6 +6,7 @@
 #include "compiler/field/fidget_reader.h"
 #include "compiler/field/field_unit.h"
 #include "compiler/field/hyperfun_reader.h"
+#include "compiler/field/sampled_reader.h"
 
 namespace pf::field {
 
@@ -14,6 +15,7 @@ std::optional<FieldFormat> fieldFormatOfPath(const std::string& path) {
   if (ext == ".vm") return FieldFormat::Fidget;
   if (ext == ".hf") return FieldFormat::HyperFun;
   if (ext == ".pfl") return FieldFormat::Language;
+  if (ext == ".pfgrid") return FieldFormat::Sampled;
   return std::nullopt;
 }
 
@@ -27,6 +29,11 @@ std::optional<FieldTape> compileFieldSource(FieldFormat format, const std::strin
     case FieldFormat::Language: {
       const std::vector<float> values(params.begin(), params.end());
       return compileFieldUnit(name, text, unit.empty() ? std::filesystem::path(name).stem().string() : unit, values, log);
+    }
+    case FieldFormat::Sampled: {
+      std::shared_ptr<const SampledGrid> grid = readSampledField(name, text, log);
+      if (!grid) return std::nullopt;
+      return sampledFieldTape(std::move(grid));
     }
   }
   return std::nullopt;

@@ -1,5 +1,6 @@
-// A field's source in any of the formats primflow reads -- Fidget .vm, HyperFun .hf, or a
-// `field` unit of the primitive language (.pfl) -- compiled to a tape by the matching front end.
+// A field's source in any of the formats primflow reads -- Fidget .vm, HyperFun .hf, a `field`
+// unit of the primitive language (.pfl), or a sampled field's .pfgrid bytes -- compiled to a tape
+// by the matching front end.
 // The one place that maps a format (or a file's extension) to its front end: the API, pfrender,
 // pfview, scene files and the benchmarks all go through it.
 #pragma once
@@ -13,9 +14,10 @@
 
 namespace pf::field {
 
-enum class FieldFormat { Fidget, HyperFun, Language };
+enum class FieldFormat { Fidget, HyperFun, Language, Sampled };
 
-// The format a model file's extension names: .vm, .hf, .pfl; nullopt for any other.
+// The format a model file's extension names: .vm, .hf, .pfl, .pfgrid (a sampled field,
+// sampled_reader.h); nullopt for any other.
 std::optional<FieldFormat> fieldFormatOfPath(const std::string& path);
 
 // Compiles `text` (named `name` in diagnostics) in `format`. `params`: HyperFun's a[1], a[2], ...

@@ -31,13 +31,14 @@ std::string_view fieldOpName(FieldOp op) {
     case FieldOp::Less: return "less";
     case FieldOp::LessEq: return "less-eq";
     case FieldOp::Select: return "select";
+    case FieldOp::Sample: return "sample";
   }
   return "?";
 }
 
 bool FieldTape::usesZ() const {
   for (const FieldInstr& in : instrs)
-    if (in.op == FieldOp::Z) return true;
+    if (in.op == FieldOp::Z || in.op == FieldOp::Sample) return true;  // (a grid varies along z)
   return false;
 }
 
@@ -47,6 +48,7 @@ std::string FieldTape::print() const {
     const FieldInstr& in = instrs[i];
     out << '_' << i << ' ' << fieldOpName(in.op);
     if (in.op == FieldOp::Const) out << ' ' << in.value;
+    if (in.op == FieldOp::Sample) out << " grid " << in.value;
     if (fieldOpArity(in.op) >= 1) out << " _" << in.a;
     if (fieldOpArity(in.op) >= 2) out << " _" << in.b;
     if (fieldOpArity(in.op) == 3) out << " _" << in.c;
@@ -82,6 +84,13 @@ uint32_t FieldTapeBuilder::constant(float v) {
   // NaN constants compare unequal to themselves; they are still shared (the hash key holds bits,
   // equality is the instruction's ==), which only costs a duplicate.
   return add({FieldOp::Const, 0, 0, v});
+}
+
+uint32_t FieldTapeBuilder::sample(std::shared_ptr<const SampledGrid> grid) {
+  for (size_t i = 0; i < tape_.grids.size(); ++i)
+    if (tape_.grids[i] == grid) return add({FieldOp::Sample, 0, 0, static_cast<float>(i)});
+  tape_.grids.push_back(std::move(grid));
+  return add({FieldOp::Sample, 0, 0, static_cast<float>(tape_.grids.size() - 1)});
 }
 
 uint32_t FieldTapeBuilder::unary(FieldOp op, uint32_t a) {
@@ -171,6 +180,7 @@ static void rebuild(const FieldTape& tape, const std::vector<Choice>* choices, F
     out.instrs.push_back(in);
   }
   out.result = n ? renumber[forward[tape.result]] : 0;
+  out.grids = tape.grids;
 }
 
 FieldTape removeDeadCode(const FieldTape& tape) {

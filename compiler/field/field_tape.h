@@ -12,12 +12,15 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <unordered_map>
 #include <vector>
 
 namespace pf::field {
+
+class SampledGrid;  // compiler/field/sampled_grid.h
 
 // The longest tape a front end builds (a HyperFun model or a language field unrolls its loops
 // and calls): past it, compiling is an error -- a hostile or runaway model must not take
@@ -40,12 +43,13 @@ enum class FieldOp : uint8_t {
   Add, Sub, Mul, Div, Min, Max,                 // binary
   Less, LessEq,                                 // binary: 1 or 0
   Select,                                       // ternary: a != 0 ? b : c
+  Sample,                                       // leaf: the tape's grid number `value` at the point
 };
 
 // 0, 1, 2 or 3 (inline: tape simplification and the slot programs ask it of every instruction).
 constexpr int fieldOpArity(FieldOp op) {
   switch (op) {
-    case FieldOp::X: case FieldOp::Y: case FieldOp::Z: case FieldOp::Const: return 0;
+    case FieldOp::X: case FieldOp::Y: case FieldOp::Z: case FieldOp::Const: case FieldOp::Sample: return 0;
     case FieldOp::Neg: case FieldOp::Abs: case FieldOp::Square: case FieldOp::Sqrt:
     case FieldOp::Exp: case FieldOp::Log: case FieldOp::Sin: case FieldOp::Cos: case FieldOp::Atan: return 1;
     case FieldOp::Select: return 3;
@@ -57,7 +61,7 @@ std::string_view fieldOpName(FieldOp op);     // "add", "var-x", ... (Fidget's s
 struct FieldInstr {
   FieldOp op = FieldOp::Const;
   uint32_t a = 0, b = 0;  // operand value indices (earlier instructions)
-  float value = 0.0f;     // Const only
+  float value = 0.0f;     // Const: the constant; Sample: the grid's number in FieldTape::grids
   uint32_t c = 0;         // Select's third operand
   bool operator==(const FieldInstr&) const = default;
 };
@@ -69,9 +73,11 @@ enum class Choice : uint8_t { Both = 0, Left = 1, Right = 2 };
 struct FieldTape {
   std::vector<FieldInstr> instrs;  // SSA: value i is instrs[i]
   uint32_t result = 0;             // the field's value
+  // The sampled fields (voxel arrays, seed 000 section 3) the tape's Sample leaves read.
+  std::vector<std::shared_ptr<const SampledGrid>> grids;
 
   size_t size() const { return instrs.size(); }
-  bool usesZ() const;              // false for 2D models (Fidget's without var-z)
+  bool usesZ() const;              // false for 2D models (Fidget's without var-z; a grid reads z)
   std::string print() const;       // one "_i op args" line per instruction, Fidget-like
 };
 
@@ -82,6 +88,8 @@ class FieldTapeBuilder {
   uint32_t y();
   uint32_t z();
   uint32_t constant(float v);
+  // The grid's interpolated value at the point (a `sample` leaf; the tape keeps the grid).
+  uint32_t sample(std::shared_ptr<const SampledGrid> grid);
   uint32_t unary(FieldOp op, uint32_t a);
   uint32_t binary(FieldOp op, uint32_t a, uint32_t b);
   // cond != 0 ? if_true : if_false (a known condition picks its operand now).

@@ -33,6 +33,7 @@ void buildSlotProgram(const FieldTape& tape, SlotProgram& p, SlotProgramScratch&
     const FieldInstr& in = tape.instrs[i];
     const int arity = fieldOpArity(in.op);
     FloatSlotInstr s{in.op, 0, 0, 0, in.value};
+    if (in.op == FieldOp::Sample) s.grid = tape.grids.at(static_cast<size_t>(in.value)).get();
     if (arity >= 1) s.a = slot_of[in.a];
     if (arity >= 2) s.b = slot_of[in.b];
     if (arity == 3) s.c = slot_of[in.c];

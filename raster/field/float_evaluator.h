@@ -19,6 +19,7 @@ struct FloatSlotInstr {
   uint16_t out, a, b;
   float value;     // Const
   uint16_t c = 0;  // Select's third operand
+  const SampledGrid* grid = nullptr;  // Sample: the grid (held by the tape)
 };
 
 // A tape as instructions on slots, a slot reused once the last reader of its value has run, and

@@ -30,6 +30,7 @@ ImplicitField::ImplicitField(std::string n, FieldTape t, float l, std::vector<Fi
     if (in.op == FieldOp::X) reads[0] = true;
     if (in.op == FieldOp::Y) reads[1] = true;
     if (in.op == FieldOp::Z) reads[2] = true;
+    if (in.op == FieldOp::Sample) reads[0] = reads[1] = reads[2] = true;
   }
 }
 

@@ -6,6 +6,7 @@
 #include "raster/field/interval_batch.h"
 
 #include "raster/field/interval_lanes.h"
+#include "raster/field/sampled_bounds.h"
 
 #include <bit>
 #include <cmath>
@@ -149,7 +150,8 @@ PF_SIMD_CLONES void runInstruction(const FloatSlotInstr& in, int n, float* __res
     }
     case FieldOp::X:
     case FieldOp::Y:
-    case FieldOp::Z: return;  // (the evaluator copies the boxes in)
+    case FieldOp::Z:
+    case FieldOp::Sample: return;  // (the evaluator fills these from the boxes)
   }
 }
 
@@ -188,6 +190,16 @@ void IntervalBatchEvaluator::evaluate(const Boxes& boxes, int n, Interval* out, 
       for (int j = 0; j < lanes; ++j) {
         o[j] = lo[j < n ? j : 0];
         o[K + j] = hi[j < n ? j : 0];
+      }
+      continue;
+    }
+    if (in.op == FieldOp::Sample) {  // the grid over each box (lanes past n: box 0)
+      for (int j = 0; j < lanes; ++j) {
+        const int q = j < n ? j : 0;
+        const Interval r = sampleInterval(*in.grid, {boxes.x_lo[q], boxes.x_hi[q]}, {boxes.y_lo[q], boxes.y_hi[q]},
+                                          {boxes.z_lo[q], boxes.z_hi[q]});
+        o[j] = r.lo;
+        o[K + j] = r.hi;
       }
       continue;
     }

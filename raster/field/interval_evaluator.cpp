@@ -1,6 +1,8 @@
 // IntervalEvaluator: one pass over the tape in interval arithmetic, noting min/max/select choices.
 #include "raster/field/interval_evaluator.h"
 
+#include "raster/field/sampled_bounds.h"
+
 namespace pf::field {
 
 // Operand `a` of min(a, b) is the result over the box when a <= b everywhere in it. An interval
@@ -42,6 +44,7 @@ Interval IntervalEvaluator::evaluate(Interval x, Interval y, Interval z, std::ve
       case FieldOp::Y: v[i] = y; break;
       case FieldOp::Z: v[i] = z; break;
       case FieldOp::Const: v[i] = Interval::point(in.value); break;
+      case FieldOp::Sample: v[i] = sampleInterval(*tape_->grids[static_cast<size_t>(in.value)], x, y, z); break;
       case FieldOp::Neg: v[i] = intervalNeg(v[in.a]); break;
       case FieldOp::Abs: v[i] = intervalAbs(v[in.a]); break;
       case FieldOp::Square: v[i] = intervalSquare(v[in.a]); break;

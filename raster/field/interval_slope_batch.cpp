@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "raster/field/interval_lanes.h"
+#include "raster/field/sampled_bounds.h"
 #include "raster/simd_clones.h"
 
 namespace pf::field {
@@ -189,7 +190,8 @@ PF_SIMD_CLONES void runSlopeInstruction(const FloatSlotInstr& in, int n, const S
       break;
     case FieldOp::X:
     case FieldOp::Y:
-    case FieldOp::Z: return;  // (the evaluator copies the pairs in)
+    case FieldOp::Z:
+    case FieldOp::Sample: return;  // (the evaluator fills these from the pairs)
   }
   // Anything whose value may be NaN or infinite has no rate bound.
   for (int j = 0; j < n; ++j) {
@@ -235,6 +237,18 @@ void IntervalSlopeBatchEvaluator::evaluate(const Boxes& boxes, int n, IntervalSl
       float* const to[4] = {o.vlo, o.vhi, o.rlo, o.rhi};
       for (int q = 0; q < 4; ++q)
         for (int j = 0; j < lanes; ++j) to[q][j] = from[q][axis][j < n ? j : 0];  // lanes past n: pair 0
+      continue;
+    }
+    if (in.op == FieldOp::Sample) {  // the grid over each box and its directions (lanes past n: pair 0)
+      for (int j = 0; j < lanes; ++j) {
+        const int q = j < n ? j : 0;
+        Interval v, r;
+        sampleSlope(*in.grid, {boxes.x_lo[q], boxes.x_hi[q]}, {boxes.y_lo[q], boxes.y_hi[q]}, {boxes.z_lo[q], boxes.z_hi[q]},
+                    {boxes.dx_lo[q], boxes.dx_hi[q]}, {boxes.dy_lo[q], boxes.dy_hi[q]}, {boxes.dz_lo[q], boxes.dz_hi[q]}, v, r);
+        const bool bounded = std::isfinite(v.lo) && std::isfinite(v.hi);
+        o.vlo[j] = v.lo, o.vhi[j] = v.hi;
+        o.rlo[j] = bounded ? r.lo : -kInf, o.rhi[j] = bounded ? r.hi : kInf;
+      }
       continue;
     }
     runSlopeInstruction(in, lanes, o, slot(in.a), slot(in.b), slot(in.c));

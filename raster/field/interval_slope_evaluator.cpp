@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "raster/field/sampled_bounds.h"
+
 namespace pf::field {
 namespace {
 
@@ -38,6 +40,7 @@ IntervalSlope IntervalSlopeEvaluator::evaluate(Interval x, Interval y, Interval 
       case FieldOp::Y: value = y, rate = dy; break;
       case FieldOp::Z: value = z, rate = dz; break;
       case FieldOp::Const: value = Interval::point(in.value), rate = zero; break;
+      case FieldOp::Sample: sampleSlope(*tape_->grids[static_cast<size_t>(in.value)], x, y, z, dx, dy, dz, value, rate); break;
       case FieldOp::Neg: value = intervalNeg(a), rate = intervalNeg(da); break;
       case FieldOp::Abs:
         value = intervalAbs(a);

@@ -100,6 +100,7 @@ bool rayPolynomials(const FieldTape& tape, const std::array<double, 3>& origin, 
       case FieldOp::Max: ok = onConstant(std::max(a.c[0], b.c[0])); break;
       case FieldOp::Less: ok = onConstant(a.c[0] < b.c[0] ? 1.0 : 0.0); break;
       case FieldOp::LessEq: ok = onConstant(a.c[0] <= b.c[0] ? 1.0 : 0.0); break;
+      case FieldOp::Sample: ok = false; break;  // a grid is no polynomial
       case FieldOp::Select:  // a condition constant along the ray picks one polynomial
         ok = a.degree == 0;
         if (ok) r = a.c[0] != 0.0 ? b : v[in.c];
@@ -136,6 +137,7 @@ std::vector<int> polynomialDegrees(const FieldTape& tape) {
       switch (in.op) {
         case FieldOp::X: case FieldOp::Y: case FieldOp::Z: d = 1; break;
         case FieldOp::Const: d = 0; break;
+        case FieldOp::Sample: d = -1; break;
         case FieldOp::Neg: d = a; break;
         case FieldOp::Square: d = 2 * a; break;
         case FieldOp::Add: case FieldOp::Sub: d = std::max(a, b); break;

@@ -16,6 +16,7 @@
 
 #include <cmath>
 
+#include "compiler/field/sampled_grid.h"
 #include "raster/field/float_evaluator.h"
 #include "raster/field/gradient_evaluator.h"
 
@@ -71,6 +72,9 @@ void RunFloatSlotsWith(D d, const FloatSlotInstr* code, size_t count, float* bas
         for (size_t j = 0; j < end; j += N) hn::StoreU(c, d, o + j);
         continue;
       }
+      case FieldOp::Sample:  // the grid's own scalar code (another file): the same on every target
+        in.grid->values(x, y, z, n, o);
+        continue;
       default: break;
     }
     for (size_t j = 0; j < end; j += N) {
@@ -139,6 +143,7 @@ template <class D>
 void RunGradientSlotsWith(D d, const FloatSlotInstr* code, size_t count, float* base, const float* x, const float* y,
                           const float* z, int n) {
   constexpr size_t K = FloatEvaluator::kBatch;
+  if (n <= 0) return;  // (GradientEvaluator clamps n to [0, kBatch]: this tells the compiler so)
   using V = hn::Vec<D>;
   const size_t N = hn::Lanes(d);
   const size_t end = (static_cast<size_t>(n) + N - 1) / N * N;
@@ -149,6 +154,10 @@ void RunGradientSlotsWith(D d, const FloatSlotInstr* code, size_t count, float* 
     const float* HWY_RESTRICT a = base + static_cast<size_t>(in.a) * 4 * K;
     const float* HWY_RESTRICT b = base + static_cast<size_t>(in.b) * 4 * K;
     const float* HWY_RESTRICT c = base + static_cast<size_t>(in.c) * 4 * K;
+    if (in.op == FieldOp::Sample) {  // value and partial derivatives: the grid's own scalar code
+      in.grid->valuesAndGradients(x, y, z, n, o, K);
+      continue;
+    }
     if (in.op == FieldOp::X || in.op == FieldOp::Y || in.op == FieldOp::Z) {
       const int axis = in.op == FieldOp::X ? 0 : in.op == FieldOp::Y ? 1 : 2;
       const float* src = axis == 0 ? x : axis == 1 ? y : z;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "compiler/field/field_tape.h"
+#include "compiler/field/sampled_grid.h"
 
 namespace pf::field::testing {
 
@@ -27,6 +28,38 @@ inline std::string readModelText(const std::string& relative) {
 
 inline double dmin(double a, double b) { return (a < b || b != b) ? a : b; }
 inline double dmax(double a, double b) { return (a > b || b != b) ? a : b; }
+
+// A sampled grid's value in double, written apart from SampledGrid: a sum over samples of a
+// kernel of the distance in grid units -- the hat function max(0, 1 - |t|) for trilinear, the
+// cubic B-spline kernel for tricubic -- with the coordinate clamped to the grid and the samples
+// past its edges repeating the edge sample.
+inline double sampledReference(const SampledGrid& g, double x, double y, double z) {
+  const double p[3] = {x, y, z};
+  double u[3];
+  for (int a = 0; a < 3; ++a) {
+    u[a] = (p[a] - g.boxMin(a)) / (g.boxMax(a) - g.boxMin(a)) * (g.size(a) - 1);
+    u[a] = std::min(std::max(u[a], 0.0), static_cast<double>(g.size(a) - 1));
+  }
+  const bool cubic = g.interpolation() == SampleInterpolation::CubicBSpline;
+  auto kernel = [cubic](double t) {
+    t = std::fabs(t);
+    if (!cubic) return t < 1.0 ? 1.0 - t : 0.0;
+    if (t < 1.0) return (4.0 - 6.0 * t * t + 3.0 * t * t * t) / 6.0;
+    if (t < 2.0) return (2.0 - t) * (2.0 - t) * (2.0 - t) / 6.0;
+    return 0.0;
+  };
+  auto clampIndex = [&](int i, int a) { return std::min(std::max(i, 0), g.size(a) - 1); };
+  double sum = 0.0;
+  int base[3];
+  for (int a = 0; a < 3; ++a) base[a] = static_cast<int>(std::floor(u[a]));
+  for (int k = base[2] - 2; k <= base[2] + 3; ++k)
+    for (int j = base[1] - 2; j <= base[1] + 3; ++j)
+      for (int i = base[0] - 2; i <= base[0] + 3; ++i) {
+        const double w = kernel(u[0] - i) * kernel(u[1] - j) * kernel(u[2] - k);
+        if (w != 0.0) sum += w * g.sample(clampIndex(i, 0), clampIndex(j, 1), clampIndex(k, 2));
+      }
+  return sum;
+}
 
 // The tape evaluated in double (same operation meanings as the float form). `scratch` saves an
 // allocation per call in dense reference loops.
@@ -62,6 +95,7 @@ inline double evaluateDouble(const FieldTape& tape, double x, double y, double z
       case FieldOp::Less: r = a < b ? 1.0 : 0.0; break;
       case FieldOp::LessEq: r = a <= b ? 1.0 : 0.0; break;
       case FieldOp::Select: r = a != 0.0 ? b : v[in.c]; break;
+      case FieldOp::Sample: r = sampledReference(*tape.grids[static_cast<size_t>(in.value)], x, y, z); break;
     }
     v[i] = r;
   }

@@ -86,8 +86,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   if (size < 1 || size > 4 * 1024) return 0;
   using pf::field::FieldFormat;
-  const FieldFormat format = data[0] % 3 == 0 ? FieldFormat::Fidget : data[0] % 3 == 1 ? FieldFormat::HyperFun : FieldFormat::Language;
   std::string text(reinterpret_cast<const char*>(data) + 1, size - 1);
+  // Text starting as a sampled field's file is one (the .pfgrid reader, its data checks, the grid).
+  const FieldFormat format = text.rfind("pfgrid", 0) == 0 ? FieldFormat::Sampled
+                             : data[0] % 3 == 0         ? FieldFormat::Fidget
+                             : data[0] % 3 == 1         ? FieldFormat::HyperFun
+                                                        : FieldFormat::Language;
   pf::DiagnosticLog log;
   std::optional<pf::field::FieldTape> tape = pf::field::compileFieldSource(format, "fuzz", text, {}, 0.0, log);
   if (!tape) {

@@ -119,6 +119,45 @@ TEST(Model, HyperFunAttributesColourTheModel) {
   EXPECT_LT(ring[1], ball[1]);
 }
 
+// A sampled field's file (tests/data/ball.pfgrid: a ball of radius 0.7 sampled at 12^3, tricubic):
+// drawn over the grid's own box, its --ortho depth near the ball's; a truncated file named with
+// its data line and byte offset.
+TEST(Model, SampledFieldsAreDrawnOverTheirGrid) {
+  const pf::model::Model m = pf::model::loadModel(std::string(PF_SOURCE_DIR) + "/tests/data/ball.pfgrid");
+  EXPECT_EQ(m.format, pf::field::FieldFormat::Sampled);
+  EXPECT_FALSE(m.two_dimensional);
+  EXPECT_EQ(m.default_box_min, glm::dvec3(-1.0));
+  EXPECT_EQ(m.default_box_max, glm::dvec3(1.0));
+  const int n = 48;
+  pf::test::GlContext gl(n, n);
+  pf::model::ModelView v;
+  v.width = v.height = n;
+  v.ortho = true;
+  v.box_min = m.default_box_min;
+  v.box_max = m.default_box_max;
+  pf::model::drawModel(m, v);
+  const std::vector<float> z = pf::model::worldDepth(m, v, depthOf(gl));
+  int hits = 0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double x = -1 + (i + 0.5) * 2.0 / n, y = -1 + (j + 0.5) * 2.0 / n, h2 = 0.49 - x * x - y * y;
+      if (h2 < 0.1) continue;  // (12 samples per axis, B-spline: a few hundredths off, judged away from the rim)
+      const float got = z[size_t(j) * n + i];
+      ASSERT_FALSE(std::isnan(got)) << i << ", " << j;
+      EXPECT_NEAR(got, std::sqrt(h2), 0.06) << i << ", " << j;
+      ++hits;
+    }
+  EXPECT_GT(hits, 300);
+  try {
+    pf::model::loadModel(std::string(PF_SOURCE_DIR) + "/tests/data/truncated.pfgrid");
+    ADD_FAILURE() << "a truncated grid loaded";
+  } catch (const pf::model::ModelError& e) {
+    EXPECT_NE(std::string(e.what()).find("truncated.pfgrid:5:1: error: the data ends at byte offset 40 of the 256"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 // A HyperFun sphere whose radius grows with the time x[4]: --ortho depth against the formula.
 TEST(Model, HyperFunModelsReadTheTime) {
   const std::string path =

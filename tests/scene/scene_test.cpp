@@ -96,7 +96,7 @@ TEST(SceneErrors, NameTheFileLineAndKey) {
       {"{\"fields\": {\"f\": {\"fidget\": \"x var-x\", \"file\": \"f.vm\"}}, \"objects\": []}",
        "t.json:1: error: fields.f: a field has exactly one of \"file\", \"fidget\", \"hyperfun\" or \"language\""},
       {"{\"fields\": {\"f\": {\"file\": \"f.obj\"}}, \"objects\": []}",
-       "t.json:1: error: fields.f.file: 'f.obj': fields are read from Fidget .vm, HyperFun .hf or language .pfl files"},
+       "t.json:1: error: fields.f.file: 'f.obj': fields are read from Fidget .vm, HyperFun .hf, language .pfl or sampled .pfgrid files"},
       {"{\"fields\": {\"f\": {\"hyperfun\": \"my_model(x[3], a[1]) {\\n my_model = hfFoo(x);\\n}\"}}, \"objects\": []}",
        "f:2:13: error: unknown function 'hffoo'"},
       {"{\"fields\": {\"f\": {\"fidget\": \"x var-x\", \"time\": 1}}, \"objects\": []}",

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "compiler/native/native_cache.h"
+#include "frame_capture.h"
 
 namespace {
 
@@ -41,28 +42,17 @@ void colourAt(double x, double y, double z, double out[3]) {
 }
 double clamp01(double v) { return std::min(1.0, std::max(0.0, v)); }
 
-struct Image {
-  std::vector<unsigned char> rgba;
-  std::vector<float> depth;
-};
+using Image = pf::test::CapturedFrame;
 
 // What the tests draw: the ball (the implicit primitive over [-1, 1]^3, `method`), optionally
 // lit, and optionally a GL quad in the plane z = -0.95 coloured by the same interpolator with
 // `quad_field` as the field. Orthographic: x and y of the pixel centre, z = 1 - 2 depth.
 Image draw(int threads, int native, bool lit, float method, bool quad, float quad_field = -1.0f) {
-  const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_THREADS, threads, PF_JIT, native, 0};
-  PFcontext ctx = pfCreateContextAttribs(attribs);
-  Image img;
-  img.rgba.resize(static_cast<size_t>(kN) * kN * 4);
-  pfMakeCurrent(ctx, img.rgba.data(), GL_UNSIGNED_BYTE, kN, kN);
+  pf::test::FrameCapture capture(kN, kN, threads, native);
   const GLuint field = pfglCompileFieldEXT(GL_FIELD_HYPERFUN_EXT, "ball.hf", kColouredBall, 0.0f);
   EXPECT_NE(field, 0u);
-  pfglMatrixMode(GL_PROJECTION);
-  pfglLoadIdentity();
-  pfglOrtho(-1, 1, -1, 1, 1, 3);
-  pfglMatrixMode(GL_MODELVIEW);
-  pfglLoadIdentity();
-  if (lit) {
+  pf::test::viewUnitBoxFromAbove();
+  if (lit) {  // (a directional light: the modelview's translation leaves it looking down -z)
     const GLfloat dir[4] = {0, 0, 1, 0}, white[4] = {1, 1, 1, 1}, none[4] = {0, 0, 0, 1};
     pfglEnable(GL_LIGHTING);
     pfglEnable(GL_LIGHT0);
@@ -71,7 +61,6 @@ Image draw(int threads, int native, bool lit, float method, bool quad, float qua
     pfglLightModelfv(GL_LIGHT_MODEL_AMBIENT, none);
     pfglEnable(GL_COLOR_MATERIAL);
   }
-  pfglTranslated(0, 0, -2);
   pfglClearColor(0, 0, 0, 0);
   pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   pfglEnable(GL_DEPTH_TEST);
@@ -99,16 +88,7 @@ Image draw(int threads, int native, bool lit, float method, bool quad, float qua
     pfglVertex3f(-1, 1, -0.95f);
     pfglEnd();
   }
-  pfglFinish();
-  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
-  GLint w, h, bits;
-  void* data = nullptr;
-  EXPECT_TRUE(pfGetDepthBuffer(ctx, &w, &h, &bits, &data));
-  const float* d = static_cast<const float*>(data);
-  img.depth.assign(d, d + static_cast<size_t>(kN) * kN);
-  pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
-  pfDestroyContext(ctx);
-  return img;
+  return capture.finish();
 }
 
 // Each drawn pixel's colour against the formulas at the point its depth gives (times the

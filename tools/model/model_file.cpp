@@ -1,6 +1,7 @@
 // Models (see model_file.h): reading, the model command line's camera, drawing, depth output.
 #include "model/model_file.h"
 
+#include "compiler/field/sampled_reader.h"
 #include "text_file.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -36,18 +37,46 @@ Model loadModel(const std::string& path, double time) {
   const std::optional<field::FieldTape> tape =
       field::compileFieldSource(m.format, path, m.text, {}, time, log, "", &attributes);
   if (!tape) throw ModelError(log.format());
+  if (m.format == field::FieldFormat::Sampled && !tape->grids.empty()) {
+    // A sampled field's box is its grid's.
+    const field::SampledGrid& g = *tape->grids[0];
+    m.default_box_min = glm::dvec3(g.boxMin(0), g.boxMin(1), g.boxMin(2));
+    m.default_box_max = glm::dvec3(g.boxMax(0), g.boxMax(1), g.boxMax(2));
+  }
   m.two_dimensional = !tape->usesZ();
   m.coloured = !attributes.empty();
   return m;
 }
 
-GLenum fieldFormatOf(const Model& m) {
-  switch (m.format) {
-    case field::FieldFormat::HyperFun: return GL_FIELD_HYPERFUN_EXT;
-    case field::FieldFormat::Language: return GL_FIELD_LANGUAGE_EXT;
-    case field::FieldFormat::Fidget: break;
+GLuint uploadField(field::FieldFormat format, const std::string& name, const std::string& text, double time,
+                   const std::vector<double>& params, std::string* error) {
+  GLuint id = 0;
+  if (format == field::FieldFormat::Sampled) {
+    DiagnosticLog log;
+    const std::shared_ptr<const field::SampledGrid> grid = field::readSampledField(name, text, log);
+    if (!grid) {
+      if (error) *error = log.format();
+      return 0;
+    }
+    const GLdouble box[6] = {grid->boxMin(0), grid->boxMin(1), grid->boxMin(2),
+                             grid->boxMax(0), grid->boxMax(1), grid->boxMax(2)};
+    id = pfglSampledFieldEXT(name.c_str(), grid->size(0), grid->size(1), grid->size(2), box,
+                             grid->interpolation() == field::SampleInterpolation::Trilinear ? GL_FIELD_TRILINEAR_EXT
+                                                                                          : GL_FIELD_TRICUBIC_EXT,
+                             grid->samples());
+  } else {
+    const GLenum gl_format = format == field::FieldFormat::HyperFun   ? GL_FIELD_HYPERFUN_EXT
+                             : format == field::FieldFormat::Language ? GL_FIELD_LANGUAGE_EXT
+                                                                      : GL_FIELD_FIDGET_EXT;
+    id = pfglCompileFieldParamsEXT(gl_format, name.c_str(), text.c_str(), 0.0f, time,
+                                   static_cast<GLsizei>(params.size()), params.data());
   }
-  return GL_FIELD_FIDGET_EXT;
+  if (id == 0 && error) {
+    std::vector<char> log(1 << 16);
+    pfglGetFieldLogEXT(0, static_cast<GLsizei>(log.size()), nullptr, log.data());
+    *error = log.data();
+  }
+  return id;
 }
 
 namespace {
@@ -91,13 +120,10 @@ void loadMatrix(GLenum mode, const glm::dmat4& m) {
 }  // namespace
 
 void drawModel(const Model& model, const ModelView& view) {
-  const GLuint field = pfglCompileFieldParamsEXT(fieldFormatOf(model), model.path.c_str(), model.text.c_str(), 0.0f,
-                                                 model.format == field::FieldFormat::HyperFun ? view.time : 0.0, 0, nullptr);
-  if (field == 0) {
-    char log[4096];
-    pfglGetFieldLogEXT(0, sizeof log, nullptr, log);
-    throw ModelError(log);
-  }
+  std::string error;
+  const GLuint field = uploadField(model.format, model.path, model.text,
+                                   model.format == field::FieldFormat::HyperFun ? view.time : 0.0, {}, &error);
+  if (field == 0) throw ModelError(error);
   const ViewMatrices m = matricesOf(view, model.two_dimensional);
   pfglViewport(0, 0, view.width, view.height);
   pfglClearColor(0.0f, 0.0f, 0.0f, 1.0f);

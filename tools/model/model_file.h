@@ -45,8 +45,11 @@ struct Model {
 // Whether pfrender treats `path` as a model (by its extension: .vm, .hf, .pfl).
 bool isModelPath(const std::string& path);
 
-// GL_FIELD_FIDGET_EXT, GL_FIELD_HYPERFUN_EXT or GL_FIELD_LANGUAGE_EXT.
-GLenum fieldFormatOf(const struct Model& m);
+// Compiles a field's source into the current context -- pfglCompileFieldParamsEXT for the text
+// formats, pfglSampledFieldEXT for a sampled field's .pfgrid bytes -- and returns its id; 0 with
+// the diagnostics (file:line:col, caret) in `error` when it does not compile.
+GLuint uploadField(field::FieldFormat format, const std::string& name, const std::string& text, double time,
+                   const std::vector<double>& params, std::string* error);
 
 // Reads and checks a model file (throws ModelError), a HyperFun one at `time`.
 Model loadModel(const std::string& path, double time = 0.0);

@@ -1,5 +1,5 @@
 // pfview: primflow's scenes in a window (GLFW), to look at rather than read.
-//   pfview [SCENE.json | MODEL.vm|.hf|.pfl] [--size WxH] [--threads N] [--frames N [--orbit DEG]] [--screenshot FILE]
+//   pfview [SCENE.json | MODEL.vm|.hf|.pfl|.pfgrid] [--size WxH] [--threads N] [--frames N [--orbit DEG]] [--screenshot FILE]
 //          [--window-shot FILE] [--keys KEYS]
 // primflow renders every frame into a buffer; the window's own GL context only shows it (a
 // texture over the window) with a text overlay. Mouse: left-drag orbits, right-drag (or
@@ -8,7 +8,7 @@
 // M cycle the root-finding method of implicit surfaces and [ ] halve or double its steps (the
 // overlay shows the method, the field evaluations per ray and, for a model, its accuracy against
 // the double-precision reference on a grid of pixels), Home reset the camera, H help,
-// Q or Esc quit. A model (.vm, .hf, .pfl) opens as a scene of one implicit surface.
+// Q or Esc quit. A model (.vm, .hf, .pfl, .pfgrid) opens as a scene of one implicit surface.
 // While the camera moves the frame is rendered at a quarter of the window's size, and at full
 // size once it rests (progressive refinement). With --frames N it renders N full-size frames
 // (turning the camera --orbit degrees about the target before each after the first), saves
@@ -247,7 +247,7 @@ int main(int argc, char** argv) {
   std::string size, screenshot, window_shot, keys;
   int threads = 0, frames = 0;
   double orbit = 0;
-  app.add_option("scene", v.scene_path, "scene file (.json) or model (.vm, .hf, .pfl); none: the built-in showcase");
+  app.add_option("scene", v.scene_path, "scene file (.json) or model (.vm, .hf, .pfl, .pfgrid); none: the built-in showcase");
   app.add_option("--size", size, "window size WxH (default: the scene's)");
   app.add_option("--threads", threads, "rasterizer threads (0: PF_NUM_THREADS or all cores)")->check(CLI::Range(0, 256));
   app.add_option("--frames", frames, "render this many frames, then exit (scripted mode)")->check(CLI::Range(0, 100000));

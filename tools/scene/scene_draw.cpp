@@ -14,6 +14,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "model/model_file.h"
 #include "scene/scene.h"
 
 namespace pf::scene {
@@ -187,11 +188,7 @@ void compileSceneSources(const Scene& s) {
   }
   // (Checked when the scene was read: a failure here is the context's, e.g. inside glBegin.)
   for (const FieldSource& f : s.fields)
-    if (pfglCompileFieldParamsEXT(f.format == field::FieldFormat::HyperFun   ? GL_FIELD_HYPERFUN_EXT
-                                  : f.format == field::FieldFormat::Language ? GL_FIELD_LANGUAGE_EXT
-                                                                             : GL_FIELD_FIDGET_EXT,
-                                  f.name.c_str(), f.text.c_str(),
-                                  0.0f, f.time, static_cast<GLsizei>(f.params.size()), f.params.data()) == 0)
+    if (model::uploadField(f.format, f.name, f.text, f.time, f.params, nullptr) == 0)
       fail(s, f.origin, "the field '" + f.name + "' does not compile");
 }
 

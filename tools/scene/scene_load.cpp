@@ -347,7 +347,8 @@ void readFields(const Reader& r, const json& j, Scene& s) {
       src.file = r.relativePath(r.string(f["file"], p + "/file"), p + "/file");
       const std::optional<FieldFormat> format = field::fieldFormatOfPath(src.file);
       if (!format)
-        r.fail(p + "/file", "'" + src.file + "': fields are read from Fidget .vm, HyperFun .hf or language .pfl files");
+        r.fail(p + "/file",
+               "'" + src.file + "': fields are read from Fidget .vm, HyperFun .hf, language .pfl or sampled .pfgrid files");
       src.format = *format;
       std::string why;
       if (!tools::readTextFile(src.file, src.text, why)) r.fail(p + "/file", "cannot read '" + src.file + "': " + why);
@@ -356,8 +357,8 @@ void readFields(const Reader& r, const json& j, Scene& s) {
       src.format = f.contains("fidget") ? FieldFormat::Fidget : f.contains("hyperfun") ? FieldFormat::HyperFun : FieldFormat::Language;
       src.text = r.string(f[key], p + "/" + key);
     }
-    if (src.format == FieldFormat::Fidget && (f.contains("time") || f.contains("params")))
-      r.fail(p, "\"time\" and \"params\" are for HyperFun and language fields; Fidget models have neither");
+    if ((src.format == FieldFormat::Fidget || src.format == FieldFormat::Sampled) && (f.contains("time") || f.contains("params")))
+      r.fail(p, "\"time\" and \"params\" are for HyperFun and language fields; Fidget models and sampled fields have neither");
     if (src.format == FieldFormat::Language && f.contains("time"))
       r.fail(p, "\"time\" is HyperFun's x[4]: a language field takes its values through \"params\"");
     if (f.contains("time")) src.time = r.number(f["time"], p + "/time");

@@ -341,6 +341,21 @@ GLuint pfglCompileFieldParamsEXT(GLenum format, const GLchar *name, const GLchar
 void pfglGetFieldLogEXT(GLuint field, GLsizei bufSize, GLsizei *length, GLchar *log);
 /* The id of the field last compiled under `name`; 0 and GL_INVALID_VALUE if there is none. */
 GLuint pfglGetFieldEXT(const GLchar *name);
+/* A sampled field (a voxel array, seed 000 section 3; docs/models.md, "Sampled fields"):
+ * nx * ny * nz samples, x fastest, then y, then z -- the field's values (f >= 0 inside) at the
+ * points of a regular grid spanning box = {x0, y0, z0, x1, y1, z1}, sample (0, 0, 0) at the first
+ * corner -- interpolated trilinearly (GL_FIELD_TRILINEAR_EXT) or by the uniform cubic B-spline
+ * whose control points are the samples (GL_FIELD_TRICUBIC_EXT); outside the box, the value at its
+ * nearest point. Returns its id, usable wherever a field's is (the implicit primitive, every
+ * method); its Lipschitz bound comes from the samples, so `auto` sphere-traces it. Fewer than 2
+ * samples along an axis, a box not finite with min < max on each axis, a NaN or infinite sample,
+ * NULL name, box or samples: 0 and GL_INVALID_VALUE; more than 2^24 samples: GL_OUT_OF_MEMORY;
+ * another interpolation: GL_INVALID_ENUM; inside glBegin / glEnd: GL_INVALID_OPERATION. After
+ * a failure pfglGetFieldLogEXT(0, ...) says what was wrong. */
+#define GL_FIELD_TRILINEAR_EXT 0x31033
+#define GL_FIELD_TRICUBIC_EXT 0x31034
+GLuint pfglSampledFieldEXT(const GLchar *name, GLsizei nx, GLsizei ny, GLsizei nz, const GLdouble *box,
+                           GLenum interpolation, const GLfloat *samples);
 
 #ifdef __cplusplus
 }

@@ -225,6 +225,7 @@
 #define glRastParamfvEXT pfglRastParamfvEXT
 #define glRastParamiEXT pfglRastParamiEXT
 #define glRastParamivEXT pfglRastParamivEXT
+#define glSampledFieldEXT pfglSampledFieldEXT
 #define glSequencePointEXT pfglSequencePointEXT
 
 /* ---- GL 1.x, not implemented (yet): using one is a compile error ---------------------------- */
