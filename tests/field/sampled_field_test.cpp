@@ -3,7 +3,8 @@
 // samples, field_reference.h) and central differences; linear functions reproduced exactly;
 // the interval and slope forms enclosing dense float samples of the value and the derivatives
 // over random boxes (inside, across the edge, outside, huge); batched forms bit for bit the
-// scalar ones; and the .pfgrid reader's errors with file, line and byte offset.
+// scalar ones; the same bits on every SIMD target; and the .pfgrid reader's errors with file,
+// line and byte offset.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -193,6 +194,36 @@ TEST(SampledGrid, BatchedIntervalFormsAreTheScalarOnesBitForBit) {
       const IntervalSlope ws = se.evaluate(x, y, z, {0.1f, 0.2f}, {-0.3f, 0.4f}, {0.9f, 1.0f});
       EXPECT_TRUE(std::memcmp(&ws, &sout[j], sizeof ws) == 0) << "box " << j;
     }
+  }
+}
+
+TEST(SampledGrid, EverySimdTargetGivesTheSameBits) {
+  for (SampleInterpolation interpolation : kBoth) {
+    const auto grid = randomGrid(interpolation, 6, 7, 5, 13);
+    const FieldTape tape = sampledFieldTape(grid);
+    float x[FloatEvaluator::kBatch], y[FloatEvaluator::kBatch], z[FloatEvaluator::kBatch];
+    std::mt19937 rng(4);
+    std::uniform_real_distribution<float> u(-2.0f, 2.0f);
+    for (int i = 0; i < FloatEvaluator::kBatch; ++i) x[i] = u(rng), y[i] = u(rng), z[i] = u(rng);
+    std::vector<float> first;
+    std::vector<FieldGradient> first_gradients;
+    for (const std::string& target : floatSlotsTargets()) {
+      ASSERT_TRUE(useFloatSlotsTarget(target));
+      FloatEvaluator fe(tape);
+      GradientEvaluator ge(tape);
+      std::vector<float> v(FloatEvaluator::kBatch);
+      std::vector<FieldGradient> g(FloatEvaluator::kBatch);
+      fe.evaluate(x, y, z, FloatEvaluator::kBatch, v.data());
+      ge.evaluate(x, y, z, FloatEvaluator::kBatch, g.data());
+      if (first.empty()) {
+        first = v;
+        first_gradients = g;
+        continue;
+      }
+      EXPECT_EQ(std::memcmp(first.data(), v.data(), v.size() * sizeof(float)), 0) << target;
+      EXPECT_EQ(std::memcmp(first_gradients.data(), g.data(), g.size() * sizeof(FieldGradient)), 0) << target;
+    }
+    EXPECT_TRUE(useFloatSlotsTarget("best"));
   }
 }
 
