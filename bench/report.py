@@ -185,6 +185,27 @@ def table_lists():
                   "frame, list ms", "list / direct", "compiling the list ms"], body)
 
 
+def table_fixed():
+    """screen_triangle with X, Y, Z as floats against figure 7's fixed point (bench/run_fixed)."""
+    cases = {}
+    for r in rows("results_fixed.csv"):
+        cases.setdefault(r["variant"], {}).setdefault(r["native"] == "1", []).append(r)
+    body = []
+    base = cases.get("float", {})
+    for variant in ("float", "fixed"):
+        ways = cases.get(variant, {})
+        if True not in ways or False not in ways:
+            continue
+        native, interp = median_of(ways[True], "frame_ms"), median_of(ways[False], "frame_ms")
+        executed = median_of(ways[False], "executed_pixel_instructions")
+        ratio = lambda now, key, native_side: fmt(now / median_of(base[native_side], key), 2) if base else "--"
+        body.append([f"`{variant}`", ways[False][0]["pixel_instructions"], f"{executed:,.0f}",
+                     ratio(executed, "executed_pixel_instructions", False), fmt(native, 2),
+                     ratio(native, "frame_ms", True), fmt(interp, 2), ratio(interp, "frame_ms", False)])
+    return table(["X, Y, Z", "pixel instructions", "executed per frame (interpreter)", "/ float",
+                  "frame ms, native", "/ float", "frame ms, interpreter", "/ float"], body)
+
+
 def table_depth_cull():
     cases = {}
     for r in rows("results_depth_cull.csv"):
@@ -243,6 +264,7 @@ import composite_report  # noqa: E402
 TABLES = {
     "llvmpipe": table_llvmpipe,
     "lists": table_lists,
+    "fixed": table_fixed,
     "profile": table_profile,
     "compile": table_compile,
     "particles": table_particles,
