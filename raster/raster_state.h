@@ -8,12 +8,14 @@
 
 #include "compiler/types.h"
 #include "raster/field/implicit_field.h"
+#include "raster/fragment_ops.h"
 
 namespace pf {
 
 struct CompiledPrimitive;
 
-enum class DepthFunc : uint8_t { Never, Less, Equal, LessEqual, Greater, NotEqual, GreaterEqual, Always };
+// glDepthFunc's comparison (the depth test's and the alpha test's: fragment_ops.h).
+using DepthFunc = CompareFunc;
 
 struct RasterState {
   // Viewport and depth-range transform (window = ndc * scale + offset), as screen() uses it.
@@ -28,6 +30,9 @@ struct RasterState {
   // Colour channels written (bit k: channel k of RGBA). The renderer keeps one mask per flush,
   // so that the deferred shading pass writes every pixel with the mask its instance had.
   uint8_t color_mask = 0xf;
+  // Scissor, alpha test, blending, logic op (fragment_ops.h): a draw with any but the scissor
+  // is shaded in submission order, not deferred.
+  FragmentOps fragment;
   // Column-major matrices for the space transforms of the language: the inverse projection
   // (clip to eye, eye()), the projection (eye to clip, clip()), and the inverse modelview (eye to
   // object, object(); its transpose takes object normals to eye, eye_normal()).

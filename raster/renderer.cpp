@@ -72,10 +72,13 @@ void Renderer::setTarget(uint8_t* color, float* depth, int width, int height) {
   height_ = height;
 }
 
-void Renderer::clear(bool color, bool depth, const float rgba[4], float z, uint8_t color_mask) {
+void Renderer::clear(bool color, bool depth, const float rgba[4], float z, uint8_t color_mask, const PixelRect& rect) {
   // A clear after drawing ends the frame so far: what was drawn must land first; so does a
-  // pending colour clear with another mask.
-  if (!scene_.instances.empty() || (color && scene_.clear.color && scene_.clear.color_mask != color_mask)) flush();
+  // pending colour clear with another mask, and a pending clear of another rectangle.
+  if (!scene_.instances.empty() || (color && scene_.clear.color && scene_.clear.color_mask != color_mask) ||
+      ((scene_.clear.color || scene_.clear.depth) && !(scene_.clear.rect == rect)))
+    flush();
+  scene_.clear.rect = rect;
   if (color) {
     scene_.clear.color = true;
     scene_.clear.color_mask = color_mask;
@@ -387,6 +390,10 @@ bool Renderer::binInstance(const CompiledPrimitive& prim, const SetupOutput& out
   // The pixels it may touch: its bound within the viewport and the framebuffer.
   int vx0 = std::max(state.vp_x0, 0), vy0 = std::max(state.vp_y0, 0);
   int vx1 = std::min(state.vp_x1, width_), vy1 = std::min(state.vp_y1, height_);
+  if (state.fragment.scissor) {  // the scissor test: pixels outside the box are never run
+    vx0 = std::max(vx0, state.fragment.scissor_x0), vy0 = std::max(vy0, state.fragment.scissor_y0);
+    vx1 = std::min(vx1, state.fragment.scissor_x1), vy1 = std::min(vy1, state.fragment.scissor_y1);
+  }
   if (vx0 >= vx1 || vy0 >= vy1) return false;
   inst.x0 = vx0, inst.x1 = vx1, inst.y0 = vy0, inst.y1 = vy1;
   if (out.has_bound) {
@@ -425,33 +432,7 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
   const int tx = tile % scene_.tiles_x, ty = tile / scene_.tiles_x;
   const int x0 = tx * kTileSize, y0 = ty * kTileSize;
   const int w = std::min(kTileSize, width_ - x0), h = std::min(kTileSize, height_ - y0);
-
-  // (The clears read the buffers' addresses into locals first: a byte store may alias any
-  // member, and the loops would reload them at every pixel instead of filling rows.)
-  const size_t stride = static_cast<size_t>(width_);
-  if (scene_.clear.color) {
-    uint8_t c[4];
-    for (int k = 0; k < 4; ++k) c[k] = toUnorm8(scene_.clear.rgba[k]);
-    const uint8_t mask = scene_.clear.color_mask;
-    uint8_t* const color = color_;
-    uint32_t pixel;
-    std::memcpy(&pixel, c, sizeof pixel);
-    for (int y = 0; y < h; ++y) {
-      uint8_t* const row = color + ((static_cast<size_t>(y0 + y) * stride) + static_cast<size_t>(x0)) * 4;
-      if (mask == 0xf) {
-        for (int x = 0; x < w; ++x) std::memcpy(row + 4 * x, &pixel, sizeof pixel);
-        continue;
-      }
-      for (int x = 0; x < w; ++x)
-        for (int k = 0; k < 4; ++k)
-          if (mask & (1u << k)) row[4 * x + k] = c[k];
-    }
-  }
-  if (scene_.clear.depth && depth_) {
-    float* const depth = depth_;
-    const float z = scene_.clear.z;
-    for (int y = 0; y < h; ++y) std::fill_n(depth + static_cast<size_t>(y0 + y) * stride + x0, w, z);
-  }
+  if (scene_.clear.color || scene_.clear.depth) clearTile(x0, y0, w, h);
 
   const TileBin& bin = scene_.bins[tile];
   if (bin.instances.empty()) return;
@@ -464,7 +445,11 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
   s.slot_planes.resize(scene_.gbuffer_slots);
   for (int k = 0; k < scene_.gbuffer_slots; ++k) s.slot_planes[k] = s.gbuffer.data() + kPlane * k;
 
-  if (depth_) s.coarse_depth.startTile(depth_, width_, x0, y0, w, h, scene_.clear.depth);
+  // (Coarse depth may take the clear depth as known only where the clear covered the tile.)
+  const PixelRect& cr = scene_.clear.rect;
+  const bool depth_cleared =
+      scene_.clear.depth && cr.x0 <= x0 && cr.y0 <= y0 && cr.x1 >= x0 + w && cr.y1 >= y0 + h;
+  if (depth_) s.coarse_depth.startTile(depth_, width_, x0, y0, w, h, depth_cleared);
   s.gang.clear();
 
   BlockTarget target;
@@ -481,8 +466,20 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
   // its pixel program reads first -- is fetched two instances ahead, its Instance four ahead.
   // Measured on 100k small spheres: without it, the program's first read of a uniform waited
   // on memory for ~7% of the frame.
+  //
+  // Ordered draws (fragment_ops.h; docs/architecture.md, "Ordered fragments"): before one
+  // runs, the deferred pixels committed so far are shaded (they lie under it); once it has run
+  // -- at the next instance, or after the bin -- its own pixels are shaded and written through
+  // its fragment operations, the depth put back where the alpha test discarded a fragment.
+  const RasterState* ordered = nullptr;  // the ordered draw that ran last, not yet written
+  PixelRect ordered_bound;
+  bool deferred_pending = false;         // deferred pixels committed and not shaded yet
   const size_t count = bin.instances.size();
   for (size_t k = 0; k < count; ++k) {
+    if (ordered) {
+      resolveTile(s, x0, y0, w, h, ordered, ordered_bound);
+      ordered = nullptr;
+    }
     if (k + 4 < count) __builtin_prefetch(&scene_.instances[bin.instances[k + 4]]);
     if (k + 2 < count) {
       const Instance& ahead = scene_.instances[bin.instances[k + 2]];
@@ -499,6 +496,21 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
     const ChannelLayout& layout = scene_.layouts[inst.layout];
     const RasterState& state = scene_.states[inst.state];
     const uint32_t* shared = inst.shared_offset == kNoShared ? nullptr : scene_.records.data() + inst.shared_offset;
+    if (state.fragment.ordered()) {
+      if (!s.gang.empty()) s.gang.run(s.executor, scene_, target, depth_ ? &s.coarse_depth : nullptr, false);
+      if (deferred_pending) resolveTile(s, x0, y0, w, h, nullptr, PixelRect{});
+      deferred_pending = false;
+      ordered = &state;
+      ordered_bound = PixelRect{ix0, iy0, ix1, iy1};
+      // The depth its fragments may write, kept for those the alpha test will discard.
+      s.depth_before.clear();
+      if (state.fragment.alpha_test && depth_ && state.depth_test && state.depth_write)
+        for (int y = iy0; y < iy1; ++y)
+          s.depth_before.insert(s.depth_before.end(), depth_ + static_cast<size_t>(y) * width_ + ix0,
+                                depth_ + static_cast<size_t>(y) * width_ + ix1);
+    } else {
+      deferred_pending = true;
+    }
     // Coarse depth culling: the tile's blocks (indices within the tile) the instance touches,
     // and whether its depth bound may skip some of them.
     const int cbx0 = (ix0 - x0) / kBlockSize, cbx1 = (ix1 - 1 - x0) / kBlockSize;
@@ -531,7 +543,7 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
     // its blocks whatever the bound's shape, so it takes bounds that on aligned blocks would
     // have whole blocks inside).
     const bool packs = pack_small_bounds_ && PixelExecutor::packs(*inst.prim, layout);
-    const bool gangs = packs && gang_blocks_ && inst.prim->pixel.gangs &&
+    const bool gangs = packs && gang_blocks_ && inst.prim->pixel.gangs && !ordered &&
                        (ix1 - ix0) * (iy1 - iy0) <= kGangArea;
     const GangBlock::Rect rect{ix0, iy0, ix1, iy1};
     // The block being filled runs first unless this instance joins it (the bin's order).
@@ -653,9 +665,8 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
       s.coarse_depth.written(ix0 - x0, iy0 - y0, ix1 - x0, iy1 - y0);
   }
   s.gang.run(s.executor, scene_, target, depth_ ? &s.coarse_depth : nullptr, false);
-  ShadeTarget st{color_, width_, x0, y0, w, h, scene_.color_mask};
-  s.pixels_shaded += shadeTile(s.shade_ids.data(), s.slot_planes.data(), scene_.shades.data(), scene_.lightings.data(),
-                              scene_.lighting_equations.data(), st);
+  if (ordered) resolveTile(s, x0, y0, w, h, ordered, ordered_bound);
+  else if (deferred_pending) resolveTile(s, x0, y0, w, h, nullptr, PixelRect{});
 }
 
 void Renderer::flush() {

@@ -72,8 +72,9 @@ class Renderer : private SubInstanceSink {
   void setTarget(uint8_t* color, float* depth, int width, int height);
 
   // Recorded; applied at flush before the instances that follow it. `color_mask`: the RGBA
-  // channels (bit k: channel k) the colour clear writes.
-  void clear(bool color, bool depth, const float rgba[4], float z, uint8_t color_mask = 0xf);
+  // channels (bit k: channel k) the colour clear writes; `rect`: the pixels cleared.
+  void clear(bool color, bool depth, const float rgba[4], float z, uint8_t color_mask = 0xf,
+             const PixelRect& rect = PixelRect{});
 
   // Runs setup and bins the instance (`sequence_points`: how many it has, for primitives
   // with parameter-sized arrays; otherwise the primitive's own count). Instances of other
@@ -142,6 +143,10 @@ class Renderer : private SubInstanceSink {
     uint64_t blocks_depth_culled = 0;
     uint64_t pixels_depth_culled = 0;
     std::vector<uint32_t> shade_ids;
+    // Ordered draws (fragment_ops.h): the pixels the alpha test discarded, and the depth under
+    // the instance before it ran (restored where its fragment was discarded).
+    std::vector<uint8_t> discarded;
+    std::vector<float> depth_before;
     std::vector<float> gbuffer;
     std::vector<float*> slot_planes;
     uint64_t pixels_shaded = 0;
@@ -149,6 +154,11 @@ class Renderer : private SubInstanceSink {
   };
 
   void runTile(int tile, WorkerScratch& scratch);
+  // runTile's parts: the pending clear within the tile; shading the pixels committed to the
+  // tile's G-buffer (`ordered`: an ordered draw's, through its fragment operations, the depth
+  // restored under its discarded fragments from depth_before over `bound`), then emptying it.
+  void clearTile(int x0, int y0, int w, int h);
+  void resolveTile(WorkerScratch& s, int x0, int y0, int w, int h, const RasterState* ordered, const PixelRect& bound);
   // submit()'s parts: the state, layout and shade bookkeeping (false: no target), the shared
   // interpolators' setup, and the binning of an instance set up.
   bool beginSubmission(const ChannelLayout& layout, const RasterState& state, const ShadeState& shade,

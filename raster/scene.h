@@ -34,11 +34,18 @@ struct TileBin {
   std::vector<uint32_t> instances;
 };
 
+// A rectangle of pixels [x0, x1) x [y0, y1) in window coordinates.
+struct PixelRect {
+  int x0 = INT32_MIN, y0 = INT32_MIN, x1 = INT32_MAX, y1 = INT32_MAX;  // (the default: everything)
+  bool operator==(const PixelRect&) const = default;
+};
+
 struct PendingClear {
   bool color = false, depth = false;
   float rgba[4] = {0, 0, 0, 0};
   float z = 1.0f;
   uint8_t color_mask = 0xf;  // RGBA channels the colour clear writes
+  PixelRect rect;            // the pixels cleared (the scissor box, under GL_SCISSOR_TEST)
 };
 
 struct Scene {

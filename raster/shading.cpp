@@ -192,7 +192,10 @@ struct RowSpan {
     shaded = 0;
     for (int i = 0; i < n; ++i) shaded += span_ids[i] != 0 ? 1u : 0u;
   }
-  if (t.color_mask == 0xf) {
+  if (t.fragments) {
+    writeFragments(*t.fragments, t.color_mask, c, skip, n, span_ids, px,
+                   t.discarded + static_cast<size_t>(y) * kTileSize + x);
+  } else if (t.color_mask == 0xf) {
     // toUnorm8 without a branch, a plane at a time, so that the loops vectorize (the same bytes);
     // then the four planes interleaved into RGBA words (byte 0 red: little-endian), a gap's pixel
     // keeping the word it has.

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 
+#include "raster/fragment_ops.h"
 #include "raster/lighting.h"
 
 namespace pf {
@@ -31,6 +32,11 @@ struct ShadeTarget {
   int stride;       // pixels per row
   int x0, y0, w, h; // the tile's pixels in window coordinates
   uint8_t color_mask = 0xf;  // RGBA channels written (bit k: channel k)
+  // An ordered draw's fragment operations (fragment_ops.h), or null: the colours replace the
+  // pixels'. With them, `discarded` (a kTileSize x kTileSize plane, like the ids) gets 1 where
+  // the alpha test discarded the pixel's fragment, 0 at the other shaded pixels.
+  const FragmentOps* fragments = nullptr;
+  uint8_t* discarded = nullptr;
 };
 
 // Shades the tile: for every pixel with a non-zero shade id (1 + index into `shades`).
