@@ -37,6 +37,7 @@ void pushAttrib(PFcontextRec& ctx, GLbitfield mask) {
   s.color_mask = ctx.color_mask;
   std::copy(std::begin(ctx.hints), std::end(ctx.hints), s.hints);
   s.list_base = ctx.lists.base;
+  s.fragment = ctx.fragment;
   try {
     ctx.attrib_stack.push_back(s);
   } catch (const std::bad_alloc&) {
@@ -67,7 +68,14 @@ void popAttrib(PFcontextRec& ctx) {
     l.per_pixel_vertices = per_pixel;
     ctx.shade_model = s.shade_model;
   }
+  FragmentState& f = ctx.fragment;
+  const FragmentState& saved = s.fragment;
   if (m & GL_ENABLE_BIT) {
+    f.scissor_test = saved.scissor_test;
+    f.alpha_test = saved.alpha_test;
+    f.blend = saved.blend;
+    f.logic_op = saved.logic_op;
+    f.dither = saved.dither;
     ctx.depth_test = s.depth_test;
     ctx.cull = s.cull;
     l.enabled = s.lighting.enabled;
@@ -97,9 +105,19 @@ void popAttrib(PFcontextRec& ctx) {
     std::copy(std::begin(s.viewport), std::end(s.viewport), ctx.viewport);
     std::copy(std::begin(s.depth_range), std::end(s.depth_range), ctx.depth_range);
   }
-  if (m & GL_COLOR_BUFFER_BIT) {
+  if (m & GL_COLOR_BUFFER_BIT) {  // everything of the fragment operations but the scissor
     std::copy(std::begin(s.clear_color), std::end(s.clear_color), ctx.clear_color);
     ctx.color_mask = s.color_mask;
+    const bool scissor_test = f.scissor_test;
+    int box[4];
+    std::copy(std::begin(f.scissor), std::end(f.scissor), box);
+    f = saved;
+    f.scissor_test = scissor_test;
+    std::copy(std::begin(box), std::end(box), f.scissor);
+  }
+  if (m & GL_SCISSOR_BIT) {
+    f.scissor_test = saved.scissor_test;
+    std::copy(std::begin(saved.scissor), std::end(saved.scissor), f.scissor);
   }
   if (m & GL_HINT_BIT) std::copy(std::begin(s.hints), std::end(s.hints), ctx.hints);
   if (m & GL_LIST_BIT) ctx.lists.base = s.list_base;

@@ -67,6 +67,13 @@ Values<T, N> valuesOf(const U* p, int n, GLint count) {
   X(FrontFace, frontFace, GLenum)                                                         \
   X(ShadeModel, shadeModel, GLenum)                                                       \
   X(Hint, hint, GLenum, GLenum)                                                           \
+  /* fragment_commands.cpp */                                                             \
+  X(Scissor, scissor, GLint, GLint, GLsizei, GLsizei)                                     \
+  X(AlphaFunc, alphaFunc, GLenum, GLfloat)                                                \
+  X(BlendFuncSeparate, blendFuncSeparate, GLenum, GLenum, GLenum, GLenum)                 \
+  X(BlendEquation, blendEquation, GLenum)                                                 \
+  X(BlendColor, blendColor, GLfloat, GLfloat, GLfloat, GLfloat)                           \
+  X(LogicOp, logicOp, GLenum)                                                             \
   /* attrib_stack.cpp */                                                                  \
   X(PushAttrib, pushAttrib, GLbitfield)                                                   \
   X(PopAttrib, popAttrib)                                                                 \

@@ -1,5 +1,5 @@
 // The GL 1.x state primflow holds constant, for glGet* (query.h): a program asking about fog,
-// blending, the stencil buffer, texturing and the rest gets GL's answer for a context that has
+// the stencil buffer, texturing and the rest gets GL's answer for a context that has
 // never changed them (which in primflow cannot change), never GL_INVALID_ENUM; the absent
 // buffers have 0 bits. The conformance case state_queries_all compares these with OSMesa's in a
 // new context; the implementation limits at the end are primflow's own (docs/api.md).
@@ -107,11 +107,7 @@ constexpr Constant kConstants[] = {
     {GL_TEXTURE_GEN_T, 1, {kFalse}, kCapability},
     {GL_TEXTURE_GEN_R, 1, {kFalse}, kCapability},
     {GL_TEXTURE_GEN_Q, 1, {kFalse}, kCapability},
-    // Fragment operations.
-    {GL_SCISSOR_TEST, 1, {kFalse}, kCapability},
-    {GL_ALPHA_TEST, 1, {kFalse}, kCapability},
-    {GL_ALPHA_TEST_FUNC, 1, {GL_ALWAYS}},
-    {GL_ALPHA_TEST_REF, 1, {0}, kNormalized},
+    // Fragment operations (those primflow has: state_queries.cpp).
     {GL_STENCIL_TEST, 1, {kFalse}, kCapability},
     {GL_STENCIL_FUNC, 1, {GL_ALWAYS}},
     {GL_STENCIL_VALUE_MASK, 1, {255}},
@@ -119,19 +115,7 @@ constexpr Constant kConstants[] = {
     {GL_STENCIL_FAIL, 1, {GL_KEEP}},
     {GL_STENCIL_PASS_DEPTH_FAIL, 1, {GL_KEEP}},
     {GL_STENCIL_PASS_DEPTH_PASS, 1, {GL_KEEP}},
-    {GL_BLEND, 1, {kFalse}, kCapability},
-    {GL_BLEND_SRC, 1, {GL_ONE}},
-    {GL_BLEND_DST, 1, {GL_ZERO}},
-    {GL_BLEND_SRC_RGB, 1, {GL_ONE}},
-    {GL_BLEND_DST_RGB, 1, {GL_ZERO}},
-    {GL_BLEND_SRC_ALPHA, 1, {GL_ONE}},
-    {GL_BLEND_DST_ALPHA, 1, {GL_ZERO}},
-    {GL_BLEND_EQUATION, 1, {GL_FUNC_ADD}},
-    {GL_BLEND_COLOR, 4, {0, 0, 0, 0}, kNormalized},
-    {GL_DITHER, 1, {kTrue}, kCapability},
     {GL_INDEX_LOGIC_OP, 1, {kFalse}, kCapability},
-    {GL_COLOR_LOGIC_OP, 1, {kFalse}, kCapability},
-    {GL_LOGIC_OP_MODE, 1, {GL_COPY}},
     // Framebuffer: one front buffer, no index, stencil or accumulation buffer.
     {GL_DRAW_BUFFER, 1, {GL_FRONT}},
     {GL_READ_BUFFER, 1, {GL_FRONT}},

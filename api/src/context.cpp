@@ -195,8 +195,8 @@ GLboolean pfMakeCurrent(PFcontext ctx, void* buffer, GLenum type, GLsizei width,
     ctx->viewport[1] = 0;
     ctx->viewport[2] = width;
     ctx->viewport[3] = height;
-    ctx->first_size[0] = width;
-    ctx->first_size[1] = height;
+    ctx->fragment.scissor[2] = width;  // and so does the scissor box
+    ctx->fragment.scissor[3] = height;
     ctx->ever_bound = true;
   }
   pf::g_current = ctx;

@@ -70,6 +70,26 @@ struct ClientArray {
   const void* pointer = nullptr;
 };
 
+// The per-fragment operations' state (GL 1.5 section 4.1; fragment_commands.cpp): what
+// rasterState() snapshots into raster/fragment_ops.h's FragmentOps for each draw.
+struct FragmentState {
+  bool scissor_test = false;
+  int scissor[4] = {0, 0, 0, 0};  // x, y, width, height (the first drawable's size at first bind)
+  bool alpha_test = false;
+  GLenum alpha_func = GL_ALWAYS;
+  float alpha_ref = 0.0f;         // clamped to [0, 1]
+  bool blend = false;
+  GLenum blend_src_rgb = GL_ONE, blend_dst_rgb = GL_ZERO, blend_src_alpha = GL_ONE, blend_dst_alpha = GL_ZERO;
+  GLenum blend_equation = GL_FUNC_ADD;
+  float blend_color[4] = {0, 0, 0, 0};  // clamped to [0, 1]
+  bool logic_op = false;
+  GLenum logic_mode = GL_COPY;
+  bool dither = true;             // kept and read back; nothing is dithered (as in llvmpipe)
+};
+
+// The snapshot of them a draw takes (fragment_commands.cpp).
+FragmentOps fragmentOps(const FragmentState& f);
+
 // glHint's targets (hintIndex gives a target's place; -1: not a target).
 constexpr int kHintCount = 7;
 int hintIndex(GLenum target);
@@ -95,6 +115,7 @@ struct AttribState {
   uint8_t color_mask;
   GLenum hints[kHintCount];                          // GL_HINT_BIT
   GLuint list_base;                                  // GL_LIST_BIT
+  FragmentState fragment;                            // GL_SCISSOR_BIT, GL_COLOR_BUFFER_BIT, GL_ENABLE_BIT
 };
 
 // glPixelStore's modes for one direction (GL 1.5 table 3.1): pack (glReadPixels writes by
@@ -156,7 +177,6 @@ struct PFcontextRec {
   int width = 0, height = 0;
   std::vector<float> depth;
   bool ever_bound = false;
-  int first_size[2] = {0, 0};  // the first drawable's: GL's initial viewport and scissor box
   unsigned iteration_cap = 65536;
   // Called by glFinish / glFlush after the drawing has executed, if any drawing has since the
   // last call (api/src/frame_hook.h).
@@ -186,6 +206,7 @@ struct PFcontextRec {
   GLenum front_face = GL_CCW;
   GLenum shade_model = GL_SMOOTH;
   uint8_t color_mask = 0xf;  // bit k: RGBA channel k written
+  pf::FragmentState fragment;
   pf::PixelStore pack, unpack;
   GLenum matrix_mode = GL_MODELVIEW;
   pf::MatrixStack modelview{32}, projection{4}, texture{4};

@@ -38,7 +38,8 @@ pf::DepthFunc toDepthFunc(GLenum f) {
 float clamp01(double v) { return v > 0 ? (v < 1 ? static_cast<float>(v) : 1.0f) : 0.0f; }
 
 // The capabilities primflow has: depth test, face culling, lighting and its lights, colour
-// material, normalising and rescaling normals, per-pixel lighting of vertex primitives.
+// material, normalising and rescaling normals, per-pixel lighting of vertex primitives, the
+// per-fragment operations and dithering (kept, nothing dithered).
 bool* capability(PFcontextRec& ctx, GLenum cap) {
   if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + pf::kMaxLights) return &ctx.lighting.lights[cap - GL_LIGHT0].enabled;
   switch (cap) {
@@ -49,6 +50,11 @@ bool* capability(PFcontextRec& ctx, GLenum cap) {
     case GL_NORMALIZE: return &ctx.lighting.normalize;
     case GL_RESCALE_NORMAL: return &ctx.lighting.rescale_normal;
     case GL_PER_PIXEL_LIGHTING_EXT: return &ctx.lighting.per_pixel_vertices;
+    case GL_SCISSOR_TEST: return &ctx.fragment.scissor_test;
+    case GL_ALPHA_TEST: return &ctx.fragment.alpha_test;
+    case GL_BLEND: return &ctx.fragment.blend;
+    case GL_COLOR_LOGIC_OP: return &ctx.fragment.logic_op;
+    case GL_DITHER: return &ctx.fragment.dither;
     default: ctx.setError(GL_INVALID_ENUM); return nullptr;
   }
 }
@@ -121,6 +127,7 @@ pf::RasterState PFcontextRec::rasterState() const {
   s.front_ccw = front_face == GL_CCW;
   s.flat_shading = shade_model == GL_FLAT;
   s.color_mask = color_mask;
+  s.fragment = pf::fragmentOps(fragment);
   const glm::mat4 inv = glm::inverse(projection.top);
   const glm::mat4 inv_mv = glm::inverse(modelview.top);
   // A singular matrix (glScalef(1, 1, 0), planar shadows) has no inverse: its inf and NaN become
@@ -148,8 +155,11 @@ void clear(PFcontextRec& ctx, GLbitfield mask) {
   }
   bool depth = (mask & GL_DEPTH_BUFFER_BIT) && ctx.depth_bits > 0 && ctx.depth_write;
   try {  // a clear after drawing draws first
+    const pf::FragmentOps ops = pf::fragmentOps(ctx.fragment);  // the scissor box limits a clear
+    pf::PixelRect rect;
+    if (ops.scissor) rect = pf::PixelRect{ops.scissor_x0, ops.scissor_y0, ops.scissor_x1, ops.scissor_y1};
     ctx.renderer.clear((mask & GL_COLOR_BUFFER_BIT) != 0 && ctx.color_mask != 0, depth, ctx.clear_color,
-                       ctx.clear_depth, ctx.color_mask);
+                       ctx.clear_depth, ctx.color_mask, rect);
   } catch (const std::bad_alloc&) {
     ctx.outOfMemory("glClear");
   }

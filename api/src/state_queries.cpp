@@ -25,6 +25,31 @@ bool arrayQuery(const pf::ClientArray& a, GLenum pname, GLenum size, GLenum type
   return true;
 }
 
+// The per-fragment operations' state (fragment_commands.cpp).
+bool fragmentQuery(const pf::FragmentState& f, GLenum pname, Query& q) {
+  switch (pname) {
+    case GL_SCISSOR_TEST: q.set({f.scissor_test ? 1.0 : 0.0}); return true;
+    case GL_ALPHA_TEST: q.set({f.alpha_test ? 1.0 : 0.0}); return true;
+    case GL_ALPHA_TEST_FUNC: q.set({double(f.alpha_func)}); return true;
+    case GL_ALPHA_TEST_REF: q.set({f.alpha_ref}, true); return true;
+    case GL_BLEND: q.set({f.blend ? 1.0 : 0.0}); return true;
+    case GL_BLEND_SRC: case GL_BLEND_SRC_RGB: q.set({double(f.blend_src_rgb)}); return true;
+    case GL_BLEND_DST: case GL_BLEND_DST_RGB: q.set({double(f.blend_dst_rgb)}); return true;
+    case GL_BLEND_SRC_ALPHA: q.set({double(f.blend_src_alpha)}); return true;
+    case GL_BLEND_DST_ALPHA: q.set({double(f.blend_dst_alpha)}); return true;
+    case GL_BLEND_EQUATION: case GL_BLEND_EQUATION_ALPHA: q.set({double(f.blend_equation)}); return true;
+    case GL_BLEND_COLOR: {
+      const float* c = f.blend_color;
+      q.set({c[0], c[1], c[2], c[3]}, true);
+      return true;
+    }
+    case GL_COLOR_LOGIC_OP: q.set({f.logic_op ? 1.0 : 0.0}); return true;
+    case GL_LOGIC_OP_MODE: q.set({double(f.logic_mode)}); return true;
+    case GL_DITHER: q.set({f.dither ? 1.0 : 0.0}); return true;
+    default: return false;
+  }
+}
+
 bool query(const PFcontextRec& ctx, GLenum pname, Query& q) {
   auto set = [&](std::initializer_list<double> values, bool normalized = false) { q.set(values, normalized); };
   auto matrix = [&](const glm::mat4& m, bool transpose = false) {
@@ -125,9 +150,13 @@ bool query(const PFcontextRec& ctx, GLenum pname, Query& q) {
     case GL_CLIENT_ATTRIB_STACK_DEPTH: set({double(ctx.client_attrib_stack.size())}); return true;
     case GL_MAX_ATTRIB_STACK_DEPTH: case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: set({double(pf::kMaxAttribStackDepth)}); return true;
     case GL_SUBPIXEL_BITS: set({8}); return true;  // window coordinates snap to 1/256 pixel
-    // The scissor box: GL's initial one, the first drawable (there is no glScissor).
-    case GL_SCISSOR_BOX: set({0, 0, double(ctx.first_size[0]), double(ctx.first_size[1])}); return true;
+    case GL_SCISSOR_BOX: {
+      const int* b = ctx.fragment.scissor;
+      set({double(b[0]), double(b[1]), double(b[2]), double(b[3])});
+      return true;
+    }
     default:
+      if (fragmentQuery(ctx.fragment, pname, q)) return true;
       if (pname >= GL_LIGHT0 && pname < GL_LIGHT0 + pf::kMaxLights) {
         set({ctx.lighting.lights[pname - GL_LIGHT0].enabled ? 1.0 : 0.0});
         return true;

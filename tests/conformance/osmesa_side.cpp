@@ -1,5 +1,8 @@
 // The GL cases drawn by OSMesa (Mesa's llvmpipe), the reference: cases.inc's gl* calls go to
 // libOSMesa here. This translation unit must not see primflow's GL names.
+// (GL_GLEXT_PROTOTYPES: the GL 1.4 entry points the cases call, glBlendFuncSeparate, are
+// declared by <GL/glext.h> only with it; libOSMesa exports them.)
+#define GL_GLEXT_PROTOTYPES 1
 #include <GL/gl.h>
 #include <GL/osmesa.h>
 

@@ -38,6 +38,13 @@
 #define glFrontFace pfglFrontFace
 #define glShadeModel pfglShadeModel
 #define glHint pfglHint
+#define glScissor pfglScissor
+#define glAlphaFunc pfglAlphaFunc
+#define glBlendFunc pfglBlendFunc
+#define glBlendFuncSeparate pfglBlendFuncSeparate
+#define glBlendEquation pfglBlendEquation
+#define glBlendColor pfglBlendColor
+#define glLogicOp pfglLogicOp
 #define glPushAttrib pfglPushAttrib
 #define glPopAttrib pfglPopAttrib
 #define glPushClientAttrib pfglPushClientAttrib

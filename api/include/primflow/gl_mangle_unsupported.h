@@ -9,9 +9,6 @@
 
 #define glClearIndex _Pragma("GCC error \"primflow does not implement glClearIndex\"") pf_unsupported_glClearIndex
 #define glIndexMask _Pragma("GCC error \"primflow does not implement glIndexMask\"") pf_unsupported_glIndexMask
-#define glAlphaFunc _Pragma("GCC error \"primflow does not implement glAlphaFunc\"") pf_unsupported_glAlphaFunc
-#define glBlendFunc _Pragma("GCC error \"primflow does not implement glBlendFunc\"") pf_unsupported_glBlendFunc
-#define glLogicOp _Pragma("GCC error \"primflow does not implement glLogicOp\"") pf_unsupported_glLogicOp
 #define glPointSize _Pragma("GCC error \"primflow does not implement glPointSize\"") pf_unsupported_glPointSize
 #define glLineWidth _Pragma("GCC error \"primflow does not implement glLineWidth\"") pf_unsupported_glLineWidth
 #define glLineStipple _Pragma("GCC error \"primflow does not implement glLineStipple\"") pf_unsupported_glLineStipple
@@ -21,7 +18,6 @@
 #define glGetPolygonStipple _Pragma("GCC error \"primflow does not implement glGetPolygonStipple\"") pf_unsupported_glGetPolygonStipple
 #define glEdgeFlag _Pragma("GCC error \"primflow does not implement glEdgeFlag\"") pf_unsupported_glEdgeFlag
 #define glEdgeFlagv _Pragma("GCC error \"primflow does not implement glEdgeFlagv\"") pf_unsupported_glEdgeFlagv
-#define glScissor _Pragma("GCC error \"primflow does not implement glScissor\"") pf_unsupported_glScissor
 #define glClipPlane _Pragma("GCC error \"primflow does not implement glClipPlane\"") pf_unsupported_glClipPlane
 #define glGetClipPlane _Pragma("GCC error \"primflow does not implement glGetClipPlane\"") pf_unsupported_glGetClipPlane
 #define glDrawBuffer _Pragma("GCC error \"primflow does not implement glDrawBuffer\"") pf_unsupported_glDrawBuffer
@@ -168,8 +164,6 @@
 #define glGetColorTable _Pragma("GCC error \"primflow does not implement glGetColorTable\"") pf_unsupported_glGetColorTable
 #define glGetColorTableParameterfv _Pragma("GCC error \"primflow does not implement glGetColorTableParameterfv\"") pf_unsupported_glGetColorTableParameterfv
 #define glGetColorTableParameteriv _Pragma("GCC error \"primflow does not implement glGetColorTableParameteriv\"") pf_unsupported_glGetColorTableParameteriv
-#define glBlendEquation _Pragma("GCC error \"primflow does not implement glBlendEquation\"") pf_unsupported_glBlendEquation
-#define glBlendColor _Pragma("GCC error \"primflow does not implement glBlendColor\"") pf_unsupported_glBlendColor
 #define glHistogram _Pragma("GCC error \"primflow does not implement glHistogram\"") pf_unsupported_glHistogram
 #define glResetHistogram _Pragma("GCC error \"primflow does not implement glResetHistogram\"") pf_unsupported_glResetHistogram
 #define glGetHistogram _Pragma("GCC error \"primflow does not implement glGetHistogram\"") pf_unsupported_glGetHistogram
@@ -239,7 +233,6 @@
 #define glMultTransposeMatrixd _Pragma("GCC error \"primflow does not implement glMultTransposeMatrixd\"") pf_unsupported_glMultTransposeMatrixd
 #define glMultTransposeMatrixf _Pragma("GCC error \"primflow does not implement glMultTransposeMatrixf\"") pf_unsupported_glMultTransposeMatrixf
 #define glSampleCoverage _Pragma("GCC error \"primflow does not implement glSampleCoverage\"") pf_unsupported_glSampleCoverage
-#define glBlendFuncSeparate _Pragma("GCC error \"primflow does not implement glBlendFuncSeparate\"") pf_unsupported_glBlendFuncSeparate
 #define glMultiDrawArrays _Pragma("GCC error \"primflow does not implement glMultiDrawArrays\"") pf_unsupported_glMultiDrawArrays
 #define glMultiDrawElements _Pragma("GCC error \"primflow does not implement glMultiDrawElements\"") pf_unsupported_glMultiDrawElements
 #define glPointParameterf _Pragma("GCC error \"primflow does not implement glPointParameterf\"") pf_unsupported_glPointParameterf

@@ -1,8 +1,8 @@
 /* tests/clients/mangle: a GL 1.x call primflow does not implement, through gl_mangle.h. It must
- * not compile (C and C++): "primflow does not implement glBlendFunc". */
+ * not compile (C and C++): "primflow does not implement glFogf". */
 #include <primflow/gl_mangle.h>
 
-void draw_blended(void) {
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+void draw_fogged(void) {
+  glEnable(GL_FOG);
+  glFogf(GL_FOG_DENSITY, 0.5f);
 }
