@@ -1,11 +1,13 @@
 // The per-fragment operations GL applies between a pixel's colour and the framebuffer (GL 1.5
-// section 4.1): the scissor test, the alpha test, blending and the logic op, as a draw's
+// section 4.1): the scissor test, the alpha test, the stencil test (raster/stencil.h), blending
+// and the logic op, as a draw's
 // snapshot (FragmentOps, part of its RasterState) and the code that writes shaded fragments
 // through them (writeFragments).
 //
 // The scissor test only narrows the pixels an instance may touch (the renderer cuts its bound,
-// and a clear's rectangle). The other three need the fragment's colour, which deferred shading
-// knows only after every instance of the tile has run: a draw using any of them is *ordered*
+// and a clear's rectangle). The others need the fragment's colour, which deferred shading
+// knows only after every instance of the tile has run, or change the stencil buffer fragment
+// by fragment: a draw using any of them is *ordered*
 // (FragmentOps::ordered) -- its pixels are shaded as soon as it has run, in submission order
 // within the tile, and written through writeFragments (docs/architecture.md, "Ordered
 // fragments").
@@ -25,11 +27,9 @@
 #include <GL/gl.h>
 
 #include "raster/limits.h"
+#include "raster/stencil.h"
 
 namespace pf {
-
-// A comparison of GL's glAlphaFunc / glDepthFunc (GL_NEVER + value).
-enum class CompareFunc : uint8_t { Never, Less, Equal, LessEqual, Greater, NotEqual, GreaterEqual, Always };
 
 struct FragmentOps {
   // The scissor test: pixels [scissor_x0, scissor_x1) x [scissor_y0, scissor_y1) only.
@@ -48,9 +48,10 @@ struct FragmentOps {
   // The logic op (GL_COLOR_LOGIC_OP): GL_CLEAR ... GL_SET; it replaces blending when on.
   bool logic_op = false;
   GLenum logic_mode = GL_COPY;
+  StencilOps stencil;
 
   // Whether a draw's pixels must be shaded and written in submission order (not deferred).
-  bool ordered() const { return alpha_test || blend || logic_op; }
+  bool ordered() const { return alpha_test || blend || logic_op || stencil.test; }
   bool operator==(const FragmentOps&) const = default;
 };
 
@@ -60,21 +61,6 @@ inline uint8_t toUnorm8Even(float c) {
   if (!(c > 0.0f)) return 0;
   if (c >= 1.0f) return 255;
   return static_cast<uint8_t>(std::nearbyint(c * 255.0f));
-}
-
-// Whether `value` passes `func` against `ref`.
-inline bool compares(CompareFunc func, float value, float ref) {
-  switch (func) {
-    case CompareFunc::Never: return false;
-    case CompareFunc::Less: return value < ref;
-    case CompareFunc::Equal: return value == ref;
-    case CompareFunc::LessEqual: return value <= ref;
-    case CompareFunc::Greater: return value > ref;
-    case CompareFunc::NotEqual: return value != ref;
-    case CompareFunc::GreaterEqual: return value >= ref;
-    case CompareFunc::Always: return true;
-  }
-  return true;
 }
 
 // Writes `n` fragments of a row through `ops`: fragment i has colour c[k][skip + i] (floats,

@@ -58,7 +58,7 @@ Renderer::Renderer(int threads) : pool_(threads) {
   }
 }
 
-void Renderer::setTarget(uint8_t* color, float* depth, int width, int height) {
+void Renderer::setTarget(uint8_t* color, float* depth, int width, int height, uint8_t* stencil) {
   if (pending()) flush();
   const int tiles_x = (width + kTileSize - 1) / kTileSize, tiles_y = (height + kTileSize - 1) / kTileSize;
   // The new bins first: if they cannot be allocated (std::bad_alloc), the old target stands.
@@ -68,6 +68,7 @@ void Renderer::setTarget(uint8_t* color, float* depth, int width, int height) {
   scene_.tiles_y = tiles_y;
   color_ = color;
   depth_ = depth;
+  stencil_ = stencil;
   width_ = width;
   height_ = height;
 }
@@ -76,7 +77,7 @@ void Renderer::clear(bool color, bool depth, const float rgba[4], float z, uint8
   // A clear after drawing ends the frame so far: what was drawn must land first; so does a
   // pending colour clear with another mask, and a pending clear of another rectangle.
   if (!scene_.instances.empty() || (color && scene_.clear.color && scene_.clear.color_mask != color_mask) ||
-      ((scene_.clear.color || scene_.clear.depth) && !(scene_.clear.rect == rect)))
+      (scene_.clearing() && !(scene_.clear.rect == rect)))
     flush();
   scene_.clear.rect = rect;
   if (color) {
@@ -432,7 +433,7 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
   const int tx = tile % scene_.tiles_x, ty = tile / scene_.tiles_x;
   const int x0 = tx * kTileSize, y0 = ty * kTileSize;
   const int w = std::min(kTileSize, width_ - x0), h = std::min(kTileSize, height_ - y0);
-  if (scene_.clear.color || scene_.clear.depth) clearTile(x0, y0, w, h);
+  if (scene_.clearing()) clearTile(x0, y0, w, h);
 
   const TileBin& bin = scene_.bins[tile];
   if (bin.instances.empty()) return;
@@ -494,175 +495,192 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
     int iy0 = std::max(inst.y0, y0), iy1 = std::min(inst.y1, y0 + h);
     const uint32_t* record = scene_.records.data() + inst.record_offset;
     const ChannelLayout& layout = scene_.layouts[inst.layout];
-    const RasterState& state = scene_.states[inst.state];
+    const RasterState& inst_state = scene_.states[inst.state];
     const uint32_t* shared = inst.shared_offset == kNoShared ? nullptr : scene_.records.data() + inst.shared_offset;
-    if (state.fragment.ordered()) {
+    if (inst_state.fragment.ordered()) {
       if (!s.gang.empty()) s.gang.run(s.executor, scene_, target, depth_ ? &s.coarse_depth : nullptr, false);
       if (deferred_pending) resolveTile(s, x0, y0, w, h, nullptr, PixelRect{});
       deferred_pending = false;
-      ordered = &state;
+      ordered = &inst_state;
       ordered_bound = PixelRect{ix0, iy0, ix1, iy1};
-      // The depth its fragments may write, kept for those the alpha test will discard.
+      // The depth its fragments may write, kept for those the alpha or stencil test will discard.
       s.depth_before.clear();
-      if (state.fragment.alpha_test && depth_ && state.depth_test && state.depth_write)
+      const FragmentOps& f = inst_state.fragment;
+      if ((f.alpha_test || (f.stencil.test && stencil_)) && depth_ && inst_state.depth_test && inst_state.depth_write)
         for (int y = iy0; y < iy1; ++y)
           s.depth_before.insert(s.depth_before.end(), depth_ + static_cast<size_t>(y) * width_ + ix0,
                                 depth_ + static_cast<size_t>(y) * width_ + ix1);
     } else {
       deferred_pending = true;
     }
-    // Coarse depth culling: the tile's blocks (indices within the tile) the instance touches,
-    // and whether its depth bound may skip some of them.
-    const int cbx0 = (ix0 - x0) / kBlockSize, cbx1 = (ix1 - 1 - x0) / kBlockSize;
-    const int cby0 = (iy0 - y0) / kBlockSize, cby1 = (iy1 - 1 - y0) / kBlockSize;
-    const bool cull = depth_culling_ && depth_ && inst.has_depth_bound && state.depth_test;
-    auto depthFails = [&](int cbx, int cby) {
-      if (!s.coarse_depth.fails(state.depth_func, inst.z_min, inst.z_max, cbx, cby)) return false;
-      ++s.blocks_depth_culled;
-      return true;
-    };
-    // And per pixel (depthPassMask): the depth a pixel holds now is the one its lane will test
-    // (whatever runs before it has run, or -- a gang block's other members -- has none of its
-    // pixels), so a pixel where no depth of the bound can pass need not run. Bit i of the
-    // result: pixel (x + i, y), for n <= 64 pixels.
-    auto mayPass = [&](int x, int y, int n) {
-      return depthPassMask(state.depth_func, inst.z_min, inst.z_max, depth_ + static_cast<size_t>(y) * width_ + x, n);
-    };
-    // Whether some pixel of an aligned block's lanes in `mask` may pass (its rows read only as
-    // far as the framebuffer: a block at its right edge hangs past it).
-    auto blockMayPass = [&](int bx, int by, uint64_t mask) {
-      const int columns = std::min(kBlockSize, width_ - bx);
-      for (int row = 0; row < kBlockSize; ++row) {
-        const uint64_t lanes = (mask >> (row * kBlockSize)) & ((1u << kBlockSize) - 1u);
-        if (lanes && (mayPass(bx, by + row, columns) & lanes)) return true;
-      }
-      return false;
-    };
-    // Small bounds run packed: alone (packsBetter), or -- for a program that gangs -- with the
-    // pixels of the instances around it in the bin, up to kGangArea pixels each (a gang fills
-    // its blocks whatever the bound's shape, so it takes bounds that on aligned blocks would
-    // have whole blocks inside).
-    const bool packs = pack_small_bounds_ && PixelExecutor::packs(*inst.prim, layout);
-    const bool gangs = packs && gang_blocks_ && inst.prim->pixel.gangs && !ordered &&
-                       (ix1 - ix0) * (iy1 - iy0) <= kGangArea;
-    const GangBlock::Rect rect{ix0, iy0, ix1, iy1};
-    // The block being filled runs first unless this instance joins it (the bin's order).
-    if (!s.gang.empty() && !(gangs && s.gang.accepts(inst, record, rect)))
-      s.gang.run(s.executor, scene_, target, depth_ ? &s.coarse_depth : nullptr, false);
-    const uint64_t committed_before = s.executor.counters.lanes_committed;
-    if (gangs || (packs && packsBetter(ix0, ix1, iy0, iy1, x0, y0))) {
-      // A small bound: its pixels, row by row, fill whole blocks of packed lanes.
-      // The blocks' columns it covers, less those coarse depth culling skips.
-      uint64_t live = 0;  // bit (cby - cby0) * 8 + (cbx - cbx0)
-      for (int cby = cby0; cby <= cby1; ++cby)
-        for (int cbx = cbx0; cbx <= cbx1; ++cbx)
-          if (!cull || !depthFails(cbx, cby)) live |= 1ull << ((cby - cby0) * CoarseDepth::kBlocksPerSide + cbx - cbx0);
-      if (!live) continue;
-      // Row y's pixels to run, bit x - ix0: those in live blocks that may pass the depth test.
-      // (A block column's pixels are a byte of the row, shifted to where the column starts.)
-      const int width = ix1 - ix0;
-      const uint64_t whole_row = width >= 64 ? ~0ull : (1ull << width) - 1;
-      const uint64_t all_columns = (1ull << (cbx1 - cbx0 + 1)) - 1;
-      const int column0 = x0 + cbx0 * kBlockSize - ix0;  // the first column's first pixel: <= 0
-      auto rowPixels = [&](int y) {
-        const uint64_t live_row =
-            (live >> ((y - y0) / kBlockSize - cby0) * CoarseDepth::kBlocksPerSide) & all_columns;
-        uint64_t row = whole_row;
-        if (live_row != all_columns) {
-          row = 0;
-          for (uint64_t m = live_row; m; m &= m - 1) {
-            const int first = column0 + __builtin_ctzll(m) * kBlockSize;
-            row |= first >= 0 ? 0xffull << first : 0xffull >> -first;
-          }
-          row &= whole_row;
-        }
-        if (cull) {
-          const uint64_t pass = mayPass(ix0, y, ix1 - ix0);
-          // (Counted with laneCount, not a loop over the bits: overlapping small instances
-          // cull most of their rows' pixels.)
-          s.pixels_depth_culled += static_cast<uint64_t>(laneCount(row & ~pass));
-          row &= pass;
-        }
-        return row;
+    // The instance's pixels within the tile under `state` (the draw's own, or a stencil draw's
+    // coverage run's).
+    auto runInstance = [&](const RasterState& state) {
+      // Coarse depth culling: the tile's blocks (indices within the tile) the instance touches,
+      // and whether its depth bound may skip some of them.
+      const int cbx0 = (ix0 - x0) / kBlockSize, cbx1 = (ix1 - 1 - x0) / kBlockSize;
+      const int cby0 = (iy0 - y0) / kBlockSize, cby1 = (iy1 - 1 - y0) / kBlockSize;
+      const bool cull = depth_culling_ && depth_ && inst.has_depth_bound && state.depth_test;
+      auto depthFails = [&](int cbx, int cby) {
+        if (!s.coarse_depth.fails(state.depth_func, inst.z_min, inst.z_max, cbx, cby)) return false;
+        ++s.blocks_depth_culled;
+        return true;
       };
-      if (gangs) {
-        s.gang.join(inst, record, rect);
+      // And per pixel (depthPassMask): the depth a pixel holds now is the one its lane will test
+      // (whatever runs before it has run, or -- a gang block's other members -- has none of its
+      // pixels), so a pixel where no depth of the bound can pass need not run. Bit i of the
+      // result: pixel (x + i, y), for n <= 64 pixels.
+      auto mayPass = [&](int x, int y, int n) {
+        return depthPassMask(state.depth_func, inst.z_min, inst.z_max, depth_ + static_cast<size_t>(y) * width_ + x, n);
+      };
+      // Whether some pixel of an aligned block's lanes in `mask` may pass (its rows read only as
+      // far as the framebuffer: a block at its right edge hangs past it).
+      auto blockMayPass = [&](int bx, int by, uint64_t mask) {
+        const int columns = std::min(kBlockSize, width_ - bx);
+        for (int row = 0; row < kBlockSize; ++row) {
+          const uint64_t lanes = (mask >> (row * kBlockSize)) & ((1u << kBlockSize) - 1u);
+          if (lanes && (mayPass(bx, by + row, columns) & lanes)) return true;
+        }
+        return false;
+      };
+      // Small bounds run packed: alone (packsBetter), or -- for a program that gangs -- with the
+      // pixels of the instances around it in the bin, up to kGangArea pixels each (a gang fills
+      // its blocks whatever the bound's shape, so it takes bounds that on aligned blocks would
+      // have whole blocks inside).
+      const bool packs = pack_small_bounds_ && PixelExecutor::packs(*inst.prim, layout);
+      const bool gangs = packs && gang_blocks_ && inst.prim->pixel.gangs && !ordered &&
+                         (ix1 - ix0) * (iy1 - iy0) <= kGangArea;
+      const GangBlock::Rect rect{ix0, iy0, ix1, iy1};
+      // The block being filled runs first unless this instance joins it (the bin's order).
+      if (!s.gang.empty() && !(gangs && s.gang.accepts(inst, record, rect)))
+        s.gang.run(s.executor, scene_, target, depth_ ? &s.coarse_depth : nullptr, false);
+      const uint64_t committed_before = s.executor.counters.lanes_committed;
+      if (gangs || (packs && packsBetter(ix0, ix1, iy0, iy1, x0, y0))) {
+        // A small bound: its pixels, row by row, fill whole blocks of packed lanes.
+        // The blocks' columns it covers, less those coarse depth culling skips.
+        uint64_t live = 0;  // bit (cby - cby0) * 8 + (cbx - cbx0)
+        for (int cby = cby0; cby <= cby1; ++cby)
+          for (int cbx = cbx0; cbx <= cbx1; ++cbx)
+            if (!cull || !depthFails(cbx, cby)) live |= 1ull << ((cby - cby0) * CoarseDepth::kBlocksPerSide + cbx - cbx0);
+        if (!live) return;
+        // Row y's pixels to run, bit x - ix0: those in live blocks that may pass the depth test.
+        // (A block column's pixels are a byte of the row, shifted to where the column starts.)
+        const int width = ix1 - ix0;
+        const uint64_t whole_row = width >= 64 ? ~0ull : (1ull << width) - 1;
+        const uint64_t all_columns = (1ull << (cbx1 - cbx0 + 1)) - 1;
+        const int column0 = x0 + cbx0 * kBlockSize - ix0;  // the first column's first pixel: <= 0
+        auto rowPixels = [&](int y) {
+          const uint64_t live_row =
+              (live >> ((y - y0) / kBlockSize - cby0) * CoarseDepth::kBlocksPerSide) & all_columns;
+          uint64_t row = whole_row;
+          if (live_row != all_columns) {
+            row = 0;
+            for (uint64_t m = live_row; m; m &= m - 1) {
+              const int first = column0 + __builtin_ctzll(m) * kBlockSize;
+              row |= first >= 0 ? 0xffull << first : 0xffull >> -first;
+            }
+            row &= whole_row;
+          }
+          if (cull) {
+            const uint64_t pass = mayPass(ix0, y, ix1 - ix0);
+            // (Counted with laneCount, not a loop over the bits: overlapping small instances
+            // cull most of their rows' pixels.)
+            s.pixels_depth_culled += static_cast<uint64_t>(laneCount(row & ~pass));
+            row &= pass;
+          }
+          return row;
+        };
+        if (gangs) {
+          s.gang.join(inst, record, rect);
+          for (int y = iy0; y < iy1; ++y)
+            for (uint64_t m = rowPixels(y); m; m &= m - 1) {
+              if (s.gang.full()) s.gang.run(s.executor, scene_, target, depth_ ? &s.coarse_depth : nullptr, true);
+              s.gang.add(ix0 + __builtin_ctzll(m), y);
+            }
+          return;  // its depth writes mark the coarse depth when its block runs
+        }
+        PackedLanes& lanes = s.packed_lanes;
+        int n = 0;
         for (int y = iy0; y < iy1; ++y)
           for (uint64_t m = rowPixels(y); m; m &= m - 1) {
-            if (s.gang.full()) s.gang.run(s.executor, scene_, target, depth_ ? &s.coarse_depth : nullptr, true);
-            s.gang.add(ix0 + __builtin_ctzll(m), y);
+            lanes.x[n] = ix0 + __builtin_ctzll(m);
+            lanes.y[n] = y;
+            if (++n == kLanes) {
+              s.executor.runPackedBlock(*inst.prim, record, layout, state, inst.shade_id, lanes, ~0ull, target, shared);
+              n = 0;
+            }
           }
-        continue;  // its depth writes mark the coarse depth when its block runs
-      }
-      PackedLanes& lanes = s.packed_lanes;
-      int n = 0;
-      for (int y = iy0; y < iy1; ++y)
-        for (uint64_t m = rowPixels(y); m; m &= m - 1) {
-          lanes.x[n] = ix0 + __builtin_ctzll(m);
-          lanes.y[n] = y;
-          if (++n == kLanes) {
-            s.executor.runPackedBlock(*inst.prim, record, layout, state, inst.shade_id, lanes, ~0ull, target, shared);
-            n = 0;
+        if (n > 0)
+          s.executor.runPackedBlock(*inst.prim, record, layout, state, inst.shade_id, lanes, (1ull << n) - 1, target,
+                                    shared);
+      } else {
+        // Blocks are aligned to the tile; lanes outside the instance's pixels start retired. A
+        // bound larger than a rejection region is walked a region at a time, and a region block
+        // rejection rejects is skipped whole (its verdict holds for partly covered blocks too).
+        const bool by_regions = iy1 - iy0 >= kRejectionRegion && ix1 - ix0 >= kRejectionRegion;
+        const int step = by_regions ? kRejectionRegion : kTileSize;
+        const int rx0 = (ix0 - x0) / step * step + x0, ry0 = (iy0 - y0) / step * step + y0;
+        // The blocks to run, collected and run together (PixelExecutor::runBlocks).
+        PixelExecutor::AlignedBlocks& aligned = s.aligned_blocks;
+        aligned.count = 0;
+        // A bound over 2x2 regions or more is first judged whole, in one walk: a large triangle
+        // is rejected or accepted over most tiles it touches, where a walk per region would
+        // cost four (the walk costs about what a block does). Undecided, its regions are judged
+        // one by one.
+        RegionVerdict whole = RegionVerdict::Unknown;
+        if (by_regions && (ix1 - 1 - rx0) / kRejectionRegion >= 1 && (iy1 - 1 - ry0) / kRejectionRegion >= 1) {
+          whole = s.executor.boundVerdict(*inst.prim, record, state, ix0, iy0, ix1, iy1);
+          if (whole == RegionVerdict::Rejected) {
+            s.executor.counters.blocks_rejected += static_cast<uint64_t>(cbx1 - cbx0 + 1) * (cby1 - cby0 + 1);
+            return;
           }
         }
-      if (n > 0)
-        s.executor.runPackedBlock(*inst.prim, record, layout, state, inst.shade_id, lanes, (1ull << n) - 1, target,
-                                  shared);
+        for (int ry = ry0; ry < iy1; ry += step)
+          for (int rx = rx0; rx < ix1; rx += step) {
+            const int rbx0 = std::max(x0 + cbx0 * kBlockSize, rx), rby0 = std::max(y0 + cby0 * kBlockSize, ry);
+            const int rbx1 = std::min(ix1, rx + step), rby1 = std::min(iy1, ry + step);
+            if (by_regions && whole != RegionVerdict::Accepted) {
+              const uint64_t blocks = static_cast<uint64_t>((rbx1 - rbx0 + kBlockSize - 1) / kBlockSize) *
+                                      static_cast<uint64_t>((rby1 - rby0 + kBlockSize - 1) / kBlockSize);
+              if (s.executor.rejectsRegion(*inst.prim, record, state, rx, ry, blocks)) continue;
+            }
+        for (int by = rby0; by < rby1; by += kBlockSize) {
+          for (int bx = rbx0; bx < rbx1; bx += kBlockSize) {
+            if (cull && depthFails((bx - x0) / kBlockSize, (by - y0) / kBlockSize)) continue;
+            // The columns [ix0, ix1) of a row, then that row in every row of [iy0, iy1).
+            const int c0 = std::max(ix0 - bx, 0), c1 = std::min(ix1 - bx, kBlockSize);
+            const uint64_t row = ((1ull << c1) - 1) & ~((1ull << c0) - 1);
+            uint64_t mask = 0;
+            for (int ly = std::max(iy0 - by, 0); ly < std::min(iy1 - by, kBlockSize); ++ly)
+              mask |= row << (ly * kBlockSize);
+            // Skipped too where no pixel of it can pass (the block's other pixels, outside the
+            // instance, may hold the clear depth that keeps the coarse test from saying so).
+            if (cull && mask && !blockMayPass(bx, by, mask)) {
+              ++s.blocks_depth_culled;
+              continue;
+            }
+            if (mask) aligned.add(bx, by, mask);
+          }
+        }
+          }
+        s.executor.runBlocks(*inst.prim, record, layout, state, inst.shade_id, aligned, target, shared, whole);
+      }
+      // What it wrote to the depth buffer: those blocks' ranges are stale.
+      if (depth_ && state.depth_test && state.depth_write && s.executor.counters.lanes_committed != committed_before)
+        s.coarse_depth.written(ix0 - x0, iy0 - y0, ix1 - x0, iy1 - y0);
+    };
+    if (inst_state.fragment.stencil.test && stencil_) {
+      // A stencil draw: its covered pixels first (no depth test), then the real run.
+      RasterState cover = inst_state;
+      cover.depth_test = false;
+      cover.depth_write = false;
+      runInstance(cover);
+      coverStencil(s, x0, y0, w, h, inst_state, ordered_bound);
+      runInstance(inst_state);
+      applyStencil(s, x0, y0, inst_state, ordered_bound);
     } else {
-      // Blocks are aligned to the tile; lanes outside the instance's pixels start retired. A
-      // bound larger than a rejection region is walked a region at a time, and a region block
-      // rejection rejects is skipped whole (its verdict holds for partly covered blocks too).
-      const bool by_regions = iy1 - iy0 >= kRejectionRegion && ix1 - ix0 >= kRejectionRegion;
-      const int step = by_regions ? kRejectionRegion : kTileSize;
-      const int rx0 = (ix0 - x0) / step * step + x0, ry0 = (iy0 - y0) / step * step + y0;
-      // The blocks to run, collected and run together (PixelExecutor::runBlocks).
-      PixelExecutor::AlignedBlocks& aligned = s.aligned_blocks;
-      aligned.count = 0;
-      // A bound over 2x2 regions or more is first judged whole, in one walk: a large triangle
-      // is rejected or accepted over most tiles it touches, where a walk per region would
-      // cost four (the walk costs about what a block does). Undecided, its regions are judged
-      // one by one.
-      RegionVerdict whole = RegionVerdict::Unknown;
-      if (by_regions && (ix1 - 1 - rx0) / kRejectionRegion >= 1 && (iy1 - 1 - ry0) / kRejectionRegion >= 1) {
-        whole = s.executor.boundVerdict(*inst.prim, record, state, ix0, iy0, ix1, iy1);
-        if (whole == RegionVerdict::Rejected) {
-          s.executor.counters.blocks_rejected += static_cast<uint64_t>(cbx1 - cbx0 + 1) * (cby1 - cby0 + 1);
-          continue;
-        }
-      }
-      for (int ry = ry0; ry < iy1; ry += step)
-        for (int rx = rx0; rx < ix1; rx += step) {
-          const int rbx0 = std::max(x0 + cbx0 * kBlockSize, rx), rby0 = std::max(y0 + cby0 * kBlockSize, ry);
-          const int rbx1 = std::min(ix1, rx + step), rby1 = std::min(iy1, ry + step);
-          if (by_regions && whole != RegionVerdict::Accepted) {
-            const uint64_t blocks = static_cast<uint64_t>((rbx1 - rbx0 + kBlockSize - 1) / kBlockSize) *
-                                    static_cast<uint64_t>((rby1 - rby0 + kBlockSize - 1) / kBlockSize);
-            if (s.executor.rejectsRegion(*inst.prim, record, state, rx, ry, blocks)) continue;
-          }
-      for (int by = rby0; by < rby1; by += kBlockSize) {
-        for (int bx = rbx0; bx < rbx1; bx += kBlockSize) {
-          if (cull && depthFails((bx - x0) / kBlockSize, (by - y0) / kBlockSize)) continue;
-          // The columns [ix0, ix1) of a row, then that row in every row of [iy0, iy1).
-          const int c0 = std::max(ix0 - bx, 0), c1 = std::min(ix1 - bx, kBlockSize);
-          const uint64_t row = ((1ull << c1) - 1) & ~((1ull << c0) - 1);
-          uint64_t mask = 0;
-          for (int ly = std::max(iy0 - by, 0); ly < std::min(iy1 - by, kBlockSize); ++ly)
-            mask |= row << (ly * kBlockSize);
-          // Skipped too where no pixel of it can pass (the block's other pixels, outside the
-          // instance, may hold the clear depth that keeps the coarse test from saying so).
-          if (cull && mask && !blockMayPass(bx, by, mask)) {
-            ++s.blocks_depth_culled;
-            continue;
-          }
-          if (mask) aligned.add(bx, by, mask);
-        }
-      }
-        }
-      s.executor.runBlocks(*inst.prim, record, layout, state, inst.shade_id, aligned, target, shared, whole);
+      runInstance(inst_state);
     }
-    // What it wrote to the depth buffer: those blocks' ranges are stale.
-    if (depth_ && state.depth_test && state.depth_write && s.executor.counters.lanes_committed != committed_before)
-      s.coarse_depth.written(ix0 - x0, iy0 - y0, ix1 - x0, iy1 - y0);
   }
   s.gang.run(s.executor, scene_, target, depth_ ? &s.coarse_depth : nullptr, false);
   if (ordered) resolveTile(s, x0, y0, w, h, ordered, ordered_bound);

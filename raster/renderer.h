@@ -68,13 +68,17 @@ class Renderer : private SubInstanceSink {
   explicit Renderer(int threads);
 
   int threadCount() const { return pool_.threadCount(); }
-  // The colour buffer (caller's, RGBA8, row 0 at the bottom) and the depth buffer (may be null).
-  void setTarget(uint8_t* color, float* depth, int width, int height);
+  // The colour buffer (caller's, RGBA8, row 0 at the bottom), the depth buffer and the 8-bit
+  // stencil buffer (each may be null).
+  void setTarget(uint8_t* color, float* depth, int width, int height, uint8_t* stencil = nullptr);
 
   // Recorded; applied at flush before the instances that follow it. `color_mask`: the RGBA
   // channels (bit k: channel k) the colour clear writes; `rect`: the pixels cleared.
   void clear(bool color, bool depth, const float rgba[4], float z, uint8_t color_mask = 0xf,
              const PixelRect& rect = PixelRect{});
+  // The stencil buffer's clear: `value` into the bits of `write_mask`, within `rect`; recorded
+  // like clear() (a pending clear of another rectangle is flushed first).
+  void clearStencil(uint8_t value, uint8_t write_mask, const PixelRect& rect = PixelRect{});
 
   // Runs setup and bins the instance (`sequence_points`: how many it has, for primitives
   // with parameter-sized arrays; otherwise the primitive's own count). Instances of other
@@ -147,6 +151,7 @@ class Renderer : private SubInstanceSink {
     // the instance before it ran (restored where its fragment was discarded).
     std::vector<uint8_t> discarded;
     std::vector<float> depth_before;
+    std::vector<uint8_t> covered;  // a stencil draw's pixels over its bound (its first run)
     std::vector<float> gbuffer;
     std::vector<float*> slot_planes;
     uint64_t pixels_shaded = 0;
@@ -159,6 +164,14 @@ class Renderer : private SubInstanceSink {
   // restored under its discarded fragments from depth_before over `bound`), then emptying it.
   void clearTile(int x0, int y0, int w, int h);
   void resolveTile(WorkerScratch& s, int x0, int y0, int w, int h, const RasterState* ordered, const PixelRect& bound);
+  // A stencil draw (fragment_ops.h) runs twice: a first run without the depth test finds the
+  // pixels it covers; coverStencil keeps them (less those the alpha test discards) and empties
+  // the G-buffer. A second run with the depth test commits those that pass it; applyStencil
+  // then gives each covered pixel's stencil value the operation its tests say and drops the
+  // fragments that failed the stencil test (their depth put back). The next resolveTile
+  // writes the colours of the rest.
+  void coverStencil(WorkerScratch& s, int x0, int y0, int w, int h, const RasterState& state, const PixelRect& bound);
+  void applyStencil(WorkerScratch& s, int x0, int y0, const RasterState& state, const PixelRect& bound);
   // submit()'s parts: the state, layout and shade bookkeeping (false: no target), the shared
   // interpolators' setup, and the binning of an instance set up.
   bool beginSubmission(const ChannelLayout& layout, const RasterState& state, const ShadeState& shade,
@@ -191,6 +204,7 @@ class Renderer : private SubInstanceSink {
   std::vector<std::unique_ptr<WorkerScratch>> scratch_;
   uint8_t* color_ = nullptr;
   float* depth_ = nullptr;
+  uint8_t* stencil_ = nullptr;
   int width_ = 0, height_ = 0;
   FrameStats stats_;
   IterationCapReport cap_report_;

@@ -46,6 +46,8 @@ struct PendingClear {
   float z = 1.0f;
   uint8_t color_mask = 0xf;  // RGBA channels the colour clear writes
   PixelRect rect;            // the pixels cleared (the scissor box, under GL_SCISSOR_TEST)
+  bool stencil = false;      // the stencil buffer: stencil_value into the bits of stencil_mask
+  uint8_t stencil_value = 0, stencil_mask = 0xff;
 };
 
 struct Scene {
@@ -63,7 +65,8 @@ struct Scene {
   uint8_t color_mask = 0xf;  // of every instance in the scene (a change of mask flushes)
   PendingClear clear;
 
-  bool empty() const { return instances.empty() && !clear.color && !clear.depth; }
+  bool empty() const { return instances.empty() && !clear.color && !clear.depth && !clear.stencil; }
+  bool clearing() const { return clear.color || clear.depth || clear.stencil; }
   void reset() {
     instances.clear();
     records.clear();

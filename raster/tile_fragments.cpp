@@ -1,13 +1,24 @@
 // The renderer's per-tile work for GL's per-fragment operations (raster/fragment_ops.h): the
-// pending clear within a tile (under the scissor box), and resolving the tile's G-buffer --
-// shading what it holds, an ordered draw's pixels through their fragment operations
-// (docs/architecture.md, "Ordered fragments"). Renderer::runTile decides when.
+// pending clear within a tile (under the scissor box; the stencil buffer's too), resolving the
+// tile's G-buffer -- shading what it holds, an ordered draw's pixels through their fragment
+// operations -- and a stencil draw's stencil operations (docs/architecture.md, "Ordered
+// fragments"). Renderer::runTile decides when.
 #include <algorithm>
 #include <cstring>
 
 #include "raster/renderer.h"
 
 namespace pf {
+
+void Renderer::clearStencil(uint8_t value, uint8_t write_mask, const PixelRect& rect) {
+  if (!scene_.instances.empty() || (scene_.clearing() && !(scene_.clear.rect == rect)) ||
+      (scene_.clear.stencil && scene_.clear.stencil_mask != write_mask))
+    flush();
+  scene_.clear.rect = rect;
+  scene_.clear.stencil = true;
+  scene_.clear.stencil_value = value;
+  scene_.clear.stencil_mask = write_mask;
+}
 
 void Renderer::clearTile(int x0, int y0, int w, int h) {
   // The clear's pixels within the tile.
@@ -41,6 +52,15 @@ void Renderer::clearTile(int x0, int y0, int w, int h) {
     const float z = scene_.clear.z;
     for (int y = cy0; y < cy1; ++y) std::fill_n(depth + static_cast<size_t>(y) * stride + cx0, cx1 - cx0, z);
   }
+  if (scene_.clear.stencil && stencil_) {
+    uint8_t* const stencil = stencil_;
+    const uint8_t keep = static_cast<uint8_t>(~scene_.clear.stencil_mask);
+    const uint8_t set = scene_.clear.stencil_value & scene_.clear.stencil_mask;
+    for (int y = cy0; y < cy1; ++y) {
+      uint8_t* const row = stencil + static_cast<size_t>(y) * stride;
+      for (int x = cx0; x < cx1; ++x) row[x] = static_cast<uint8_t>((row[x] & keep) | set);
+    }
+  }
 }
 
 void Renderer::resolveTile(WorkerScratch& s, int x0, int y0, int w, int h, const RasterState* ordered,
@@ -70,6 +90,58 @@ void Renderer::resolveTile(WorkerScratch& s, int x0, int y0, int w, int h, const
   }
   std::fill(s.shade_ids.begin() + static_cast<std::ptrdiff_t>(row0) * kTileSize,
             s.shade_ids.begin() + static_cast<std::ptrdiff_t>(row1) * kTileSize, 0u);
+}
+
+void Renderer::coverStencil(WorkerScratch& s, int x0, int y0, int w, int h, const RasterState& state,
+                            const PixelRect& bound) {
+  const int bw = bound.x1 - bound.x0, bh = bound.y1 - bound.y0;
+  s.covered.assign(static_cast<size_t>(bw) * bh, 0);
+  // The alpha test comes first (GL 1.5 section 4.1): a fragment it discards touches no stencil
+  // value. Its verdicts, without writing a pixel: the fragment operations reduced to it, under
+  // an empty colour mask.
+  constexpr size_t kPlane = static_cast<size_t>(kTileSize) * kTileSize;
+  const bool alpha_test = state.fragment.alpha_test;
+  if (alpha_test) {
+    FragmentOps alpha_only;
+    alpha_only.alpha_test = true;
+    alpha_only.alpha_func = state.fragment.alpha_func;
+    alpha_only.alpha_ref = state.fragment.alpha_ref;
+    ShadeTarget st{color_, width_, x0, y0, w, h, 0};
+    s.discarded.resize(kPlane);
+    st.fragments = &alpha_only;
+    st.discarded = s.discarded.data();
+    shadeTile(s.shade_ids.data(), s.slot_planes.data(), scene_.shades.data(), scene_.lightings.data(),
+              scene_.lighting_equations.data(), st);
+  }
+  for (int y = 0; y < bh; ++y) {
+    const size_t t0 = static_cast<size_t>(bound.y0 - y0 + y) * kTileSize + static_cast<size_t>(bound.x0 - x0);
+    for (int x = 0; x < bw; ++x)
+      s.covered[static_cast<size_t>(y) * bw + x] =
+          s.shade_ids[t0 + x] != 0 && !(alpha_test && s.discarded[t0 + x] != 0) ? 1 : 0;
+    std::fill_n(s.shade_ids.begin() + static_cast<std::ptrdiff_t>(t0), bw, 0u);
+  }
+}
+
+void Renderer::applyStencil(WorkerScratch& s, int x0, int y0, const RasterState& state, const PixelRect& bound) {
+  const StencilOps& op = state.fragment.stencil;
+  const int bw = bound.x1 - bound.x0, bh = bound.y1 - bound.y0;
+  const bool restore_depth = !s.depth_before.empty();
+  for (int y = 0; y < bh; ++y) {
+    const size_t t0 = static_cast<size_t>(bound.y0 - y0 + y) * kTileSize + static_cast<size_t>(bound.x0 - x0);
+    const size_t row = static_cast<size_t>(bound.y0 + y) * width_ + static_cast<size_t>(bound.x0);
+    uint8_t* const stencil = stencil_ + row;
+    for (int x = 0; x < bw; ++x) {
+      uint32_t& id = s.shade_ids[t0 + x];
+      const bool covered = s.covered[static_cast<size_t>(y) * bw + x] != 0;
+      const bool stencil_passes = covered && op.passes(stencil[x]);
+      if (covered) stencil[x] = stencilApply(op, !stencil_passes ? op.fail : id != 0 ? op.depth_pass : op.depth_fail,
+                                             stencil[x]);
+      if (id != 0 && !stencil_passes) {  // failed the stencil test (or discarded by the alpha test)
+        id = 0;
+        if (restore_depth) depth_[row + x] = s.depth_before[static_cast<size_t>(y) * bw + x];
+      }
+    }
+  }
 }
 
 }  // namespace pf
