@@ -117,7 +117,8 @@ GLAPI OSMesaContext GLAPIENTRY OSMesaCreateContextAttribs(const int* attribList,
   if (!c) return nullptr;
   c->format = format;
   c->depth_bits = depthBitsFor(depth, stencil);
-  c->pf = pfCreateContext(GL_RGBA, c->depth_bits);
+  const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, c->depth_bits, PF_STENCIL_BITS, stencil, 0};
+  c->pf = pfCreateContextAttribs(attribs);  // (an 8-bit stencil buffer for any stencil bits, as OSMesa)
   if (!c->pf) {
     delete c;
     return nullptr;

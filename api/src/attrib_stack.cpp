@@ -76,6 +76,7 @@ void popAttrib(PFcontextRec& ctx) {
     f.blend = saved.blend;
     f.logic_op = saved.logic_op;
     f.dither = saved.dither;
+    f.stencil_test = saved.stencil_test;
     ctx.depth_test = s.depth_test;
     ctx.cull = s.cull;
     l.enabled = s.lighting.enabled;
@@ -105,15 +106,25 @@ void popAttrib(PFcontextRec& ctx) {
     std::copy(std::begin(s.viewport), std::end(s.viewport), ctx.viewport);
     std::copy(std::begin(s.depth_range), std::end(s.depth_range), ctx.depth_range);
   }
-  if (m & GL_COLOR_BUFFER_BIT) {  // everything of the fragment operations but the scissor
+  if (m & GL_COLOR_BUFFER_BIT) {  // the alpha test, blending, the logic op, dithering
     std::copy(std::begin(s.clear_color), std::end(s.clear_color), ctx.clear_color);
     ctx.color_mask = s.color_mask;
-    const bool scissor_test = f.scissor_test;
-    int box[4];
-    std::copy(std::begin(f.scissor), std::end(f.scissor), box);
-    f = saved;
-    f.scissor_test = scissor_test;
-    std::copy(std::begin(box), std::end(box), f.scissor);
+    f.alpha_test = saved.alpha_test, f.alpha_func = saved.alpha_func, f.alpha_ref = saved.alpha_ref;
+    f.blend = saved.blend;
+    f.blend_src_rgb = saved.blend_src_rgb, f.blend_dst_rgb = saved.blend_dst_rgb;
+    f.blend_src_alpha = saved.blend_src_alpha, f.blend_dst_alpha = saved.blend_dst_alpha;
+    f.blend_equation = saved.blend_equation;
+    std::copy(std::begin(saved.blend_color), std::end(saved.blend_color), f.blend_color);
+    f.logic_op = saved.logic_op, f.logic_mode = saved.logic_mode;
+    f.dither = saved.dither;
+  }
+  if (m & GL_STENCIL_BUFFER_BIT) {
+    f.stencil_test = saved.stencil_test;
+    f.stencil_func = saved.stencil_func, f.stencil_ref = saved.stencil_ref;
+    f.stencil_value_mask = saved.stencil_value_mask, f.stencil_write_mask = saved.stencil_write_mask;
+    f.stencil_fail = saved.stencil_fail, f.stencil_depth_fail = saved.stencil_depth_fail;
+    f.stencil_depth_pass = saved.stencil_depth_pass;
+    f.stencil_clear = saved.stencil_clear;
   }
   if (m & GL_SCISSOR_BIT) {
     f.scissor_test = saved.scissor_test;

@@ -74,6 +74,10 @@ Values<T, N> valuesOf(const U* p, int n, GLint count) {
   X(BlendEquation, blendEquation, GLenum)                                                 \
   X(BlendColor, blendColor, GLfloat, GLfloat, GLfloat, GLfloat)                           \
   X(LogicOp, logicOp, GLenum)                                                             \
+  X(StencilFunc, stencilFunc, GLenum, GLint, GLuint)                                      \
+  X(StencilOp, stencilOp, GLenum, GLenum, GLenum)                                         \
+  X(StencilMask, stencilMask, GLuint)                                                     \
+  X(ClearStencil, clearStencil, GLint)                                                    \
   /* attrib_stack.cpp */                                                                  \
   X(PushAttrib, pushAttrib, GLbitfield)                                                   \
   X(PopAttrib, popAttrib)                                                                 \

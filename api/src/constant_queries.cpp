@@ -1,5 +1,5 @@
 // The GL 1.x state primflow holds constant, for glGet* (query.h): a program asking about fog,
-// the stencil buffer, texturing and the rest gets GL's answer for a context that has
+// texturing and the rest gets GL's answer for a context that has
 // never changed them (which in primflow cannot change), never GL_INVALID_ENUM; the absent
 // buffers have 0 bits. The conformance case state_queries_all compares these with OSMesa's in a
 // new context; the implementation limits at the end are primflow's own (docs/api.md).
@@ -108,21 +108,12 @@ constexpr Constant kConstants[] = {
     {GL_TEXTURE_GEN_R, 1, {kFalse}, kCapability},
     {GL_TEXTURE_GEN_Q, 1, {kFalse}, kCapability},
     // Fragment operations (those primflow has: state_queries.cpp).
-    {GL_STENCIL_TEST, 1, {kFalse}, kCapability},
-    {GL_STENCIL_FUNC, 1, {GL_ALWAYS}},
-    {GL_STENCIL_VALUE_MASK, 1, {255}},
-    {GL_STENCIL_REF, 1, {0}},
-    {GL_STENCIL_FAIL, 1, {GL_KEEP}},
-    {GL_STENCIL_PASS_DEPTH_FAIL, 1, {GL_KEEP}},
-    {GL_STENCIL_PASS_DEPTH_PASS, 1, {GL_KEEP}},
     {GL_INDEX_LOGIC_OP, 1, {kFalse}, kCapability},
-    // Framebuffer: one front buffer, no index, stencil or accumulation buffer.
+    // Framebuffer: one front buffer, no index or accumulation buffer.
     {GL_DRAW_BUFFER, 1, {GL_FRONT}},
     {GL_READ_BUFFER, 1, {GL_FRONT}},
     {GL_INDEX_WRITEMASK, 1, {-1}},
-    {GL_STENCIL_WRITEMASK, 1, {255}},
     {GL_INDEX_CLEAR_VALUE, 1, {0}},
-    {GL_STENCIL_CLEAR_VALUE, 1, {0}},
     {GL_ACCUM_CLEAR_VALUE, 4, {0, 0, 0, 0}, kNormalized},
     {GL_RGBA_MODE, 1, {kTrue}},
     {GL_INDEX_MODE, 1, {kFalse}},
@@ -130,7 +121,6 @@ constexpr Constant kConstants[] = {
     {GL_STEREO, 1, {kFalse}},
     {GL_AUX_BUFFERS, 1, {0}},
     {GL_INDEX_BITS, 1, {0}},
-    {GL_STENCIL_BITS, 1, {0}},
     {GL_ACCUM_RED_BITS, 1, {0}},
     {GL_ACCUM_GREEN_BITS, 1, {0}},
     {GL_ACCUM_BLUE_BITS, 1, {0}},

@@ -116,7 +116,7 @@ extern "C" {
 
 PFcontext pfCreateContextAttribs(const int* attribs) {
   GLenum format = GL_RGBA;
-  int depth_bits = 0;
+  int depth_bits = 0, stencil_bits = 0;
   int threads = 0;
   int cap = 0;
   int native = -1;  // PF_JIT: -1 the environment's choice
@@ -124,13 +124,14 @@ PFcontext pfCreateContextAttribs(const int* attribs) {
     switch (a[0]) {
       case PF_FORMAT: format = static_cast<GLenum>(a[1]); break;
       case PF_DEPTH_BITS: depth_bits = a[1]; break;
+      case PF_STENCIL_BITS: stencil_bits = a[1]; break;
       case PF_THREADS: threads = a[1]; break;
       case PF_ITERATION_CAP: cap = a[1]; break;
       case PF_JIT: native = a[1]; break;
       default: return nullptr;  // unknown attribute
     }
   }
-  if (format != GL_RGBA || depth_bits < 0 || threads < 0 || threads > 256 || cap < 0 || native < -1 || native > 1)
+  if (format != GL_RGBA || depth_bits < 0 || stencil_bits < 0 || threads < 0 || threads > 256 || cap < 0 || native < -1 || native > 1)
     return nullptr;
   if (threads == 0) threads = pf::defaultThreadCount();
   try {
@@ -144,6 +145,7 @@ PFcontext pfCreateContextAttribs(const int* attribs) {
     ctx->param(ctx->normal_param) = pf::ParamValue{{0, 0, 1}, 3};
     ctx->param(ctx->texcoord_param) = pf::ParamValue{{0, 0, 0, 1}, 4};
     ctx->depth_bits = depth_bits;
+    ctx->stencil_bits = stencil_bits > 0 ? 8 : 0;
     if (native >= 0) ctx->renderer.setNativeCode(native == 1);
     ctx->iteration_cap = cap > 0 ? static_cast<unsigned>(cap) : pf::kDefaultIterationCap;
     if (!pf::registerBuiltins(*ctx)) {
@@ -176,9 +178,12 @@ GLboolean pfMakeCurrent(PFcontext ctx, void* buffer, GLenum type, GLsizei width,
   // The new depth buffer and bins first: if they cannot be allocated, the context keeps its
   // previous drawable, whole.
   std::vector<float> depth;
+  std::vector<uint8_t> stencil;
   try {
     if (ctx->depth_bits > 0) depth.assign(static_cast<size_t>(width) * height, 1.0f);
-    ctx->renderer.setTarget(static_cast<uint8_t*>(buffer), ctx->depth_bits > 0 ? depth.data() : nullptr, width, height);
+    if (ctx->stencil_bits > 0) stencil.assign(static_cast<size_t>(width) * height, 0);
+    ctx->renderer.setTarget(static_cast<uint8_t*>(buffer), ctx->depth_bits > 0 ? depth.data() : nullptr, width, height,
+                            ctx->stencil_bits > 0 ? stencil.data() : nullptr);
   } catch (const std::bad_alloc&) {
     ctx->setError(GL_OUT_OF_MEMORY);
     std::fprintf(stderr, "primflow: pfMakeCurrent: out of memory for a %dx%d drawable: the context keeps its previous one\n",
@@ -186,6 +191,7 @@ GLboolean pfMakeCurrent(PFcontext ctx, void* buffer, GLenum type, GLsizei width,
     return GL_FALSE;
   }
   ctx->depth.swap(depth);  // the storage moves with the swap: the renderer's pointer stays valid
+  ctx->stencil.swap(stencil);
   ctx->color = static_cast<uint8_t*>(buffer);
   ctx->width = width;
   ctx->height = height;

@@ -85,10 +85,17 @@ struct FragmentState {
   bool logic_op = false;
   GLenum logic_mode = GL_COPY;
   bool dither = true;             // kept and read back; nothing is dithered (as in llvmpipe)
+  bool stencil_test = false;
+  GLenum stencil_func = GL_ALWAYS;
+  GLint stencil_ref = 0;          // as given; clamped to [0, 255] where used and read back
+  GLuint stencil_value_mask = 0xff, stencil_write_mask = 0xff;  // (Mesa's initial values)
+  GLenum stencil_fail = GL_KEEP, stencil_depth_fail = GL_KEEP, stencil_depth_pass = GL_KEEP;
+  GLint stencil_clear = 0;
 };
 
-// The snapshot of them a draw takes (fragment_commands.cpp).
-FragmentOps fragmentOps(const FragmentState& f);
+// The snapshot of them a draw takes (fragment_commands.cpp); `has_stencil`: the framebuffer has
+// a stencil buffer (without one the stencil test is off, as GL says).
+FragmentOps fragmentOps(const FragmentState& f, bool has_stencil);
 
 // glHint's targets (hintIndex gives a target's place; -1: not a target).
 constexpr int kHintCount = 7;
@@ -115,7 +122,8 @@ struct AttribState {
   uint8_t color_mask;
   GLenum hints[kHintCount];                          // GL_HINT_BIT
   GLuint list_base;                                  // GL_LIST_BIT
-  FragmentState fragment;                            // GL_SCISSOR_BIT, GL_COLOR_BUFFER_BIT, GL_ENABLE_BIT
+  FragmentState fragment;                            // GL_SCISSOR_BIT, GL_COLOR_BUFFER_BIT, GL_ENABLE_BIT,
+                                                     // GL_STENCIL_BUFFER_BIT
 };
 
 // glPixelStore's modes for one direction (GL 1.5 table 3.1): pack (glReadPixels writes by
@@ -173,9 +181,11 @@ struct PFcontextRec {
   // Framebuffer binding.
   GLenum format = GL_RGBA;
   int depth_bits = 0;
+  int stencil_bits = 0;  // 8 or 0
   uint8_t* color = nullptr;
   int width = 0, height = 0;
   std::vector<float> depth;
+  std::vector<uint8_t> stencil;  // cleared to 0 by every pfMakeCurrent
   bool ever_bound = false;
   unsigned iteration_cap = 65536;
   // Called by glFinish / glFlush after the drawing has executed, if any drawing has since the

@@ -1,5 +1,5 @@
 // The per-fragment operations' commands (GL 1.5 section 4.1): glScissor, glAlphaFunc, the
-// blending commands and glLogicOp, with OSMesa's errors; their enables are in gl_commands.cpp,
+// stencil commands, the blending commands and glLogicOp, with OSMesa's errors; their enables are in gl_commands.cpp,
 // their queries in state_queries.cpp, and rasterState() hands them to the renderer
 // (raster/fragment_ops.h) with each draw.
 #include <algorithm>
@@ -28,6 +28,17 @@ bool blendFactor(GLenum f) {
     case GL_SRC_ALPHA_SATURATE:
     case GL_CONSTANT_COLOR: case GL_ONE_MINUS_CONSTANT_COLOR:
     case GL_CONSTANT_ALPHA: case GL_ONE_MINUS_CONSTANT_ALPHA:
+      return true;
+    default:
+      return false;
+  }
+}
+
+// glStencilOp's operations.
+bool stencilOperation(GLenum op) {
+  switch (op) {
+    case GL_KEEP: case GL_ZERO: case GL_REPLACE: case GL_INCR: case GL_DECR: case GL_INVERT:
+    case GL_INCR_WRAP: case GL_DECR_WRAP:
       return true;
     default:
       return false;
@@ -77,6 +88,29 @@ void blendColor(PFcontextRec& ctx, GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
   for (int k = 0; k < 4; ++k) ctx.fragment.blend_color[k] = clampUnit(v[k]);
 }
 
+void stencilFunc(PFcontextRec& ctx, GLenum func, GLint ref, GLuint mask) {
+  if (!outsideBegin(ctx)) return;
+  if (func < GL_NEVER || func > GL_ALWAYS) return ctx.setError(GL_INVALID_ENUM);
+  FragmentState& f = ctx.fragment;
+  f.stencil_func = func, f.stencil_ref = ref, f.stencil_value_mask = mask;
+}
+
+void stencilOp(PFcontextRec& ctx, GLenum fail, GLenum depth_fail, GLenum depth_pass) {
+  if (!outsideBegin(ctx)) return;
+  if (!stencilOperation(fail) || !stencilOperation(depth_fail) || !stencilOperation(depth_pass))
+    return ctx.setError(GL_INVALID_ENUM);
+  FragmentState& f = ctx.fragment;
+  f.stencil_fail = fail, f.stencil_depth_fail = depth_fail, f.stencil_depth_pass = depth_pass;
+}
+
+void stencilMask(PFcontextRec& ctx, GLuint mask) {
+  if (outsideBegin(ctx)) ctx.fragment.stencil_write_mask = mask;
+}
+
+void clearStencil(PFcontextRec& ctx, GLint s) {
+  if (outsideBegin(ctx)) ctx.fragment.stencil_clear = s;
+}
+
 void logicOp(PFcontextRec& ctx, GLenum opcode) {
   if (!outsideBegin(ctx)) return;
   if (opcode < GL_CLEAR || opcode > GL_SET) return ctx.setError(GL_INVALID_ENUM);
@@ -86,8 +120,17 @@ void logicOp(PFcontextRec& ctx, GLenum opcode) {
 }  // namespace cmd
 
 // The snapshot a draw takes (PFcontextRec::rasterState).
-FragmentOps fragmentOps(const FragmentState& f) {
+FragmentOps fragmentOps(const FragmentState& f, bool has_stencil) {
   FragmentOps ops;
+  if (f.stencil_test && has_stencil) {
+    StencilOps& s = ops.stencil;
+    s.test = true;
+    s.func = static_cast<CompareFunc>(f.stencil_func - GL_NEVER);
+    s.ref = static_cast<uint8_t>(std::clamp(f.stencil_ref, 0, 255));
+    s.value_mask = static_cast<uint8_t>(f.stencil_value_mask);
+    s.write_mask = static_cast<uint8_t>(f.stencil_write_mask);
+    s.fail = f.stencil_fail, s.depth_fail = f.stencil_depth_fail, s.depth_pass = f.stencil_depth_pass;
+  }
   if (f.scissor_test) {
     // (In 64 bits, clamped: a box reaching past INT_MAX must not overflow.)
     auto end = [](int origin, int size) {
@@ -134,5 +177,9 @@ void pfglBlendColor(GLclampf red, GLclampf green, GLclampf blue, GLclampf alpha)
   pf::dispatch<pf::GlOp::BlendColor>(red, green, blue, alpha);
 }
 void pfglLogicOp(GLenum opcode) { pf::dispatch<pf::GlOp::LogicOp>(opcode); }
+void pfglStencilFunc(GLenum func, GLint ref, GLuint mask) { pf::dispatch<pf::GlOp::StencilFunc>(func, ref, mask); }
+void pfglStencilOp(GLenum fail, GLenum zfail, GLenum zpass) { pf::dispatch<pf::GlOp::StencilOp>(fail, zfail, zpass); }
+void pfglStencilMask(GLuint mask) { pf::dispatch<pf::GlOp::StencilMask>(mask); }
+void pfglClearStencil(GLint s) { pf::dispatch<pf::GlOp::ClearStencil>(s); }
 
 }  // extern "C"

@@ -55,6 +55,7 @@ bool* capability(PFcontextRec& ctx, GLenum cap) {
     case GL_BLEND: return &ctx.fragment.blend;
     case GL_COLOR_LOGIC_OP: return &ctx.fragment.logic_op;
     case GL_DITHER: return &ctx.fragment.dither;
+    case GL_STENCIL_TEST: return &ctx.fragment.stencil_test;
     default: ctx.setError(GL_INVALID_ENUM); return nullptr;
   }
 }
@@ -127,7 +128,7 @@ pf::RasterState PFcontextRec::rasterState() const {
   s.front_ccw = front_face == GL_CCW;
   s.flat_shading = shade_model == GL_FLAT;
   s.color_mask = color_mask;
-  s.fragment = pf::fragmentOps(fragment);
+  s.fragment = pf::fragmentOps(fragment, stencil_bits > 0);
   const glm::mat4 inv = glm::inverse(projection.top);
   const glm::mat4 inv_mv = glm::inverse(modelview.top);
   // A singular matrix (glScalef(1, 1, 0), planar shadows) has no inverse: its inf and NaN become
@@ -155,11 +156,14 @@ void clear(PFcontextRec& ctx, GLbitfield mask) {
   }
   bool depth = (mask & GL_DEPTH_BUFFER_BIT) && ctx.depth_bits > 0 && ctx.depth_write;
   try {  // a clear after drawing draws first
-    const pf::FragmentOps ops = pf::fragmentOps(ctx.fragment);  // the scissor box limits a clear
+    const pf::FragmentOps ops = pf::fragmentOps(ctx.fragment, false);  // the scissor box limits a clear
     pf::PixelRect rect;
     if (ops.scissor) rect = pf::PixelRect{ops.scissor_x0, ops.scissor_y0, ops.scissor_x1, ops.scissor_y1};
     ctx.renderer.clear((mask & GL_COLOR_BUFFER_BIT) != 0 && ctx.color_mask != 0, depth, ctx.clear_color,
                        ctx.clear_depth, ctx.color_mask, rect);
+    if ((mask & GL_STENCIL_BUFFER_BIT) && ctx.stencil_bits > 0 && (ctx.fragment.stencil_write_mask & 0xff) != 0)
+      ctx.renderer.clearStencil(static_cast<uint8_t>(ctx.fragment.stencil_clear),
+                                static_cast<uint8_t>(ctx.fragment.stencil_write_mask), rect);
   } catch (const std::bad_alloc&) {
     ctx.outOfMemory("glClear");
   }

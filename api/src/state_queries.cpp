@@ -46,6 +46,14 @@ bool fragmentQuery(const pf::FragmentState& f, GLenum pname, Query& q) {
     case GL_COLOR_LOGIC_OP: q.set({f.logic_op ? 1.0 : 0.0}); return true;
     case GL_LOGIC_OP_MODE: q.set({double(f.logic_mode)}); return true;
     case GL_DITHER: q.set({f.dither ? 1.0 : 0.0}); return true;
+    case GL_STENCIL_TEST: q.set({f.stencil_test ? 1.0 : 0.0}); return true;
+    case GL_STENCIL_FUNC: q.set({double(f.stencil_func)}); return true;
+    case GL_STENCIL_VALUE_MASK: q.set({double(f.stencil_value_mask)}); return true;
+    case GL_STENCIL_FAIL: q.set({double(f.stencil_fail)}); return true;
+    case GL_STENCIL_PASS_DEPTH_FAIL: q.set({double(f.stencil_depth_fail)}); return true;
+    case GL_STENCIL_PASS_DEPTH_PASS: q.set({double(f.stencil_depth_pass)}); return true;
+    case GL_STENCIL_WRITEMASK: q.set({double(f.stencil_write_mask)}); return true;
+    case GL_STENCIL_CLEAR_VALUE: q.set({double(f.stencil_clear)}); return true;
     default: return false;
   }
 }
@@ -138,6 +146,9 @@ bool query(const PFcontextRec& ctx, GLenum pname, Query& q) {
     case GL_UNPACK_SKIP_IMAGES: set({double(ctx.unpack.skip_images)}); return true;
     case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS: set({8}); return true;
     case GL_DEPTH_BITS: set({double(ctx.depth_bits > 0 ? 24 : 0)}); return true;
+    case GL_STENCIL_BITS: set({double(ctx.stencil_bits)}); return true;
+    // The reference as the test uses it: clamped to the buffer's values (0 without one), as Mesa.
+    case GL_STENCIL_REF: set({double(std::clamp(ctx.fragment.stencil_ref, 0, (1 << ctx.stencil_bits) - 1))}); return true;
     // Display lists: the list being compiled and its mode (0 when none is), the base; names as
     // GLint, as Mesa keeps them (glListBase(-5) reads back -5).
     case GL_LIST_INDEX: set({double(static_cast<GLint>(ctx.lists.compiling ? ctx.lists.name : 0))}); return true;

@@ -25,7 +25,8 @@ Rendering renderPrimflow(const std::string& name, int width, int height, int thr
   const GlCase* c = findCase(name);
   if (!c) return r;
   std::vector<uint8_t> buffer(static_cast<size_t>(width) * height * 4);
-  const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_THREADS, threads, native >= 0 ? PF_JIT : 0, native, 0};
+  const int attribs[] = {PF_FORMAT,  GL_RGBA, PF_DEPTH_BITS, 24, PF_STENCIL_BITS, 8, PF_THREADS, threads,
+                         native >= 0 ? PF_JIT : 0, native, 0};
   PFcontext ctx = pfCreateContextAttribs(attribs);
   if (!ctx) return r;
   if (pfMakeCurrent(ctx, buffer.data(), GL_UNSIGNED_BYTE, width, height)) drawAndRead(*c, width, height, r);

@@ -21,6 +21,8 @@ typedef struct PFcontextRec *PFcontext;
 #define PF_JIT         0x31104 /* 1: pixel programs as native code where it can (the default, unless
                                   the PF_JIT env var is 0); 0: all on the interpreter. Images are
                                   identical either way. */
+#define PF_STENCIL_BITS 0x31105 /* 0 (no stencil buffer, the default) or any positive size: an 8-bit
+                                   stencil buffer */
 
 /* A context rendering GL_RGBA with a depth buffer when depthBits > 0; NULL on a bad format. */
 PFcontext pfCreateContext(GLenum format, GLint depthBits);

@@ -26,16 +26,18 @@ void pfglDepthFunc(GLenum func);
 void pfglDepthMask(GLboolean flag);
 void pfglDepthRange(GLclampd zNear, GLclampd zFar);
 /* GL_DEPTH_TEST, GL_CULL_FACE, GL_LIGHTING, GL_LIGHT0..7, GL_COLOR_MATERIAL, GL_NORMALIZE,
- * GL_RESCALE_NORMAL, GL_SCISSOR_TEST, GL_ALPHA_TEST, GL_BLEND, GL_COLOR_LOGIC_OP, GL_DITHER; others: GL_INVALID_ENUM (glIsEnabled also takes the client arrays) */
+ * GL_RESCALE_NORMAL, GL_SCISSOR_TEST, GL_ALPHA_TEST, GL_STENCIL_TEST, GL_BLEND, GL_COLOR_LOGIC_OP,
+ * GL_DITHER; others: GL_INVALID_ENUM (glIsEnabled also takes the client arrays) */
 void pfglEnable(GLenum cap);
 void pfglDisable(GLenum cap);
 GLboolean pfglIsEnabled(GLenum cap);
 void pfglColorMask(GLboolean red, GLboolean green, GLboolean blue, GLboolean alpha);
 
 /* Per-fragment operations (GL 1.5 section 4.1): the scissor box (GL_SCISSOR_TEST), the alpha
- * test (GL_ALPHA_TEST), blending (GL_BLEND) and the logic op (GL_COLOR_LOGIC_OP); GL_DITHER is
- * accepted and changes nothing (as in llvmpipe). A draw with the alpha test, blending or the
- * logic op is shaded in submission order rather than deferred (docs/architecture.md). */
+ * test (GL_ALPHA_TEST), the stencil test (GL_STENCIL_TEST, below), blending (GL_BLEND) and the logic op (GL_COLOR_LOGIC_OP); GL_DITHER is
+ * accepted and changes nothing (as in llvmpipe). A draw with the alpha test, the stencil test,
+ * blending or the logic op is shaded in submission order rather than deferred
+ * (docs/architecture.md). */
 void pfglScissor(GLint x, GLint y, GLsizei width, GLsizei height);
 void pfglAlphaFunc(GLenum func, GLclampf ref);
 void pfglBlendFunc(GLenum sfactor, GLenum dfactor);
@@ -43,6 +45,12 @@ void pfglBlendFuncSeparate(GLenum sfactorRGB, GLenum dfactorRGB, GLenum sfactorA
 void pfglBlendEquation(GLenum mode);
 void pfglBlendColor(GLclampf red, GLclampf green, GLclampf blue, GLclampf alpha);
 void pfglLogicOp(GLenum opcode);
+/* The stencil buffer (8 bits, when the context asks for one: PF_STENCIL_BITS, OSMesa's
+ * stencil argument): GL_STENCIL_TEST and glClear(GL_STENCIL_BUFFER_BIT). */
+void pfglStencilFunc(GLenum func, GLint ref, GLuint mask);
+void pfglStencilOp(GLenum fail, GLenum zfail, GLenum zpass);
+void pfglStencilMask(GLuint mask);
+void pfglClearStencil(GLint s);
 
 /* Hints: kept and read back (nothing primflow draws depends on them). Attribute stacks, 16 deep:
  * the groups primflow has (docs/api.md, "Attribute stacks"); glPushAttrib / glPopAttrib are

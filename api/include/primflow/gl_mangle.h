@@ -45,6 +45,10 @@
 #define glBlendEquation pfglBlendEquation
 #define glBlendColor pfglBlendColor
 #define glLogicOp pfglLogicOp
+#define glStencilFunc pfglStencilFunc
+#define glStencilOp pfglStencilOp
+#define glStencilMask pfglStencilMask
+#define glClearStencil pfglClearStencil
 #define glPushAttrib pfglPushAttrib
 #define glPopAttrib pfglPopAttrib
 #define glPushClientAttrib pfglPushClientAttrib

@@ -75,10 +75,6 @@
 #define glBitmap _Pragma("GCC error \"primflow does not implement glBitmap\"") pf_unsupported_glBitmap
 #define glDrawPixels _Pragma("GCC error \"primflow does not implement glDrawPixels\"") pf_unsupported_glDrawPixels
 #define glCopyPixels _Pragma("GCC error \"primflow does not implement glCopyPixels\"") pf_unsupported_glCopyPixels
-#define glStencilFunc _Pragma("GCC error \"primflow does not implement glStencilFunc\"") pf_unsupported_glStencilFunc
-#define glStencilMask _Pragma("GCC error \"primflow does not implement glStencilMask\"") pf_unsupported_glStencilMask
-#define glStencilOp _Pragma("GCC error \"primflow does not implement glStencilOp\"") pf_unsupported_glStencilOp
-#define glClearStencil _Pragma("GCC error \"primflow does not implement glClearStencil\"") pf_unsupported_glClearStencil
 #define glTexGend _Pragma("GCC error \"primflow does not implement glTexGend\"") pf_unsupported_glTexGend
 #define glTexGenf _Pragma("GCC error \"primflow does not implement glTexGenf\"") pf_unsupported_glTexGenf
 #define glTexGeni _Pragma("GCC error \"primflow does not implement glTexGeni\"") pf_unsupported_glTexGeni
