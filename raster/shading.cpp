@@ -243,7 +243,8 @@ PF_SIMD_CLONES uint64_t shadeTile(const uint32_t* shade_ids, const float* const*
   const TileShading in{slots, shades, lightings, equations};
   uint64_t shaded = 0;
   alignas(64) float c[4][kTileSize];
-  for (int y = 0; y < t.h; ++y) {
+  const int row_end = t.row_end < 0 ? t.h : t.row_end;
+  for (int y = t.row_begin; y < row_end; ++y) {
     const uint32_t* const ids = shade_ids + static_cast<size_t>(y) * kTileSize;
     // Most rows of most tiles are empty, or hold one shading state (a mesh's triangles, the
     // spheres of one glBegin): an empty row is found with one vectorized pass, and a row with

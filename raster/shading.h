@@ -37,6 +37,9 @@ struct ShadeTarget {
   // the alpha test discarded the pixel's fragment, 0 at the other shaded pixels.
   const FragmentOps* fragments = nullptr;
   uint8_t* discarded = nullptr;
+  // The tile's rows [row_begin, row_end) to shade (-1: to the last); an ordered draw's pixels
+  // lie within its bound's rows.
+  int row_begin = 0, row_end = -1;
 };
 
 // Shades the tile: for every pixel with a non-zero shade id (1 + index into `shades`).

@@ -71,6 +71,8 @@ void Renderer::resolveTile(WorkerScratch& s, int x0, int y0, int w, int h, const
     s.discarded.resize(kPlane);
     st.fragments = &ordered->fragment;
     st.discarded = s.discarded.data();
+    st.row_begin = bound.y0 - y0;
+    st.row_end = bound.y1 - y0;
   }
   s.pixels_shaded += shadeTile(s.shade_ids.data(), s.slot_planes.data(), scene_.shades.data(), scene_.lightings.data(),
                                scene_.lighting_equations.data(), st);
@@ -110,6 +112,8 @@ void Renderer::coverStencil(WorkerScratch& s, int x0, int y0, int w, int h, cons
     s.discarded.resize(kPlane);
     st.fragments = &alpha_only;
     st.discarded = s.discarded.data();
+    st.row_begin = bound.y0 - y0;
+    st.row_end = bound.y1 - y0;
     shadeTile(s.shade_ids.data(), s.slot_planes.data(), scene_.shades.data(), scene_.lightings.data(),
               scene_.lighting_equations.data(), st);
   }
