@@ -1,4 +1,4 @@
-/* The client suite's one shared piece (tests/clients): writing what a client drew, so that
+/* The client suite's output (tests/clients): writing what a client drew, so that
  * pfclientcompare can judge it against OSMesa's. Not part of any client's GL: plain C files.
  *   colour: a PAM file (RGB_ALPHA, row 0 at the top as image files have it);
  *   depth:  "PFDEPTH width height\n" and width x height floats in [0, 1], row 0 at the bottom.

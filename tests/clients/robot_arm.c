@@ -8,43 +8,18 @@
 #else
 #include <GL/osmesa.h>
 #endif
-#include <stdio.h>
-#include <stdlib.h>
-
-#include "client_output.h"
+#include "client_context.h"
+#include "client_cube.h"
 
 #define WIDTH 320
 #define HEIGHT 200
-
-/* A unit cube centred on the origin, each face with its normal. */
-static void solid_cube(void) {
-  static const GLfloat n[6][3] = {{-1, 0, 0}, {0, 1, 0}, {1, 0, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-  static const GLint faces[6][4] = {{0, 1, 2, 3}, {3, 2, 6, 7}, {7, 6, 5, 4}, {4, 5, 1, 0}, {5, 6, 2, 1}, {7, 4, 0, 3}};
-  GLfloat v[8][3];
-  int i;
-  v[0][0] = v[1][0] = v[2][0] = v[3][0] = -0.5f;
-  v[4][0] = v[5][0] = v[6][0] = v[7][0] = 0.5f;
-  v[0][1] = v[1][1] = v[4][1] = v[5][1] = -0.5f;
-  v[2][1] = v[3][1] = v[6][1] = v[7][1] = 0.5f;
-  v[0][2] = v[3][2] = v[4][2] = v[7][2] = -0.5f;
-  v[1][2] = v[2][2] = v[5][2] = v[6][2] = 0.5f;
-  for (i = 5; i >= 0; i--) {
-    glBegin(GL_QUADS);
-    glNormal3fv(&n[i][0]);
-    glVertex3fv(&v[faces[i][0]][0]);
-    glVertex3fv(&v[faces[i][1]][0]);
-    glVertex3fv(&v[faces[i][2]][0]);
-    glVertex3fv(&v[faces[i][3]][0]);
-    glEnd();
-  }
-}
 
 /* A segment of the arm: a box `length` long from the joint, `thickness` across. */
 static void segment(GLfloat length, GLfloat thickness) {
   glPushMatrix();
   glTranslatef(length / 2.0f, 0.0f, 0.0f);
   glScalef(length, thickness, thickness);
-  solid_cube();
+  client_unit_cube();
   glPopMatrix();
 }
 
@@ -97,34 +72,8 @@ int main(int argc, char *argv[]) {
   static const GLfloat fill_position[4] = {3.0f, -1.0f, 2.0f, 0.0f};
   static const GLfloat fill_colour[4] = {0.3f, 0.3f, 0.4f, 1.0f};
   static const GLfloat specular[4] = {0.5f, 0.5f, 0.5f, 1.0f};
-  GLubyte *buffer;
-  GLint w = 0, h = 0, bytes = 0;
-  void *depth = NULL;
-  float *z = NULL;
-  int ok;
-#ifdef PF_CLIENT_MANGLE
-  PFcontext ctx;
-#else
-  OSMesaContext ctx;
-#endif
-  if (argc < 2) {
-    fprintf(stderr, "usage: %s OUT.pam [DEPTH]\n", argv[0]);
-    return 2;
-  }
-#ifdef PF_CLIENT_MANGLE
-  ctx = pfCreateContext(GL_RGBA, 24);
-#else
-  ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
-#endif
-  buffer = (GLubyte *)malloc(WIDTH * HEIGHT * 4);
-  if (!ctx || !buffer) return 1;
-#ifdef PF_CLIENT_MANGLE
-  ok = pfMakeCurrent(ctx, buffer, GL_UNSIGNED_BYTE, WIDTH, HEIGHT);
-#else
-  ok = OSMesaMakeCurrent(ctx, buffer, GL_UNSIGNED_BYTE, WIDTH, HEIGHT);
-#endif
-  if (!ok) return 1;
-  printf("%s\n", (const char *)glGetString(GL_RENDERER));
+  client_context c;
+  if (!client_begin(&c, argc, argv, WIDTH, HEIGHT, 24, 0)) return argc < 2 ? 2 : 1;
 
   glClearColor(0.85f, 0.85f, 0.8f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -146,20 +95,5 @@ int main(int argc, char *argv[]) {
   pose(WIDTH / 2, WIDTH / 2, HEIGHT, -15.0f, 80.0f, 5.0f, 35.0f);
   glFinish();
 
-  if (!client_write_pam(argv[1], WIDTH, HEIGHT, buffer)) return 1;
-#ifdef PF_CLIENT_MANGLE
-  if (pfGetDepthBuffer(ctx, &w, &h, &bytes, &depth)) z = client_depth_to_float(depth, w, h, bytes, 1);
-#else
-  if (OSMesaGetDepthBuffer(ctx, &w, &h, &bytes, &depth)) z = client_depth_to_float(depth, w, h, bytes, 0);
-#endif
-  if (argc > 2 && (!z || !client_write_depth(argv[2], w, h, z))) return 1;
-  ok = glGetError() == GL_NO_ERROR;
-  free(z);
-  free(buffer);
-#ifdef PF_CLIENT_MANGLE
-  pfDestroyContext(ctx);
-#else
-  OSMesaDestroyContext(ctx);
-#endif
-  return ok ? 0 : 3;
+  return client_end(&c, argc, argv);
 }
