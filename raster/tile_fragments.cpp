@@ -74,12 +74,15 @@ void Renderer::resolveTile(WorkerScratch& s, int x0, int y0, int w, int h, const
     st.row_begin = bound.y0 - y0;
     st.row_end = bound.y1 - y0;
   }
-  s.pixels_shaded += shadeTile(s.shade_ids.data(), s.slot_planes.data(), scene_.shades.data(), scene_.lightings.data(),
-                               scene_.lighting_equations.data(), st);
+  // (Under an empty colour mask nothing is written: only the alpha test needs the colours.)
+  const bool alpha_test = ordered && ordered->fragment.alpha_test;
+  if (scene_.color_mask != 0 || alpha_test)
+    s.pixels_shaded += shadeTile(s.shade_ids.data(), s.slot_planes.data(), scene_.shades.data(),
+                                 scene_.lightings.data(), scene_.lighting_equations.data(), st);
   // The G-buffer's pixels are written: empty it for what follows (only the bound's rows hold
   // an ordered draw's).
   const int row0 = ordered ? bound.y0 - y0 : 0, row1 = ordered ? bound.y1 - y0 : h;
-  if (ordered && !s.depth_before.empty()) {
+  if (alpha_test && !s.depth_before.empty()) {
     // Under a fragment the alpha test discarded, the depth its program wrote goes back.
     const int bw = bound.x1 - bound.x0;
     for (int y = row0; y < row1; ++y) {
