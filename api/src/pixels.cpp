@@ -60,7 +60,7 @@ void pfglPixelStorei(GLenum pname, GLint param) { pixelStore(pname, param); }
 void pfglPixelStoref(GLenum pname, GLfloat param) { pixelStore(pname, param); }
 
 // Colour as RGBA or RGB, bytes or floats; depth as floats, or unsigned ints / shorts scaled to
-// their range. Written by the pack modes (GL 1.5 section 4.3.2): rows GL_PACK_ROW_LENGTH pixels
+// their range; stencil values (GL_STENCIL_INDEX) as they are, in any of the four types. Written by the pack modes (GL 1.5 section 4.3.2): rows GL_PACK_ROW_LENGTH pixels
 // long (0: `width`), starting on GL_PACK_ALIGNMENT boundaries, after GL_PACK_SKIP_ROWS rows and
 // GL_PACK_SKIP_PIXELS pixels, each component's bytes reversed under GL_PACK_SWAP_BYTES. Pixels
 // outside the framebuffer are left as they are in `pixels` (GL leaves them undefined). Drawing
@@ -76,7 +76,7 @@ void pfglReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum form
   switch (format) {
     case GL_RGBA: components = 4; break;
     case GL_RGB: components = 3; break;
-    case GL_DEPTH_COMPONENT: components = 1; break;
+    case GL_DEPTH_COMPONENT: case GL_STENCIL_INDEX: components = 1; break;
     default: ctx->setError(GL_INVALID_ENUM); return;
   }
   size_t bytes;
@@ -86,7 +86,7 @@ void pfglReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum form
     case GL_UNSIGNED_INT: case GL_FLOAT: bytes = 4; break;
     default: ctx->setError(GL_INVALID_ENUM); return;
   }
-  if (format == GL_DEPTH_COMPONENT && ctx->depth_bits <= 0) {
+  if ((format == GL_DEPTH_COMPONENT && ctx->depth_bits <= 0) || (format == GL_STENCIL_INDEX && ctx->stencil_bits <= 0)) {
     ctx->setError(GL_INVALID_OPERATION);
     return;
   }
@@ -113,6 +113,18 @@ void pfglReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum form
         for (int c = 0; c < 4; ++c) v[c] = ctx->color[at * 4 + c] / 255.0;
       }
       unsigned char* dst = out + row * row_bytes + static_cast<size_t>(col) * pixel_bytes;
+      if (format == GL_STENCIL_INDEX) {  // an index: not scaled to the type's range
+        const uint8_t index = ctx->stencil[at];
+        const float f = index;
+        const uint16_t u16 = index;
+        const uint32_t u32 = index;
+        if (type == GL_FLOAT) std::memcpy(dst, &f, 4);
+        else if (type == GL_UNSIGNED_BYTE) dst[0] = index;
+        else if (type == GL_UNSIGNED_SHORT) std::memcpy(dst, &u16, 2);
+        else std::memcpy(dst, &u32, 4);
+        if (pack.swap_bytes) std::reverse(dst, dst + bytes);
+        continue;
+      }
       for (int c = 0; c < components; ++c) {
         const double f = std::clamp(v[c], 0.0, 1.0);
         if (type == GL_FLOAT) {
