@@ -222,3 +222,37 @@ TEST(Api, IncompleteTriangleIsDropped) {
   for (size_t i = 0; i < c.pixels.size(); i += 4) EXPECT_EQ(c.pixels[i], 0);
   EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
 }
+
+// The stencil buffer exists only when the context asks for it (PF_STENCIL_BITS): GL_STENCIL_BITS
+// says 8 or 0, and reading GL_STENCIL_INDEX without one is GL_INVALID_OPERATION (as OSMesa);
+// with one, a clear under a write mask reads back as (old & ~mask) | (value & mask).
+TEST(Api, StencilBufferOnlyWhenAskedFor) {
+  std::vector<unsigned char> px(8 * 8 * 4);
+  for (int bits : {0, 8}) {
+    const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_STENCIL_BITS, bits, 0};
+    PFcontext ctx = pfCreateContextAttribs(attribs);
+    ASSERT_NE(ctx, nullptr);
+    ASSERT_TRUE(pfMakeCurrent(ctx, px.data(), GL_UNSIGNED_BYTE, 8, 8));
+    GLint stencil_bits = -1;
+    pfglGetIntegerv(GL_STENCIL_BITS, &stencil_bits);
+    EXPECT_EQ(stencil_bits, bits);
+    pfglClearStencil(0x5a);
+    pfglClear(GL_STENCIL_BUFFER_BIT);
+    pfglStencilMask(0x0f);
+    pfglClearStencil(0xa3);
+    pfglClear(GL_STENCIL_BUFFER_BIT);
+    GLubyte value = 7;
+    pfglReadPixels(3, 4, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &value);
+    if (bits == 0) {
+      EXPECT_EQ(pfglGetError(), GLenum(GL_INVALID_OPERATION));
+      EXPECT_EQ(value, 7);
+    } else {
+      EXPECT_EQ(pfglGetError(), GLenum(GL_NO_ERROR));
+      EXPECT_EQ(value, 0x53);
+    }
+    pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
+    pfDestroyContext(ctx);
+  }
+  const int negative[] = {PF_STENCIL_BITS, -1, 0};
+  EXPECT_EQ(pfCreateContextAttribs(negative), nullptr);
+}
