@@ -1,8 +1,9 @@
 // libFuzzer target for sequences of API calls (docs/reliability.md): the bytes are a program of
 // GL-1.x and extension calls -- glBegin of every mode (and of no mode), vertices and values that
 // are NaN, infinite or huge, matrix stacks pushed and popped past their ends, degenerate
-// projections, bad enums and names, sequence points, compiles, clears and finishes, a glBegin of
-// very many vertices -- run on a small context. Nothing may crash, hang or trip ASan/UBSan, and
+// projections, bad enums and names, sequence points, compiles, clears and finishes, the
+// per-fragment operations' state with any values (scissor, alpha test, blending, logic op,
+// stencil), a glBegin of very many vertices -- run on a small context. Nothing may crash, hang or trip ASan/UBSan, and
 // GL's rules are checked (the checks trap, which libFuzzer reports): a glBegin whose only erring
 // command is one GL does not allow there leaves exactly GL_INVALID_OPERATION at glEnd, and the
 // glBegin of very many vertices leaves no error.
@@ -43,9 +44,10 @@ GLenum aMode(FuzzedDataProvider& in) {
 }
 
 GLenum aCapability(FuzzedDataProvider& in) {
-  static const GLenum kCaps[] = {GL_DEPTH_TEST, GL_CULL_FACE, GL_LIGHTING, GL_LIGHT0, GL_LIGHT7, GL_NORMALIZE,
-                                 GL_COLOR_MATERIAL, GL_SCISSOR_TEST, GL_TEXTURE_2D, 0x1234};
-  return kCaps[in.ConsumeIntegralInRange<size_t>(0, 9)];
+  static const GLenum kCaps[] = {GL_DEPTH_TEST, GL_CULL_FACE,   GL_LIGHTING,   GL_LIGHT0,         GL_LIGHT7,
+                                 GL_NORMALIZE,  GL_COLOR_MATERIAL, GL_SCISSOR_TEST, GL_TEXTURE_2D,  0x1234,
+                                 GL_BLEND,      GL_ALPHA_TEST,  GL_STENCIL_TEST, GL_COLOR_LOGIC_OP, GL_DITHER};
+  return kCaps[in.ConsumeIntegralInRange<size_t>(0, sizeof(kCaps) / sizeof(kCaps[0]) - 1)];
 }
 
 // A command GL forbids between glBegin and glEnd.
@@ -108,8 +110,41 @@ void hugeBegin(FuzzedDataProvider& in, bool& drawn_one) {
   if (pfglGetError() != static_cast<GLenum>(GL_NO_ERROR)) __builtin_trap();
 }
 
+// The per-fragment operations' state, any values: the scissor box (extreme positions and
+// sizes), the alpha test, blending, the logic op, the stencil test, the masks.
+void fragmentState(FuzzedDataProvider& in) {
+  switch (in.ConsumeIntegralInRange<int>(0, 6)) {
+    case 0:
+      pfglScissor(in.ConsumeIntegral<GLint>(), in.ConsumeIntegral<GLint>(), in.ConsumeIntegral<GLsizei>(),
+                  in.ConsumeIntegral<GLsizei>());
+      break;
+    case 1: pfglAlphaFunc(in.ConsumeIntegralInRange<GLenum>(GL_NEVER - 1, GL_ALWAYS + 1), aFloat(in)); break;
+    case 2:
+      pfglBlendFuncSeparate(in.ConsumeIntegralInRange<GLenum>(0, 0x8004), in.ConsumeIntegralInRange<GLenum>(0, 0x8004),
+                            in.ConsumeIntegralInRange<GLenum>(0, 0x308), in.ConsumeIntegralInRange<GLenum>(0, 0x308));
+      break;
+    case 3:
+      pfglBlendEquation(in.ConsumeIntegralInRange<GLenum>(0x8005, 0x800C));
+      pfglBlendColor(aFloat(in), aFloat(in), aFloat(in), aFloat(in));
+      break;
+    case 4: pfglLogicOp(in.ConsumeIntegralInRange<GLenum>(GL_CLEAR - 1, GL_SET + 1)); break;
+    case 5:
+      pfglStencilFunc(in.ConsumeIntegralInRange<GLenum>(GL_NEVER - 1, GL_ALWAYS + 1), in.ConsumeIntegral<GLint>(),
+                      in.ConsumeIntegral<GLuint>());
+      pfglStencilOp(in.ConsumeIntegralInRange<GLenum>(0, GL_DECR_WRAP), in.ConsumeIntegralInRange<GLenum>(0, GL_DECR_WRAP),
+                    in.ConsumeIntegralInRange<GLenum>(0, GL_DECR_WRAP));
+      break;
+    default:
+      pfglStencilMask(in.ConsumeIntegral<GLuint>());
+      pfglClearStencil(in.ConsumeIntegral<GLint>());
+      pfglColorMask(in.ConsumeBool(), in.ConsumeBool(), in.ConsumeBool(), in.ConsumeBool());
+      pfglDepthMask(in.ConsumeBool());
+      break;
+  }
+}
+
 void oneCall(FuzzedDataProvider& in, bool& huge_drawn) {
-  switch (in.ConsumeIntegralInRange<int>(0, 20)) {
+  switch (in.ConsumeIntegralInRange<int>(0, 21)) {
     case 0: oneBegin(in, in.ConsumeBool()); break;
     case 19: hugeBegin(in, huge_drawn); break;
     case 1: pfglBegin(in.ConsumeIntegral<GLenum>()); break;  // any enum, a primitive's mode or none
@@ -153,6 +188,7 @@ void oneCall(FuzzedDataProvider& in, bool& huge_drawn) {
       pfglEnd();
       break;
     }
+    case 20: fragmentState(in); break;
     default: pfglFinish(); break;
   }
 }
@@ -161,7 +197,8 @@ void oneCall(FuzzedDataProvider& in, bool& huge_drawn) {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static std::vector<unsigned char> pixels(kSize * kSize * 4);
-  const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_THREADS, 2, PF_ITERATION_CAP, static_cast<int>(kIterationCap), 0};
+  const int attribs[] = {PF_FORMAT,  GL_RGBA, PF_DEPTH_BITS,    24, PF_STENCIL_BITS, 8, PF_THREADS, 2,
+                         PF_ITERATION_CAP, static_cast<int>(kIterationCap), 0};
   PFcontext ctx = pfCreateContextAttribs(attribs);
   if (!ctx) return 0;
   // The calls on a 1 MB stack, an application's worker thread's (the current context is the
