@@ -27,6 +27,7 @@ inline float applyFieldOp(FieldOp op, float a, float b) {
     case FieldOp::Sin: return std::sin(a);
     case FieldOp::Cos: return std::cos(a);
     case FieldOp::Atan: return std::atan(a);
+    case FieldOp::Floor: return std::floor(a);
     case FieldOp::Add: return a + b;
     case FieldOp::Sub: return a - b;
     case FieldOp::Mul: return a * b;

@@ -22,6 +22,7 @@ std::string_view fieldOpName(FieldOp op) {
     case FieldOp::Sin: return "sin";
     case FieldOp::Cos: return "cos";
     case FieldOp::Atan: return "atan";
+    case FieldOp::Floor: return "floor";
     case FieldOp::Add: return "add";
     case FieldOp::Sub: return "sub";
     case FieldOp::Mul: return "mul";

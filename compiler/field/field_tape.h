@@ -30,6 +30,10 @@ constexpr size_t kMaxFieldTapeSize = 1u << 18;
 // The operations every evaluator implements. Unary ops read `a`; binary ops read `a` and `b`;
 // Select reads all three.
 //
+// Floor is a step function (HyperFun's floor, int and the attribute library's patterns need it):
+// its derivative is 0 wherever it is defined (everywhere but at the integers, where it jumps),
+// and its interval over [lo, hi] is [floor(lo), floor(hi)] -- exact in float, no rounding.
+//
 // Point-dependent choices (HyperFun's `if` on x, the language's `if` on p): Less and LessEq give
 // 1 where a < b (a <= b) and 0 elsewhere, NaN included (C's comparisons); Select gives b where
 // a != 0 and c elsewhere -- only the chosen operand's value, so an unchosen branch's inf or NaN
@@ -40,6 +44,7 @@ enum class FieldOp : uint8_t {
   X, Y, Z, Const,                               // leaves
   Neg, Abs, Square, Sqrt, Exp, Log, Sin, Cos,   // unary
   Atan,                                         // unary (after the others: Fidget has no atan)
+  Floor,                                        // unary: the largest integer <= a (not Fidget's)
   Add, Sub, Mul, Div, Min, Max,                 // binary
   Less, LessEq,                                 // binary: 1 or 0
   Select,                                       // ternary: a != 0 ? b : c
@@ -51,7 +56,8 @@ constexpr int fieldOpArity(FieldOp op) {
   switch (op) {
     case FieldOp::X: case FieldOp::Y: case FieldOp::Z: case FieldOp::Const: case FieldOp::Sample: return 0;
     case FieldOp::Neg: case FieldOp::Abs: case FieldOp::Square: case FieldOp::Sqrt:
-    case FieldOp::Exp: case FieldOp::Log: case FieldOp::Sin: case FieldOp::Cos: case FieldOp::Atan: return 1;
+    case FieldOp::Exp: case FieldOp::Log: case FieldOp::Sin: case FieldOp::Cos: case FieldOp::Atan:
+    case FieldOp::Floor: return 1;
     case FieldOp::Select: return 3;
     default: return 2;
   }

@@ -57,6 +57,12 @@ Interval intervalAtan(Interval a) {
   return outwardLibm(std::atan(static_cast<double>(a.lo)), std::atan(static_cast<double>(a.hi)));
 }
 
+// floor is non-decreasing and exact in float: [floor(lo), floor(hi)]; a NaN end stays NaN-able.
+Interval intervalFloor(Interval a) {
+  if (std::isnan(a.lo) || std::isnan(a.hi)) return Interval::whole();
+  return {std::floor(a.lo), std::floor(a.hi)};
+}
+
 // sin over [lo, hi] reaches +1 where lo <= pi/2 + 2k pi <= hi, and -1 at -pi/2 + 2k pi.
 static Interval periodicRange(Interval a, double phase_max, double (*fn)(double)) {
   if (!std::isfinite(a.lo) || !std::isfinite(a.hi)) return Interval::whole();

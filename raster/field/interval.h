@@ -55,6 +55,7 @@ Interval intervalLog(Interval a);
 Interval intervalSin(Interval a);
 Interval intervalCos(Interval a);
 Interval intervalAtan(Interval a);
+Interval intervalFloor(Interval a);
 Interval intervalDiv(Interval a, Interval b);
 
 // The operations every field is made of most, inline: the interval evaluators' inner loops.

@@ -134,13 +134,15 @@ PF_SIMD_CLONES void runInstruction(const FloatSlotInstr& in, int n, float* __res
     case FieldOp::Log:
     case FieldOp::Sin:
     case FieldOp::Cos:
-    case FieldOp::Atan: {
-      // Transcendentals: the scalar operations, lane by lane.
+    case FieldOp::Atan:
+    case FieldOp::Floor: {
+      // Transcendentals and floor: the scalar operations, lane by lane.
       Interval (*op)(Interval) = in.op == FieldOp::Exp   ? intervalExp
                                  : in.op == FieldOp::Log ? intervalLog
                                  : in.op == FieldOp::Sin ? intervalSin
                                  : in.op == FieldOp::Cos ? intervalCos
-                                                         : intervalAtan;
+                                 : in.op == FieldOp::Atan ? intervalAtan
+                                                          : intervalFloor;
       for (int j = 0; j < n; ++j) {
         const Interval r = op({alo[j], ahi[j]});
         olo[j] = r.lo;

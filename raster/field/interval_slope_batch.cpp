@@ -150,6 +150,15 @@ PF_SIMD_CLONES void runSlopeInstruction(const FloatSlotInstr& in, int n, const S
       }
       break;
     }
+    case FieldOp::Floor:  // constant over the box (rate 0) unless it steps inside it
+      for (int j = 0; j < n; ++j) {
+        const Interval v = intervalFloor({avlo[j], avhi[j]});
+        const bool constant = finite(v.lo, v.hi) & (v.lo == v.hi);
+        vlo[j] = v.lo, vhi[j] = v.hi;
+        rlo[j] = constant ? 0.0f : -kInf;
+        rhi[j] = constant ? 0.0f : kInf;
+      }
+      break;
     case FieldOp::Select:
       for (int j = 0; j < n; ++j) {
         const float a0 = avlo[j], a1 = avhi[j];

@@ -56,6 +56,10 @@ IntervalSlope IntervalSlopeEvaluator::evaluate(Interval x, Interval y, Interval 
       case FieldOp::Sin: value = intervalSin(a), rate = intervalMul(intervalCos(a), da); break;
       case FieldOp::Cos: value = intervalCos(a), rate = intervalNeg(intervalMul(intervalSin(a), da)); break;
       case FieldOp::Atan: value = intervalAtan(a), rate = intervalDiv(da, intervalAdd(one, intervalSquare(a))); break;
+      case FieldOp::Floor:  // constant over the box (rate 0) unless it steps inside it
+        value = intervalFloor(a);
+        rate = finite(value) && value.lo == value.hi ? zero : Interval::whole();
+        break;
       case FieldOp::Add: value = intervalAdd(a, b), rate = intervalAdd(da, db); break;
       case FieldOp::Sub: value = intervalSub(a, b), rate = intervalSub(da, db); break;
       case FieldOp::Mul: value = intervalMul(a, b), rate = intervalAdd(intervalMul(da, b), intervalMul(a, db)); break;

@@ -96,6 +96,7 @@ bool rayPolynomials(const FieldTape& tape, const std::array<double, 3>& origin, 
       case FieldOp::Sin: ok = onConstant(std::sin(a.c[0])); break;
       case FieldOp::Cos: ok = onConstant(std::cos(a.c[0])); break;
       case FieldOp::Atan: ok = onConstant(std::atan(a.c[0])); break;
+      case FieldOp::Floor: ok = onConstant(std::floor(a.c[0])); break;
       case FieldOp::Min: ok = onConstant(std::min(a.c[0], b.c[0])); break;
       case FieldOp::Max: ok = onConstant(std::max(a.c[0], b.c[0])); break;
       case FieldOp::Less: ok = onConstant(a.c[0] < b.c[0] ? 1.0 : 0.0); break;

@@ -100,6 +100,7 @@ void RunFloatSlotsWith(D d, const FloatSlotInstr* code, size_t count, float* bas
           break;
         }
         case FieldOp::Atan: r = fixLanes(d, hn::CallAtan(d, va), hn::Not(hn::IsNaN(va)), va, cAtan, atanRange); break;
+        case FieldOp::Floor: r = hn::Floor(va); break;
         case FieldOp::Add: r = hn::Add(va, hn::LoadU(d, b + j)); break;
         case FieldOp::Sub: r = hn::Sub(va, hn::LoadU(d, b + j)); break;
         case FieldOp::Mul: r = hn::Mul(va, hn::LoadU(d, b + j)); break;
@@ -209,9 +210,12 @@ void RunGradientSlotsWith(D d, const FloatSlotInstr* code, size_t count, float* 
             r = fixLanes(d, hn::CallAtan(d, av), hn::Not(hn::IsNaN(av)), av, cAtan, atanRange);
             f = hn::Div(one, hn::Add(one, hn::Mul(av, av)));
             break;
+          case FieldOp::Floor: r = hn::Floor(av); break;  // a step: derivative 0 (not defined at the integers)
           default: unary = false; break;
         }
-        if (unary) {
+        if (unary && in.op == FieldOp::Floor) {
+          dx = dy = dz = zero;  // exactly 0, even where a's own derivatives are not finite
+        } else if (unary) {
           dx = hn::Mul(f, ax);
           dy = hn::Mul(f, ay);
           dz = hn::Mul(f, az);

@@ -86,6 +86,7 @@ inline double evaluateDouble(const FieldTape& tape, double x, double y, double z
       case FieldOp::Sin: r = std::sin(a); break;
       case FieldOp::Cos: r = std::cos(a); break;
       case FieldOp::Atan: r = std::atan(a); break;
+      case FieldOp::Floor: r = std::floor(a); break;
       case FieldOp::Add: r = a + b; break;
       case FieldOp::Sub: r = a - b; break;
       case FieldOp::Mul: r = a * b; break;

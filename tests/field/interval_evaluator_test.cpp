@@ -36,7 +36,8 @@ TEST(IntervalEvaluator, EveryOperationEnclosesDenseSamples) {
       {-7.0f, -3.0f},  {0.1f, 0.1000001f}, {1e6f, 1e7f},   {-40.0f, 40.0f},   {1.5f, 1.6f},
       {3.1f, 3.2f},    {-1e-7f, 1e-7f},   {80.0f, 90.0f},  {0.333f, 0.334f}};
   const FieldOp unary[] = {FieldOp::Neg, FieldOp::Abs, FieldOp::Square, FieldOp::Sqrt,
-                           FieldOp::Exp, FieldOp::Log, FieldOp::Sin,    FieldOp::Cos, FieldOp::Atan};
+                           FieldOp::Exp, FieldOp::Log, FieldOp::Sin,    FieldOp::Cos, FieldOp::Atan,
+                           FieldOp::Floor};
   const FieldOp binary[] = {FieldOp::Add, FieldOp::Sub, FieldOp::Mul, FieldOp::Div, FieldOp::Min, FieldOp::Max};
   auto samples = [](Interval r) {
     std::vector<float> s;

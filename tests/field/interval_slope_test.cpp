@@ -72,6 +72,24 @@ TEST(IntervalSlope, EnclosesTranscendentalsAndDivisions) {
   checkEnclosures(b.finish(b.binary(FieldOp::Max, a, b.binary(FieldOp::Mul, l, b.unary(FieldOp::Sqrt, e)))), "mixed");
 }
 
+TEST(IntervalSlope, FloorIsFlatBetweenItsStepsAndUnboundedAcrossThem) {
+  B b;
+  const uint32_t steps = b.unary(FieldOp::Floor, b.binary(FieldOp::Mul, b.constant(3.0f), b.x()));
+  const uint32_t wave = b.unary(FieldOp::Sin, b.binary(FieldOp::Add, b.y(), b.unary(FieldOp::Floor, b.z())));
+  checkEnclosures(b.finish(b.binary(FieldOp::Add, b.binary(FieldOp::Mul, b.constant(0.01f), b.x()),
+                                    b.binary(FieldOp::Add, steps, wave))), "floor");
+  // 0.01 x + floor(3x): rises between the steps (rate 0.01), jumps across one.
+  B c;
+  const FieldTape stair = c.finish(c.binary(FieldOp::Add, c.binary(FieldOp::Mul, c.constant(0.01f), c.x()),
+                                            c.unary(FieldOp::Floor, c.binary(FieldOp::Mul, c.constant(3.0f), c.x()))));
+  const Interval box{0.2f, 0.3f}, one{1.0f, 1.0f}, zero{0.0f, 0.0f};
+  IntervalSlopeEvaluator se(stair);
+  const IntervalSlope flat = se.evaluate({0.1f, 0.3f}, box, box, one, zero, zero);
+  EXPECT_TRUE(flat.monotone());
+  EXPECT_LT(flat.value.hi, 0.01f);  // 0.01 x + 0 over the box
+  EXPECT_FALSE(se.evaluate({0.2f, 0.4f}, box, box, one, zero, zero).monotone());
+}
+
 TEST(IntervalSlope, MonotoneOnlyWhereItHolds) {
   const Interval along_x[3] = {{1.0f, 1.0f}, {0.0f, 0.0f}, {0.0f, 0.0f}};
   const Interval box_x{-0.5f, 0.5f}, box{0.2f, 0.3f};
