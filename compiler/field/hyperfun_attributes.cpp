@@ -21,15 +21,6 @@ Real K(double v) { return Real::known(v); }
 // HyperFun's `f >= 0.0` as a tape value (1 or 0; 0 where f is NaN, as C's comparison).
 Real atLeastZero(TapeAlgebra& m, Real f) { return m.lessEq(K(0.0), f); }
 
-// The array argument `i`, which must hold at least `n` items (HyperFun reads them unchecked).
-Items& atLeast(LibraryCall& c, int i, size_t n) {
-  Items& a = *c.arrays[i];
-  if (a.size() < n)
-    reject(i, paramLabel(c, i) + " must be an array of at least " + std::to_string(n) + " items; '" +
-                  c.array_names[i] + "' has " + std::to_string(a.size()));
-  return a;
-}
-
 }  // namespace
 
 // hfA_SetColor(f, s, r, g, b): where f >= 0, s[1..3] = (r, g, b); returns 1.
@@ -137,22 +128,15 @@ Real hfAUnion(LibraryCall& c) {
   return united;
 }
 
-// hfA_Floor(v): C's (int) cast of v (truncation); hfA_Modulo(a, b): a - b (int)(a/b), plus b
-// when that is negative. Folded when known; the tapes have no truncation.
-Real hfAFloor(LibraryCall& c) {
-  if (!c.reals[0].is_known)
-    reject(0, "'hfA_Floor' of a value that depends on the point is not supported yet: primflow's field tapes have no "
-              "truncation");
-  return K(std::trunc(c.reals[0].value));
-}
+// hfA_Floor(v): C's (int) cast of v -- truncation towards zero, despite the name -- as a double
+// (past int's range C's cast is undefined; primflow keeps truncating). hfA_Modulo(a, b):
+// a - b (int)(a/b), plus b where that is negative. On the tape through floor (TapeAlgebra::trunc).
+Real hfAFloor(LibraryCall& c) { return c.alg.trunc(c.reals[0]); }
 Real hfAModulo(LibraryCall& c) {
-  if (!c.reals[0].is_known || !c.reals[1].is_known)
-    reject(-1, "'hfA_Modulo' of a value that depends on the point is not supported yet: primflow's field tapes have "
-               "no truncation");
-  const double a = c.reals[0].value, b = c.reals[1].value;
-  double r = a - std::trunc(a / b) * b;
-  if (r < 0.0) r += b;
-  return K(r);
+  TapeAlgebra& m = c.alg;
+  const Real a = c.reals[0], b = c.reals[1];
+  const Real r = m.sub(a, m.mul(m.trunc(m.div(a, b)), b));
+  return m.select(m.less(r, K(0.0)), m.add(r, b), r);
 }
 
 }  // namespace pf::field::hyperfun

@@ -50,11 +50,6 @@ void offAxes(int axis, int& u, int& v) {
                  name);
 }
 template <auto F>
-Real knownOnly(LibraryCall& c) {
-  if (!c.reals[0].is_known) noTapeOp(c);
-  return K(F(c.reals[0].value));
-}
-template <auto F>
 Real knownPair(LibraryCall& c) {
   if (!c.reals[0].is_known || !c.reals[1].is_known) noTapeOp(c);
   return K(F(c.reals[0].value, c.reals[1].value));
@@ -64,10 +59,11 @@ double hfRound(double v) {
   return ce - v > 0.5 ? ce - 1.0 : ce;
 }
 constexpr auto kMod = [](double a, double b) { return std::fmod(hfRound(a), hfRound(b)); };
-constexpr auto kCeil = [](double v) { return std::ceil(v); };
-constexpr auto kFloor = [](double v) { return std::floor(v); };
-constexpr auto kInt = [](double v) { return std::trunc(v); };
-constexpr auto kFrac = [](double v) { return v - std::trunc(v); };
+// The integer parts, through the tape's floor: ceil(v) = -floor(-v); int truncates; frac = v - int(v).
+Real fFloor(LibraryCall& c) { return c.alg.floor(c.reals[0]); }
+Real fCeil(LibraryCall& c) { return c.alg.neg(c.alg.floor(c.alg.neg(c.reals[0]))); }
+Real fInt(LibraryCall& c) { return c.alg.trunc(c.reals[0]); }
+Real fFrac(LibraryCall& c) { return c.alg.sub(c.reals[0], c.alg.trunc(c.reals[0])); }
 
 template <Real (TapeAlgebra::*Op)(Real)>
 Real unary(LibraryCall& c) { return (c.alg.*Op)(c.reals[0]); }
@@ -491,9 +487,10 @@ Real hfSpaceMap(LibraryCall& c) {
 }
 
 // Messages for the unsupported functions; '$' stands for the function's name.
-constexpr std::string_view kAttribute =
-    "'$' is not supported yet: of the attribute library primflow has hfA_SetColor, hfA_SetAttributes, hfA_Lerp, "
-    "hfA_Cerp, hfA_Clamp, hfA_Pulse, hfA_Step, hfA_SmoothStep, hfA_Wave, hfA_Union, hfA_Floor and hfA_Modulo";
+constexpr std::string_view kPerlin =
+    "'$' is not supported: it reads HyperFun's Perlin noise, whose permutation table HyperFun draws from the C "
+    "library's (in the R package, R's) random generator at first use -- another table each run -- and whose "
+    "look-ups by the point's cell have no tape form (a field tape has no table gather)";
 constexpr std::string_view kNotYet = "'$' is not supported yet";
 constexpr std::string_view kOnlyInR =
     "'$' is not supported: it calls back into R and exists only in HyperFun's R package";
@@ -509,9 +506,8 @@ const LibraryFunction kFunctions[] = {
     {"sinh", "v", "R", fSinh, {}}, {"cosh", "v", "R", fCosh, {}}, {"tanh", "v", "R", fTanh, {}},
     {"sign", "v", "R", fSign, {}}, {"mod", "a, b", "RR", knownPair<kMod>, {}},
     {"max", "a, b", "RR", binary<&TapeAlgebra::max>, {}}, {"min", "a, b", "RR", binary<&TapeAlgebra::min>, {}},
-    {"atan2", "y, x", "RR", fAtan2, {}}, {"ceil", "v", "R", knownOnly<kCeil>, {}},
-    {"floor", "v", "R", knownOnly<kFloor>, {}}, {"int", "v", "R", knownOnly<kInt>, {}},
-    {"frac", "v", "R", knownOnly<kFrac>, {}},
+    {"atan2", "y, x", "RR", fAtan2, {}}, {"ceil", "v", "R", fCeil, {}},
+    {"floor", "v", "R", fFloor, {}}, {"int", "v", "R", fInt, {}}, {"frac", "v", "R", fFrac, {}},
     // Primitives.
     {"hfSphere", "x, center, R", "AAR", hfSphere, {}},
     {"hfEllipsoid", "x, center, a, b, c", "AARRR", hfEllipsoid, {}},
@@ -589,13 +585,19 @@ const LibraryFunction kFunctions[] = {
     {"hfA_Union", "f1, f2, s, s1, s2, op", "RRAAAR", hfAUnion, {}},
     {"hfA_Floor", "v", "R", hfAFloor, {}},
     {"hfA_Modulo", "a, b", "RR", hfAModulo, {}},
+    {"hfA_CheckerBoard", "x, block_size, gap_size, output, input_block, input_gap", "AAAAAA", hfACheckerBoard, {}},
+    {"hfA_Circles", "x, output, input_attr, input_map", "AAAA", hfACircles, {}},
+    {"hfA_Crackles", "x, output, freq, input_attr, input_map", "AARAA", hfACrackles, {}},
+    {"hfA_NoiseG", "x, freq, phase", "ARR", hfANoiseG, {}},
+    {"hfA_LookUpTable", "t, output, input_attr, input_map", "RAAA", hfALookUpTable, {}},
+    {"hfA_SmoothLookUpTable", "t, output, input_attr, input_map", "RAAA", hfASmoothLookUpTable, {}},
+    {"hfA_Spline", "s, knots, x, xmin, xmax", "AARRR", hfASpline, {}},
+    {"hfA_RGBToHSV", "rgb, hsv", "AA", hfARGBToHSV, {}},
+    {"hfA_HSVToRGB", "hsv, rgb", "AA", hfAHSVToRGB, {}},
     // Registered in HyperFun but not supported yet.
     no("hfBezierVolume", kNotYet), no("hfSawtooth", kNotYet),
     no("hfR", kOnlyInR),
-    no("hfA_CheckerBoard", kAttribute), no("hfA_Crackles", kAttribute), no("hfA_Circles", kAttribute),
-    no("hfA_NoiseG", kAttribute), no("hfA_NoiseP", kAttribute), no("hfA_Turbulence", kAttribute),
-    no("hfA_LookUpTable", kAttribute), no("hfA_SmoothLookUpTable", kAttribute), no("hfA_Spline", kAttribute),
-    no("hfA_RGBToHSV", kAttribute), no("hfA_HSVToRGB", kAttribute),
+    no("hfA_NoiseP", kPerlin), no("hfA_Turbulence", kPerlin),
 };
 
 bool equalsLowercase(std::string_view name, std::string_view lowercase) {

@@ -59,6 +59,9 @@ class TapeAlgebra {
   Real sin(Real a) { return a.is_known ? Real::known(std::sin(a.value)) : emit(FieldOp::Sin, a); }
   Real cos(Real a) { return a.is_known ? Real::known(std::cos(a.value)) : emit(FieldOp::Cos, a); }
   Real atan(Real a) { return a.is_known ? Real::known(std::atan(a.value)) : emit(FieldOp::Atan, a); }
+  Real floor(Real a) { return a.is_known ? Real::known(std::floor(a.value)) : emit(FieldOp::Floor, a); }
+  // C's (int) cast of a (towards zero), as a double: -floor(-a) below 0, floor(a) elsewhere.
+  Real trunc(Real a) { return a.is_known ? Real::known(std::trunc(a.value)) : select(less(a, Real::known(0.0)), neg(floor(neg(a))), floor(a)); }
 
   // HyperFun's a^b: an exponent within 1e-6 above an integer n multiplies (a negative base is
   // fine; a negative n takes the reciprocal); any other exponent is exp(b*log(a)).

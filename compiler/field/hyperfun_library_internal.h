@@ -1,5 +1,5 @@
 // Shared by the source files of HyperFun's library (hyperfun_library.cpp,
-// hyperfun_convolution.cpp, hyperfun_sardf.cpp and hyperfun_attributes.cpp), not by its users: the checks on a library call's arguments, which
+// hyperfun_convolution.cpp, hyperfun_sardf.cpp and the hyperfun_attribute*.cpp files), not by its users: the checks on a library call's arguments, which
 // throw LibraryError with a message naming the argument, and the library functions defined
 // outside hyperfun_library.cpp, for its table.
 #pragma once
@@ -30,6 +30,15 @@ inline std::vector<Real>& items(LibraryCall& c, int i, size_t size) {
   if (a.size() != size)
     reject(i, paramLabel(c, i) + " must be an array of " + std::to_string(size) + " items; '" + c.array_names[i] +
                   "' has " + std::to_string(a.size()));
+  return a;
+}
+
+// The items of array argument i, which must hold at least `n` items (HyperFun reads them unchecked).
+inline std::vector<Real>& atLeast(LibraryCall& c, int i, size_t n) {
+  std::vector<Real>& a = *c.arrays[i];
+  if (a.size() < n)
+    reject(i, paramLabel(c, i) + " must be an array of at least " + std::to_string(n) + " items; '" +
+                  c.array_names[i] + "' has " + std::to_string(a.size()));
   return a;
 }
 
@@ -84,5 +93,16 @@ Real hfAWave(LibraryCall& c);
 Real hfAUnion(LibraryCall& c);
 Real hfAFloor(LibraryCall& c);
 Real hfAModulo(LibraryCall& c);
+// The patterns (hyperfun_attribute_patterns.cpp).
+Real hfACheckerBoard(LibraryCall& c);
+Real hfACircles(LibraryCall& c);
+Real hfACrackles(LibraryCall& c);
+Real hfANoiseG(LibraryCall& c);
+// The tables and colour spaces (hyperfun_attribute_tables.cpp).
+Real hfALookUpTable(LibraryCall& c);
+Real hfASmoothLookUpTable(LibraryCall& c);
+Real hfASpline(LibraryCall& c);
+Real hfARGBToHSV(LibraryCall& c);
+Real hfAHSVToRGB(LibraryCall& c);
 
 }  // namespace pf::field::hyperfun

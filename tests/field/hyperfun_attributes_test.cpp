@@ -5,72 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <functional>
-#include <random>
 
-#include "compiler/field/field_source.h"
-#include "compiler/field/hyperfun_reader.h"
-#include "field/field_reference.h"
+#include "field/hyperfun_attribute_helpers.h"
 
 namespace pf::field {
 namespace {
 
-using Colour = std::function<std::vector<double>(double, double, double)>;
-
-struct Compiled {
-  FieldTape shape;
-  std::vector<FieldTape> attributes;
-};
-
-Compiled compileOk(const std::string& text) {
-  DiagnosticLog log;
-  Compiled c;
-  auto tape = readHyperFunModel("m.hf", text, log, {}, "my_model", 0.0, &c.attributes);
-  EXPECT_TRUE(tape) << log.format();
-  if (tape) c.shape = *tape;
-  return c;
-}
-
-std::string compileError(const std::string& text) {
-  DiagnosticLog log;
-  std::vector<FieldTape> attributes;
-  auto tape = readHyperFunModel("m.hf", text, log, {}, "my_model", 0.0, &attributes);
-  EXPECT_FALSE(tape) << text;
-  return log.format();
-}
-
-void expectHas(const std::string& text, const std::string& part) {
-  EXPECT_NE(text.find(part), std::string::npos) << "expected to find: " << part << "\nin:\n" << text;
-}
-
-// A model my_model(x[3], a[1], s[3]) with these body lines (the body starts on line 2) and
-// a ball of radius 2 as its shape.
-std::string model(const std::string& body) {
-  return "my_model(x[3], a[1], s[3]) {\n" + body + "\nmy_model = 4 - x[1]*x[1] - x[2]*x[2] - x[3]*x[3];\n}\n";
-}
-
-// Every attribute tape against `want` at random points of [-2.5, 2.5]^3, skipping points within
-// `edge` of a discontinuity the test names (`near_edge`), where float and double may choose
-// differently.
-void expectAttributes(const std::string& text, const Colour& want,
-                      const std::function<bool(double, double, double)>& near_edge = nullptr) {
-  SCOPED_TRACE(text);
-  const Compiled c = compileOk(text);
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> u(-2.5, 2.5);
-  int checked = 0;
-  for (int k = 0; k < 400; ++k) {
-    const double x = u(rng), y = u(rng), z = u(rng);
-    if (near_edge && near_edge(x, y, z)) continue;
-    const std::vector<double> w = want(x, y, z);
-    ASSERT_EQ(c.attributes.size(), w.size());
-    for (size_t i = 0; i < w.size(); ++i)
-      EXPECT_NEAR(testing::evaluateDouble(c.attributes[i], x, y, z), w[i], 2e-6 * std::max(1.0, std::fabs(w[i])))
-          << "s[" << i + 1 << "] at " << x << ", " << y << ", " << z;
-    ++checked;
-  }
-  EXPECT_GT(checked, 300);
-}
+using namespace attribute_testing;
 
 TEST(HyperFunAttributes, AssignedItemsAreTheModelsColour) {
   expectAttributes(model("s[1] = 0.5 + 0.5*sin(3*x[1]);\ns[2] = x[2]*x[3];\ns[3] = 0.25;"),
@@ -196,9 +137,8 @@ TEST(HyperFunAttributes, MisuseIsReportedWhereItIs) {
             "m.hf:4:17: error: 's1' (argument 2 of 'hfA_Lerp') must be an array of 3 items; 'c' has 2");
   expectHas(compileError(model("d = hfA_Union(x[1], x[2], s, s, s, x[3]);")),
             "m.hf:2:36: error: 'op' (argument 6 of 'hfA_Union') depends on the point x");
-  expectHas(compileError(model("d = hfA_Floor(x[1]);")), "m.hf:2:15: error: 'hfA_Floor' of a value that depends");
-  expectHas(compileError(model("d = hfA_CheckerBoard(x, s, s, s, s, s);")),
-            "m.hf:2:5: error: 'hfA_CheckerBoard' is not supported yet: of the attribute library primflow has");
+  expectHas(compileError(model("d = hfA_Turbulence(x, 4);")),
+            "m.hf:2:5: error: 'hfA_Turbulence' is not supported: it reads HyperFun's Perlin noise");
 }
 
 }  // namespace

@@ -583,11 +583,15 @@ TEST(HyperFun, LibraryCallErrorsArePrecise) {
               [](double x, double y, double z) {
                 return std::atan2(y, x) + std::atan(z) - std::asin(x * 0.3) + std::acos(y * 0.3);
               });
-  expectHas(compileError(model("my_model = floor(x[1]);")), "m.hf:2:12: error: 'floor' of a value");
+  // floor, ceil, int and frac work on the point (the tape has floor); int truncates towards 0.
+  expectField(model("my_model = floor(x[1]) + 2*ceil(x[2]) + 4*int(x[3]) + 8*frac(x[1] - x[3]);"),
+              [](double x, double y, double z) {
+                return std::floor(x) + 2 * std::ceil(y) + 4 * std::trunc(z) + 8 * ((x - z) - std::trunc(x - z));
+              });
   expectHas(compileError(model("array e[3];\ne = [0, 0, 0];\nmy_model = hfDEllipsoid(x, e, 1, 0, 1);")),
             "m.hf:4:34: error: 'b' (argument 4 of 'hfDEllipsoid') is within 1e-6 of 0");
-  expectHas(compileError(model("my_model = hfA_NoiseG(x, 2, 3);")),
-            "m.hf:2:12: error: 'hfA_NoiseG' is not supported yet: of the attribute library primflow has hfA_SetColor");
+  expectHas(compileError(model("my_model = hfA_NoiseP(x);")),
+            "m.hf:2:12: error: 'hfA_NoiseP' is not supported: it reads HyperFun's Perlin noise");
   expectHas(compileError(model("my_model = hfDUni(x[1], x[2], 1);")),
             "m.hf:2:12: error: 'hfDUni' takes 4 arguments (f1, f2, r, alpha), found 3");
   expectHas(compileError(model("my_model = hfNoSuchThing(x, a);")),
