@@ -43,22 +43,24 @@ void offAxes(int axis, int& u, int& v) {
 
 // --- Built-in maths ----------------------------------------------------------------------------
 
-// A function without a tape operation: folded when its arguments are known, else rejected.
-[[noreturn]] void noTapeOp(const LibraryCall& c) {
-  const std::string name(c.function.name);
-  reject(-1, "'" + name + "' of a value that depends on the point is not supported yet: primflow's field tapes have no " +
-                 name);
-}
-template <auto F>
-Real knownPair(LibraryCall& c) {
-  if (!c.reals[0].is_known || !c.reals[1].is_known) noTapeOp(c);
-  return K(F(c.reals[0].value, c.reals[1].value));
-}
 double hfRound(double v) {
   const double ce = std::ceil(v);
   return ce - v > 0.5 ? ce - 1.0 : ce;
 }
-constexpr auto kMod = [](double a, double b) { return std::fmod(hfRound(a), hfRound(b)); };
+// HyperFun's mod(a, b) = fmod(round(a), round(b)), its round being ceil(v) - 1 where that is more
+// than 0.5 below v. Known: in double. On the point: A - B trunc(A/B) of the rounded values, exact
+// while |A| < 2^24 (A/B is then never rounded across an integer).
+Real fMod(LibraryCall& c) {
+  const Real a = c.reals[0], b = c.reals[1];
+  if (a.is_known && b.is_known) return K(std::fmod(hfRound(a.value), hfRound(b.value)));
+  TapeAlgebra& m = c.alg;
+  auto round = [&m](Real v) {
+    const Real ce = m.neg(m.floor(m.neg(v)));
+    return m.select(m.less(K(0.5), m.sub(ce, v)), m.sub(ce, K(1.0)), ce);
+  };
+  const Real ra = round(a), rb = round(b);
+  return m.sub(ra, m.mul(rb, m.trunc(m.div(ra, rb))));
+}
 // The integer parts, through the tape's floor: ceil(v) = -floor(-v); int truncates; frac = v - int(v).
 Real fFloor(LibraryCall& c) { return c.alg.floor(c.reals[0]); }
 Real fCeil(LibraryCall& c) { return c.alg.neg(c.alg.floor(c.alg.neg(c.reals[0]))); }
@@ -504,7 +506,7 @@ const LibraryFunction kFunctions[] = {
     {"tan", "v", "R", fTan, {}}, {"asin", "v", "R", fAsin, {}}, {"acos", "v", "R", fAcos, {}},
     {"atan", "v", "R", fAtan, {}}, {"abs", "v", "R", unary<&TapeAlgebra::abs>, {}},
     {"sinh", "v", "R", fSinh, {}}, {"cosh", "v", "R", fCosh, {}}, {"tanh", "v", "R", fTanh, {}},
-    {"sign", "v", "R", fSign, {}}, {"mod", "a, b", "RR", knownPair<kMod>, {}},
+    {"sign", "v", "R", fSign, {}}, {"mod", "a, b", "RR", fMod, {}},
     {"max", "a, b", "RR", binary<&TapeAlgebra::max>, {}}, {"min", "a, b", "RR", binary<&TapeAlgebra::min>, {}},
     {"atan2", "y, x", "RR", fAtan2, {}}, {"ceil", "v", "R", fCeil, {}},
     {"floor", "v", "R", fFloor, {}}, {"int", "v", "R", fInt, {}}, {"frac", "v", "R", fFrac, {}},

@@ -583,6 +583,14 @@ TEST(HyperFun, LibraryCallErrorsArePrecise) {
               [](double x, double y, double z) {
                 return std::atan2(y, x) + std::atan(z) - std::asin(x * 0.3) + std::acos(y * 0.3);
               });
+  // mod: fmod of HyperFun's rounded arguments (ceil - 1 where that is more than 0.5 below).
+  auto hfRound = [](double v) { return std::ceil(v) - v > 0.5 ? std::ceil(v) - 1 : std::ceil(v); };
+  expectField(model("my_model = mod(3*x[1], 2*x[2] + 7) + mod(x[3]*4, -3);"),
+              [&](double x, double y, double z) {
+                auto half = [](double v) { return std::fabs(v - std::floor(v) - 0.5) < 1e-6; };
+                if (half(3 * x) || half(2 * y + 7) || half(4 * z)) return std::nan("");  // skipped
+                return std::fmod(hfRound(3 * x), hfRound(2 * y + 7)) + std::fmod(hfRound(4 * z), -3.0);
+              });
   // floor, ceil, int and frac work on the point (the tape has floor); int truncates towards 0.
   expectField(model("my_model = floor(x[1]) + 2*ceil(x[2]) + 4*int(x[3]) + 8*frac(x[1] - x[3]);"),
               [](double x, double y, double z) {
