@@ -47,9 +47,10 @@ using Image = pf::test::CapturedFrame;
 // What the tests draw: the ball (the implicit primitive over [-1, 1]^3, `method`), optionally
 // lit, and optionally a GL quad in the plane z = -0.95 coloured by the same interpolator with
 // `quad_field` as the field. Orthographic: x and y of the pixel centre, z = 1 - 2 depth.
-Image draw(int threads, int native, bool lit, float method, bool quad, float quad_field = -1.0f) {
+Image draw(int threads, int native, bool lit, float method, bool quad, float quad_field = -1.0f,
+           const char* model = kColouredBall) {
   pf::test::FrameCapture capture(kN, kN, threads, native);
-  const GLuint field = pfglCompileFieldEXT(GL_FIELD_HYPERFUN_EXT, "ball.hf", kColouredBall, 0.0f);
+  const GLuint field = pfglCompileFieldEXT(GL_FIELD_HYPERFUN_EXT, "ball.hf", model, 0.0f);
   EXPECT_NE(field, 0u);
   pf::test::viewUnitBoxFromAbove();
   if (lit) {  // (a directional light: the modelview's translation leaves it looking down -z)
@@ -93,8 +94,14 @@ Image draw(int threads, int native, bool lit, float method, bool quad, float qua
 
 // Each drawn pixel's colour against the formulas at the point its depth gives (times the
 // diffuse factor n.z of the sphere's normal there when lit), within 1.5/255. Returns the
-// pixels checked.
-int expectColoursMatch(const Image& img, bool lit, bool ball_only) {
+// pixels checked. `formulas` (kColouredBall's by default) gives the colour at a point, or false
+// where the test skips it (beside a step of the pattern).
+using Formulas = bool (*)(double, double, double, double[3]);
+bool colouredBall(double x, double y, double z, double out[3]) {
+  colourAt(x, y, z, out);
+  return true;
+}
+int expectColoursMatch(const Image& img, bool lit, bool ball_only, Formulas formulas = colouredBall) {
   int checked = 0;
   for (int py = 0; py < kN; ++py)
     for (int px = 0; px < kN; ++px) {
@@ -104,7 +111,7 @@ int expectColoursMatch(const Image& img, bool lit, bool ball_only) {
       const bool on_ball = std::fabs(std::sqrt(x * x + y * y + z * z) - kRadius) < 1e-3;
       if (ball_only && !on_ball) continue;
       double c[3];
-      colourAt(x, y, z, c);
+      if (!formulas(x, y, z, c)) continue;
       const double diffuse = lit ? std::max(0.0, z / kRadius) : 1.0;
       for (int k = 0; k < 3; ++k)
         EXPECT_NEAR(img.rgba[i * 4 + static_cast<size_t>(k)] / 255.0, clamp01(c[k] * diffuse), 1.5 / 255)
@@ -119,6 +126,48 @@ TEST(ImplicitAttributes, TheHitPointsColourIsTheModelsFormula) {
     SCOPED_TRACE(method);
     const Image img = draw(2, 1, false, method, false);
     EXPECT_GT(expectColoursMatch(img, false, true), 1500);
+  }
+}
+
+// A checkerboard of orange blocks and gaps whose colour is a hue ramp along x (HSV to RGB,
+// hues from -90 to 270 so the wrap is crossed): the tape's floor at every hit point.
+constexpr const char* kCheckeredBall =
+    "my_model(x[3], a[1], s[3]) {\n"
+    "  array c[3], bs[3], gp[3], cb[3], cg[3], hsv[3];\n"
+    "  c = [0, 0, 0];\n  bs = [0.25, 0.25, 0.25];\n  gp = [0.125, 0.125, 0.125];\n  cb = [1, 0.5, 0];\n  cg = [0, 0, 0];\n"
+    "  hsv[1] = 180*x[1] + 90;\n  hsv[2] = 0.8;\n  hsv[3] = 0.9;\n"
+    "  d = hfA_HSVToRGB(hsv, cg);\n"
+    "  d = hfA_CheckerBoard(x, bs, gp, s, cb, cg);\n"
+    "  my_model = hfSphere(x, c, 0.9);\n"
+    "}\n";
+
+bool checkeredBall(double x, double y, double z, double out[3]) {
+  const double p[3] = {x, y, z};
+  bool inside = true;
+  for (double v : p) {
+    const double r = v - 0.375 * std::floor(v / 0.375);
+    if (r < 5e-3 || std::fabs(r - 0.25) < 5e-3 || 0.375 - r < 5e-3) return false;  // beside a step
+    inside = inside && r < 0.25;
+  }
+  if (inside) {
+    out[0] = 1, out[1] = 0.5, out[2] = 0;
+    return true;
+  }
+  double h = 180 * x + 90;
+  while (h < 0) h += 360;
+  while (h > 360) h -= 360;
+  const double ramp[3] = {h < 120 ? (120 - h) / 60 : h < 240 ? 0 : (h - 240) / 60,
+                          h < 120 ? h / 60 : h < 240 ? (240 - h) / 60 : 0,
+                          h < 120 ? 0 : h < 240 ? (h - 120) / 60 : (360 - h) / 60};
+  for (int k = 0; k < 3; ++k) out[k] = (1 - 0.8 + 0.8 * std::min(ramp[k], 1.0)) * 0.9;
+  return true;
+}
+
+TEST(ImplicitAttributes, APatternWithFloorIsColouredPerPixel) {
+  for (float method : {0.0f, 3.0f}) {
+    SCOPED_TRACE(method);
+    const Image img = draw(2, 1, false, method, false, -1.0f, kCheckeredBall);
+    EXPECT_GT(expectColoursMatch(img, false, true, checkeredBall), 1000);
   }
 }
 
