@@ -9,6 +9,7 @@
 
 #include <bit>
 #include <cmath>
+#include <functional>
 #include <vector>
 
 #include "api/src/context_state.h"
@@ -222,94 +223,84 @@ TEST(NativeCode, ARecompiledPrimitiveDrawsItsNewCodeAfterPendingDrawsOfTheOld) {
 
 namespace {
 
-// Large triangles over a 256x256 framebuffer, through a context with native code or without.
-struct LargeTriangles {
-  std::vector<unsigned char> pixels = std::vector<unsigned char>(256 * 256 * 4);
-  std::vector<float> depth = std::vector<float>(256 * 256);
+// One frame drawn by `draw` through a context with native code or without, on `threads`
+// threads, over a size x size framebuffer under an orthographic pixel projection with depths
+// in [-depth, depth]: its colours, depths and work counters.
+struct Frame {
+  std::vector<unsigned char> pixels;
+  std::vector<float> depth;
   FrameStats stats;
 };
 
-LargeTriangles drawLargeTriangles(int native) {
-  LargeTriangles out;
-  const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_THREADS, 2, PF_JIT, native, 0};
+Frame drawFrame(int native, int threads, int size, float depth, const std::function<void()>& draw) {
+  Frame out;
+  out.pixels.resize(static_cast<size_t>(size) * size * 4);
+  out.depth.resize(static_cast<size_t>(size) * size);
+  const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_THREADS, threads, PF_JIT, native, 0};
   PFcontext ctx = pfCreateContextAttribs(attribs);
-  EXPECT_TRUE(ctx && pfMakeCurrent(ctx, out.pixels.data(), GL_UNSIGNED_BYTE, 256, 256));
+  EXPECT_TRUE(ctx && pfMakeCurrent(ctx, out.pixels.data(), GL_UNSIGNED_BYTE, size, size));
   pfglMatrixMode(GL_PROJECTION);
-  pfglOrtho(0, 256, 0, 256, -1, 1);
+  pfglOrtho(0, size, 0, size, -depth, depth);
   pfglEnable(GL_DEPTH_TEST);
   pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  draw();
+  pfglFinish();
+  pfglReadPixels(0, 0, size, size, GL_DEPTH_COMPONENT, GL_FLOAT, out.depth.data());
+  out.stats = ctx->renderer.stats();
+  pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
+  pfDestroyContext(ctx);
+  return out;
+}
+
+// `count` large triangles around `centre`, edges at every slope through the regions, crossing
+// one another, at depths that cross: triangle i has radius r0 + dr i about a point `spread`
+// from the centre, and its corner k depth dz (k - (i % 5) / 2).
+void drawCrossingTriangles(int count, float centre, float spread, float r0, float dr, float dz) {
   pfglBegin(GL_TRIANGLES);
-  for (int i = 0; i < 12; ++i) {
-    // Edges at every slope through the regions, crossing one another, at depths that cross.
-    const float a = 0.52f * static_cast<float>(i), cx = 128.0f + 30.0f * std::cos(3.0f * a),
-                cy = 128.0f + 30.0f * std::sin(3.0f * a), r = 70.0f + 9.0f * static_cast<float>(i);
+  for (int i = 0; i < count; ++i) {
+    const float a = 0.52f * static_cast<float>(i), cx = centre + spread * std::cos(3.0f * a),
+                cy = centre + spread * std::sin(3.0f * a), r = r0 + dr * static_cast<float>(i);
     for (int k = 0; k < 3; ++k) {
       const float t = a + 2.0944f * static_cast<float>(k);
-      pfglColor3f(0.08f * static_cast<float>(i), 0.3f * static_cast<float>(k), 1.0f - 0.07f * static_cast<float>(i));
-      pfglVertex3f(cx + r * std::cos(t), cy + r * std::sin(t), 0.1f * static_cast<float>(k) - 0.05f * static_cast<float>(i % 5));
+      pfglColor3f(0.08f * static_cast<float>(i % 12), 0.3f * static_cast<float>(k), 1.0f - 0.07f * static_cast<float>(i % 12));
+      pfglVertex3f(cx + r * std::cos(t), cy + r * std::sin(t),
+                   dz * (static_cast<float>(k) - 0.5f * static_cast<float>(i % 5)));
     }
   }
   pfglEnd();
-  pfglFinish();
-  pfglReadPixels(0, 0, 256, 256, GL_DEPTH_COMPONENT, GL_FLOAT, out.depth.data());
-  out.stats = ctx->renderer.stats();
-  pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
-  pfDestroyContext(ctx);
-  return out;
 }
 
-// Spheres 120-180 pixels across, or large triangles, over a 512x512 framebuffer, one thread,
-// native code or not: the spheres' silhouettes' regions are undecided, and a walk over such a
-// region's blocks decides about one in four of them; along the triangles' edges, most.
-struct SphereFrame {
-  std::vector<unsigned char> pixels = std::vector<unsigned char>(512 * 512 * 4);
-  std::vector<float> depth = std::vector<float>(512 * 512);
-  FrameStats stats;
-};
+// Large triangles over a 256x256 framebuffer, 2 threads.
+Frame drawLargeTriangles(int native) {
+  return drawFrame(native, 2, 256, 1.0f, [] { drawCrossingTriangles(12, 128.0f, 30.0f, 70.0f, 9.0f, 0.1f); });
+}
 
-SphereFrame drawSpheresOrTriangles(int native, bool spheres) {
-  SphereFrame out;
-  const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_THREADS, 1, PF_JIT, native, 0};
-  PFcontext ctx = pfCreateContextAttribs(attribs);
-  EXPECT_TRUE(ctx && pfMakeCurrent(ctx, out.pixels.data(), GL_UNSIGNED_BYTE, 512, 512));
-  const GLenum sphere = pfglGetPrimitiveEXT("sphere");
-  const GLuint centre = pfglGetParamNameEXT("center"), radius = pfglGetParamNameEXT("radius");
-  pfglMatrixMode(GL_PROJECTION);
-  pfglOrtho(0, 512, 0, 512, -200, 200);
-  pfglEnable(GL_DEPTH_TEST);
-  pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  if (!spheres) {
-    // Triangles 300-460 pixels across, edges at every slope: their walks decide most blocks.
-    pfglBegin(GL_TRIANGLES);
+// Spheres 120-180 pixels across over a 512x512 framebuffer, one thread: their silhouettes'
+// regions are undecided, and a walk over such a region's blocks decides about one in four of
+// them.
+Frame drawSpheres(int native) {
+  return drawFrame(native, 1, 512, 200.0f, [] {
+    const GLenum sphere = pfglGetPrimitiveEXT("sphere");
+    const GLuint centre = pfglGetParamNameEXT("center"), radius = pfglGetParamNameEXT("radius");
+    pfglBegin(sphere);
     for (int i = 0; i < 24; ++i) {
-      const float a = 0.52f * static_cast<float>(i), cx = 256.0f + 60.0f * std::cos(3.0f * a),
-                  cy = 256.0f + 60.0f * std::sin(3.0f * a), r = 150.0f + 3.5f * static_cast<float>(i);
-      for (int k = 0; k < 3; ++k) {
-        const float t = a + 2.0944f * static_cast<float>(k);
-        pfglColor3f(0.04f * static_cast<float>(i), 0.3f * static_cast<float>(k), 0.5f);
-        pfglVertex3f(cx + r * std::cos(t), cy + r * std::sin(t), 5.0f * static_cast<float>(k) - 2.0f * static_cast<float>(i % 5));
-      }
+      pfglColor3f(0.04f * static_cast<float>(i), 0.5f, 1.0f - 0.03f * static_cast<float>(i));
+      pfglRastParamfEXT(radius, 60.0f + static_cast<float>(i % 5) * 7.5f);
+      pfglRastParam3fEXT(centre, 40.0f + static_cast<float>((i * 97) % 432), 40.0f + static_cast<float>((i * 181) % 432),
+                         static_cast<float>(i % 7) * 20.0f - 60.0f);
+      pfglSequencePointEXT();
     }
     pfglEnd();
-  }
-  pfglBegin(sphere);
-  for (int i = 0; i < (spheres ? 24 : 0); ++i) {
-    pfglColor3f(0.04f * static_cast<float>(i), 0.5f, 1.0f - 0.03f * static_cast<float>(i));
-    pfglRastParamfEXT(radius, 60.0f + static_cast<float>(i % 5) * 7.5f);
-    pfglRastParam3fEXT(centre, 40.0f + static_cast<float>((i * 97) % 432), 40.0f + static_cast<float>((i * 181) % 432),
-                       static_cast<float>(i % 7) * 20.0f - 60.0f);
-    pfglSequencePointEXT();
-  }
-  pfglEnd();
-  pfglFinish();
-  pfglReadPixels(0, 0, 512, 512, GL_DEPTH_COMPONENT, GL_FLOAT, out.depth.data());
-  out.stats = ctx->renderer.stats();
-  pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
-  pfDestroyContext(ctx);
-  return out;
+  });
 }
 
-size_t depthDifferences(const SphereFrame& a, const SphereFrame& b) {
+// Triangles 300-460 pixels across over a 512x512 framebuffer, one thread: along their edges a
+// walk over a region's blocks decides most of them.
+Frame drawWideTriangles(int native) {
+  return drawFrame(native, 1, 512, 200.0f, [] { drawCrossingTriangles(24, 256.0f, 60.0f, 150.0f, 3.5f, 5.0f); });
+}
+
+size_t depthDifferences(const Frame& a, const Frame& b) {
   size_t n = 0;
   for (size_t i = 0; i < a.depth.size(); ++i)
     n += std::bit_cast<uint32_t>(a.depth[i]) != std::bit_cast<uint32_t>(b.depth[i]);
@@ -326,15 +317,15 @@ TEST(NativeCode, RegionsBlocksAreWalkedOnlyForProgramsWhoseWalksDecideMost) {
   if (!nativeCodeAvailable()) GTEST_SKIP() << "native code is unavailable here";
   NativeProgramCache::instance().setThreshold(0);
   NativeProgramCache::instance().setWalkThreshold(0);
-  const SphereFrame interpreted = drawSpheresOrTriangles(0, true);
-  const SphereFrame native = drawSpheresOrTriangles(1, true);
+  const Frame interpreted = drawSpheres(0);
+  const Frame native = drawSpheres(1);
   EXPECT_EQ(native.pixels, interpreted.pixels);
   EXPECT_EQ(depthDifferences(native, interpreted), 0u);
   EXPECT_EQ(native.stats.region_walks, PixelExecutor::kProbeWalks) << "the probe's walks, and no more";
   EXPECT_GT(native.stats.blocks_walked, 0u);
   // Triangles' walks decide most of their blocks: they go on walking.
-  const SphereFrame triangles_interpreted = drawSpheresOrTriangles(0, false);
-  const SphereFrame triangles = drawSpheresOrTriangles(1, false);
+  const Frame triangles_interpreted = drawWideTriangles(0);
+  const Frame triangles = drawWideTriangles(1);
   EXPECT_EQ(triangles.pixels, triangles_interpreted.pixels);
   EXPECT_EQ(depthDifferences(triangles, triangles_interpreted), 0u);
   EXPECT_GT(triangles.stats.region_walks, 2 * PixelExecutor::kProbeWalks);
@@ -347,17 +338,14 @@ TEST(NativeCode, BlocksDecidedByTheirOwnVerdictsDrawWhatTheInterpreterDraws) {
   if (!nativeCodeAvailable()) GTEST_SKIP() << "native code is unavailable here";
   NativeProgramCache::instance().setThreshold(0);
   NativeProgramCache::instance().setWalkThreshold(0);
-  const LargeTriangles interpreted = drawLargeTriangles(0);
-  const LargeTriangles native = drawLargeTriangles(1);
+  const Frame interpreted = drawLargeTriangles(0);
+  const Frame native = drawLargeTriangles(1);
   EXPECT_EQ(interpreted.stats.blocks_walked, 0u);
   EXPECT_GT(native.stats.blocks_walked, 50u);
   EXPECT_GT(native.stats.blocks_accepted, interpreted.stats.blocks_accepted);
   EXPECT_LT(native.stats.blocks_run, interpreted.stats.blocks_run);
   EXPECT_EQ(native.pixels, interpreted.pixels);
-  size_t depth_differences = 0;
-  for (size_t i = 0; i < native.depth.size(); ++i)
-    depth_differences += std::bit_cast<uint32_t>(native.depth[i]) != std::bit_cast<uint32_t>(interpreted.depth[i]);
-  EXPECT_EQ(depth_differences, 0u);
+  EXPECT_EQ(depthDifferences(native, interpreted), 0u);
   // Something was drawn (the comparison is not of two empty frames).
   size_t drawn = 0;
   for (float z : native.depth) drawn += z < 1.0f;
