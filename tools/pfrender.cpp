@@ -35,17 +35,55 @@
 
 namespace {
 
-// `ms`: the frame's time (with --frames N > 1, the median of the frames after the first, and
-// `first_ms` the first's: it compiles what the frame draws natively); the counters are the last
-// frame's.
-void printStats(PFcontext ctx, double ms, int frames, double first_ms) {
+// The frames' times, in order, and whether each compiled native code (a program passing its
+// compile threshold compiles on the rasterizer thread that passed it, inside that frame).
+struct FrameTimes {
+  std::vector<double> ms;
+  std::vector<bool> compiled;
+};
+
+// The frame time --stats prints: with one frame, its time; with more, the median of the frames
+// after the first (which compiles what the picture draws natively) that compiled nothing -- a
+// program can pass its threshold only in a later frame, and with 2 threads up to one compile a
+// frame would otherwise be most of the frames timed -- or of all frames after the first when
+// every one of them compiled.
+struct FrameTime {
+  double median_ms = 0;
+  int timed = 0;        // frames the median is of
+  int after_first = 0;  // frames after the first
+};
+
+FrameTime frameTime(const FrameTimes& frames) {
+  FrameTime t;
+  t.after_first = static_cast<int>(frames.ms.size()) - 1;
+  std::vector<double> quiet, all;
+  for (size_t i = 1; i < frames.ms.size(); ++i) {
+    all.push_back(frames.ms[i]);
+    if (!frames.compiled[i]) quiet.push_back(frames.ms[i]);
+  }
+  std::vector<double>& timed = quiet.empty() ? all : quiet;
+  if (timed.empty()) timed.push_back(frames.ms.front());  // one frame: its own time
+  std::sort(timed.begin(), timed.end());
+  const size_t n = timed.size();
+  t.median_ms = n % 2 ? timed[n / 2] : 0.5 * (timed[n / 2 - 1] + timed[n / 2]);
+  t.timed = static_cast<int>(n);
+  return t;
+}
+
+// The frame time (frameTime) and the counters, which are the last frame's.
+void printStats(PFcontext ctx, const FrameTimes& frames) {
   const pf::FrameStats& s = ctx->renderer.stats();
   std::printf("threads            %d\n", pfGetThreadCount(ctx));
-  if (frames > 1)
-    std::printf("frame time         %.2f ms (median of %d frames after the first, which took %.2f ms)\n", ms,
-                frames - 1, first_ms);
+  const FrameTime t = frameTime(frames);
+  if (t.after_first == 0)
+    std::printf("frame time         %.2f ms\n", t.median_ms);
+  else if (t.timed == t.after_first)
+    std::printf("frame time         %.2f ms (median of %d frames after the first, which took %.2f ms)\n", t.median_ms,
+                t.timed, frames.ms.front());
   else
-    std::printf("frame time         %.2f ms\n", ms);
+    std::printf("frame time         %.2f ms (median of %d frames after the first, which took %.2f ms; %d more "
+                "compiled native code and are not timed)\n",
+                t.median_ms, t.timed, frames.ms.front(), t.after_first - t.timed);
   std::printf("instances          %llu submitted, %llu killed in setup\n",
               static_cast<unsigned long long>(s.instances_submitted), static_cast<unsigned long long>(s.instances_killed));
   std::printf("bin entries        %llu\n", static_cast<unsigned long long>(s.bin_entries));
@@ -184,7 +222,7 @@ int run(int argc, char** argv) {
   app.add_flag("--stats", stats, "print the renderer's work counters");
   app.add_option("--frames", frames,
                  "draw the picture this many times (--stats: the frame time is the median of the frames after the "
-                 "first, the counters the last frame's)")
+                 "first that compiled no native code, the counters the last frame's)")
       ->check(CLI::Range(1, 10000));
   auto* o_bbox = app.add_option("--bbox", bbox, "model: box x0,y0,z0,x1,y1,z1 (default [-1,1]^3 for .vm, [-10,10]^3 for .hf, [-2,2]^3 for .pfl, the grid's for .pfgrid)");
   auto* o_ortho = app.add_flag("--ortho", ortho, "model: look down -z from above the box, the image covering its x and y");
@@ -272,9 +310,14 @@ int run(int argc, char** argv) {
   }
   // Each frame draws the whole picture again (glClear first); the first also compiles what the
   // picture draws natively.
-  std::vector<double> frame_ms;
+  FrameTimes frame_times;
+  auto nativeCompiles = [] {
+    const pf::NativeCacheStats n = pf::NativeProgramCache::instance().stats();
+    return n.compiled + n.refused + n.failed;
+  };
   for (int frame = 0; frame < frames; ++frame) {
     if (frame == frames - 1) ctx->renderer.resetStats();
+    const uint64_t compiles_before = nativeCompiles();
     auto t0 = std::chrono::steady_clock::now();
     if (model) {
       view.width = w;
@@ -298,18 +341,13 @@ int run(int argc, char** argv) {
       pf::drawShowcase(w, h);
     }
     auto t1 = std::chrono::steady_clock::now();
-    frame_ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+    frame_times.ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+    frame_times.compiled.push_back(nativeCompiles() != compiles_before);
   }
   GLenum err = pfglGetError();
   if (err != GL_NO_ERROR)
     std::cerr << "pfrender: GL error 0x" << std::hex << err << std::dec << " while drawing: the image is incomplete\n";
-  if (stats) {
-    std::vector<double> after_first(frame_ms.begin() + (frames > 1 ? 1 : 0), frame_ms.end());
-    std::sort(after_first.begin(), after_first.end());
-    const size_t n = after_first.size();
-    const double median = n % 2 ? after_first[n / 2] : 0.5 * (after_first[n / 2 - 1] + after_first[n / 2]);
-    printStats(ctx, median, frames, frame_ms.front());
-  }
+  if (stats) printStats(ctx, frame_times);
   if (!model && !depth_out.empty()) {  // a scene's (or the showcase's) depth buffer as it is
     GLint dw = 0, dh = 0, bytes = 0;
     void* data = nullptr;
