@@ -14,6 +14,7 @@
 #include <primflow/gl.h>
 
 #include "api/src/display_lists.h"
+#include "api/src/vertex_lighting.h"
 #include "raster/lighting.h"
 #include "compiler/compiler.h"
 #include "raster/renderer.h"
@@ -270,6 +271,9 @@ struct PFcontextRec {
   // The lights' equation for begin_lit (lights cannot change inside glBegin / glEnd; the
   // material can, and is read per row).
   std::optional<pf::LightingEquation> begin_equation;
+  // begin_lit's vertices waiting to be lit together (vertex_lighting.h): lit when the batch
+  // fills and at glEnd, into their rows' colour channels.
+  pf::VertexLightingBatch vertex_lighting;
   bool begin_lit_per_pixel = false;  // GL lighting per pixel in the shading pass: a primitive
                                      // that sets N, or vertices under GL_PER_PIXEL_LIGHTING_EXT
   // GL_PER_PIXEL_LIGHTING_EXT on a vertex primitive: each row carries its eye-space position

@@ -69,6 +69,7 @@ void PFcontextRec::outOfMemory(const char* command) {
     rows = {};
     row_shading = {};
     rows_count = 0;
+    vertex_lighting.clear();
   } else {
     renderer.discardPending();
   }

@@ -254,13 +254,19 @@ void setVertex(PFcontextRec& ctx, double x, double y, double z, double w, int co
   bindSequencePoint(ctx);
 }
 
+// Lights the vertices waiting in ctx.vertex_lighting, into their rows' colour channels.
+void flushVertexLighting(PFcontextRec& ctx) {
+  ctx.vertex_lighting.flush(*ctx.begin_equation, {ctx.row_shading.data(), static_cast<size_t>(ctx.row_channels),
+                                                  ctx.color_channel, ctx.back_color_channel});
+}
+
 // The shading channels of a sequence point, in the layout planned at glBegin: each bound
-// parameter's current value, the colour's being GL's lit colour(s) when lighting applies.
+// parameter's current value, the colour's being GL's lit colour(s) when lighting applies
+// (written when its batch is lit: flushVertexLighting).
 void rowChannels(PFcontextRec& ctx) {
   const size_t at = ctx.row_shading.size();
   ctx.row_shading.resize(at + static_cast<size_t>(ctx.row_channels));
   float* out = ctx.row_shading.data() + at;
-  glm::vec4 lit[2];
   glm::vec3 eye(0.0f), n(0.0f);
   if (ctx.begin_lit || ctx.begin_vertices_per_pixel) {
     const pf::ParamValue& v = ctx.param(ctx.vertex_param);
@@ -273,10 +279,13 @@ void rowChannels(PFcontextRec& ctx) {
         glm::vec3(static_cast<float>(nv.v[0]), static_cast<float>(nv.v[1]), static_cast<float>(nv.v[2]));
     if (ctx.lighting.normalize && glm::length(n) > 0.0f) n = glm::normalize(n);
   }
-  if (ctx.begin_lit) {
-    // litColor(ctx.lighting, eye, n, face), with the equation prepared at glBegin.
-    lit[0] = ctx.begin_equation->shade(ctx.lighting.material[0], eye, n);
-    if (ctx.back_color_channel >= 0) lit[1] = ctx.begin_equation->shade(ctx.lighting.material[1], eye, -n);
+  // Lit vertices' colours come later, a batch at a time (flushVertexLighting); a colour not
+  // bound to the mode is not lit at all.
+  const bool lit_later = ctx.begin_lit && ctx.color_channel >= 0;
+  if (lit_later) {
+    const size_t row = at / static_cast<size_t>(ctx.row_channels);
+    ctx.vertex_lighting.add(row, eye, n, ctx.lighting.material[0],
+                            ctx.back_color_channel >= 0 ? &ctx.lighting.material[1] : nullptr);
   }
   for (const pf::ShadingChannel& s : ctx.shading) {
     float* dst = out + s.first;
@@ -287,13 +296,14 @@ void rowChannels(PFcontextRec& ctx) {
       continue;
     }
     if (s.param == ctx.color_param) {
-      const glm::vec4& c = ctx.begin_lit ? lit[s.back ? 1 : 0] : ctx.current_color;
+      const glm::vec4 c = lit_later ? glm::vec4(0.0f) : ctx.current_color;  // lit: written by the flush
       for (int k = 0; k < 4; ++k) dst[k] = c[k];
       continue;
     }
     const pf::ParamValue& v = ctx.param(s.param);
     for (int k = 0; k < 4; ++k) dst[k] = k < v.count ? static_cast<float>(v.v[k]) : (k == 3 ? 1.0f : 0.0f);
   }
+  if (ctx.vertex_lighting.full()) flushVertexLighting(ctx);
 }
 
 // Plans the shading channels of a glBegin: the parameters bound for its mode (the colour
@@ -429,6 +439,7 @@ static void startBegin(PFcontextRec& context, GLenum mode, const pf::CompiledPri
   ctx->rows_count = 0;
   ctx->rows.clear();
   ctx->row_shading.clear();
+  ctx->vertex_lighting.clear();
   ctx->reject_reason.clear();
   if (ctx->row_channels > pf::kMaxChannels)
     ctx->reject_reason = std::to_string(ctx->row_channels / 4) + " shading parameters bound to this mode need " +
@@ -479,6 +490,7 @@ void end(PFcontextRec& ctx) {
     std::fprintf(stderr, "primflow: glEnd: instances of '%s' rejected, nothing drawn: %s\n", prim.name.c_str(),
                  ctx.reject_reason.c_str());
   } else if (ctx.color) {
+    if (!ctx.vertex_lighting.empty()) flushVertexLighting(ctx);
     try {
       submitInstances(ctx);
     } catch (const std::bad_alloc&) {  // instances half binned: the frame so far is dropped

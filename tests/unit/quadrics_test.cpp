@@ -204,7 +204,9 @@ TEST_P(Quadrics, CoverageAndDepthMatchRayCastsInDouble) {
       const auto [z, piece] = castRay(shape, x + 0.5, y + 0.5);
       // Near a silhouette, a region's border or where two pieces meet, float and double may
       // decide differently: such pixels (another answer within 0.02 pixel) are not judged.
-      if (pf::test::changesNear(x, y, [&](double px, double py) { return castRay(shape, px, py).second != piece; })) {
+      const auto center_piece = piece;  // clang 14 cannot capture a structured binding
+      if (pf::test::changesNear(x, y,
+                                [&](double px, double py) { return castRay(shape, px, py).second != center_piece; })) {
         ++undecided;
         continue;
       }

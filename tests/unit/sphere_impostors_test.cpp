@@ -94,7 +94,9 @@ std::pair<int, int> drawAndJudge(const std::vector<Ball>& balls, double toleranc
     for (int x = 0; x < kN; ++x) {
       const auto [z, which] = castRay(balls, x + 0.5, y + 0.5);
       // A rim or a crossing of two spheres within 0.02 pixel: either answer.
-      if (pf::test::changesNear(x, y, [&](double px, double py) { return castRay(balls, px, py).second != which; })) {
+      const auto center_which = which;  // clang 14 cannot capture a structured binding
+      if (pf::test::changesNear(x, y,
+                                [&](double px, double py) { return castRay(balls, px, py).second != center_which; })) {
         ++undecided;
         continue;
       }
