@@ -85,9 +85,10 @@ void BatchSetupExecutor::finishScalar(const CompiledPrimitive& prim, const Setup
                                       const uint32_t* loop_counters, int loop_depth) {
   SetupResume r;
   r.pc = pc;
-  r.regs = regs_.data() + l;
+  // (A program with no registers or interpolants has empty arrays: null, not null + l.)
+  r.regs = regs_.empty() ? nullptr : regs_.data() + l;
   r.reg_stride = K;
-  r.interp = interp_.data() + l;
+  r.interp = interp_.empty() ? nullptr : interp_.data() + l;
   r.interp_stride = K;
   r.loop_counters = loop_counters;
   r.loop_depth = loop_depth;
