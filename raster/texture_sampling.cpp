@@ -18,14 +18,19 @@
 namespace pf {
 namespace {
 
+// A coordinate that is not a number, or too large to index a texel, samples as 0 (GL leaves it
+// undefined).
+float finite(float v) { return std::fabs(v) < 1e30f ? v : 0.0f; }
+
 // A coordinate's texel index along an axis of `size` texels under `wrap`, for a nearest sample
 // at u (in texels; s already clamped to [0, 1] for GL_CLAMP, mirrored for GL_MIRRORED_REPEAT);
 // -1: the border (GL_CLAMP_TO_BORDER past the edge).
 int wrapNearest(GLenum wrap, float u, int size) {
+  u = finite(u);
   const double f = std::floor(static_cast<double>(u));
   if (wrap == GL_REPEAT) {
     const double m = f - static_cast<double>(size) * std::floor(f / size);
-    return std::clamp(static_cast<int>(m), 0, size - 1);
+    return static_cast<int>(std::clamp(m, 0.0, static_cast<double>(size - 1)));  // (m may round past either end)
   }
   if (wrap == GL_CLAMP_TO_BORDER) return f < 0 || f >= size ? -1 : static_cast<int>(f);
   return static_cast<int>(std::clamp(f, 0.0, static_cast<double>(size - 1)));
@@ -34,12 +39,13 @@ int wrapNearest(GLenum wrap, float u, int size) {
 // The two texel indices of a linear sample at u and the weight of the second; an index -1
 // stands for the border (GL_CLAMP and GL_CLAMP_TO_BORDER reaching past the edge).
 void wrapLinear(GLenum wrap, float u, int size, int& i0, int& i1, float& a) {
+  u = finite(u);
   const float shifted = u - 0.5f;
   const double f = std::floor(static_cast<double>(shifted));
   a = static_cast<float>(static_cast<double>(shifted) - f);
   if (wrap == GL_REPEAT) {
     const double m = f - static_cast<double>(size) * std::floor(f / size);
-    i0 = std::clamp(static_cast<int>(m), 0, size - 1);
+    i0 = static_cast<int>(std::clamp(m, 0.0, static_cast<double>(size - 1)));
     i1 = i0 + 1 == size ? 0 : i0 + 1;
     return;
   }
@@ -75,8 +81,6 @@ void texel(const TextureUnit& unit, const TextureLevel& level, int i, int j, flo
   for (int k = 0; k < 4; ++k) rgba[k] = static_cast<float>(p[k]) * (1.0f / 255.0f);
 }
 
-// A coordinate that is not a number samples as 0 (it cannot index a texel).
-float finite(float v) { return v == v ? v : 0.0f; }
 
 // One sample of `level` with GL_NEAREST (linear false) or GL_LINEAR.
 void sampleLevel(const TextureUnit& unit, const TextureLevel& level, float s, float t, bool linear, float rgba[4]) {
@@ -127,7 +131,7 @@ float textureLod(float dudx, float dvdx, float dudy, float dvdy) {
 void sampleTexture(const TextureUnit& unit, float s, float t, float lod, float rgba[4]) {
   s = finite(s);
   t = finite(t);
-  const float lambda = std::clamp(lod, unit.min_lod, unit.max_lod);
+  const float lambda = std::min(std::max(lod, unit.min_lod), unit.max_lod);  // (min_lod may exceed max_lod)
   // GL 1.5 section 3.8.8: magnified when lambda <= c.
   const bool nearest_mip = unit.min_filter == GL_NEAREST_MIPMAP_NEAREST || unit.min_filter == GL_NEAREST_MIPMAP_LINEAR;
   const float c = unit.mag_filter == GL_LINEAR && nearest_mip ? 0.5f : 0.0f;

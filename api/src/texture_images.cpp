@@ -234,8 +234,10 @@ void issueImage(RecordedImage r, const void* pixels) {
   if (ctx->lists.compiling && !isProxy(r.target)) {
     // The image unpacked now, when GL would accept it; the command's checks run when the list does.
     const int h = r.dims == 1 ? 1 : r.height;
+    // (At most GL_MAX_TEXTURE_SIZE squared texels -- a larger image is an error when the list runs;
+    // one past memory leaves the command out with GL_OUT_OF_MEMORY, as any command recorded.)
     const bool readable = pixels && r.width > 0 && h > 0 && textureFormatError(r.format, r.type) == GL_NO_ERROR &&
-                          static_cast<uint64_t>(r.width) * static_cast<uint64_t>(h) <= (uint64_t(1) << 24);
+                          r.width <= kMaxTextureSize + 2 && h <= kMaxTextureSize + 2;
     r.floats = readable ? static_cast<uint32_t>(static_cast<uint64_t>(r.width) * h * 4) : 0;
     uint32_t* at = record(*ctx, GlOp::TexImage, kRecordedWords + r.floats);
     if (at) {

@@ -107,6 +107,24 @@ TEST(TextureSampling, EveryWrapAndFilterMatchesTheDoubleReference) {
   EXPECT_EQ(checked, 9 * 2 * 400 * 4);
 }
 
+// Coordinates that are not numbers, infinite or past any texel sample something, never outside
+// the level: every wrap, both filters, any level of detail.
+TEST(TextureSampling, ExtremeCoordinatesStayInsideTheLevel) {
+  pf::TextureUnit u;
+  u.levels = {level(5, 3), level(2, 1), level(1, 1)};
+  const float extremes[] = {NAN, INFINITY, -INFINITY, 3e38f, -3e38f, 1e30f, 16777217.0f, -0.0f};
+  for (GLenum wrap : {GL_REPEAT, GL_CLAMP, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_BORDER, GL_MIRRORED_REPEAT})
+    for (GLenum filter : {GL_NEAREST, GL_LINEAR_MIPMAP_LINEAR})
+      for (float s : extremes)
+        for (float lod : {NAN, -INFINITY, 0.3f, 7.0f, INFINITY}) {
+          u.wrap_s = u.wrap_t = wrap;
+          u.min_filter = filter;
+          float c[4] = {-1, -1, -1, -1};
+          pf::sampleTexture(u, s, -s, lod, c);
+          for (float v : c) EXPECT_TRUE(v >= 0.0f && v <= 1.0f) << s << " " << lod << " wrap " << wrap;
+        }
+}
+
 TEST(TextureSampling, MipmapLevelsAreChosenAndBlendedAsGlSays) {
   pf::TextureUnit u;
   u.levels = {flat(8, 8, 200, 0, 0), flat(4, 4, 0, 100, 0), flat(2, 2, 0, 0, 50), flat(1, 1, 10, 10, 10)};
