@@ -241,18 +241,20 @@ void textureSpan(const TextureUnit& unit, const TextureSpan& span, float (*c)[kT
     }
     return false;
   };
+  // Without mipmaps and with one filter both ways, the level of detail decides nothing.
+  const bool needs_lod = mipmapped(unit.min_filter) || unit.min_filter != unit.mag_filter;
   const int y = span.y;
   for (int i = 0; i < span.n; ++i) {
     const int x = span.x + i;
     const size_t here = at(x, y);
     if (span.ids[here] != span.id) continue;
-    float u, v;
-    texels(here, u, v);
+    float u = 0, v = 0;
+    if (needs_lod) texels(here, u, v);
     const int px = x ^ 1, py = y ^ 1;
     const int sx = px > x ? 1 : -1, sy = py > y ? 1 : -1;
     float dudx = 0, dvdx = 0, dudy = 0, dvdy = 0;
-    const bool hx = derivative(u, v, px, y, x - sx, y, dudx, dvdx, sx);
-    const bool hy = derivative(u, v, x, py, x, y - sy, dudy, dvdy, sy);
+    const bool hx = needs_lod && derivative(u, v, px, y, x - sx, y, dudx, dvdx, sx);
+    const bool hy = needs_lod && derivative(u, v, x, py, x, y - sy, dudy, dvdy, sy);
     if (!hx && hy) dudx = dudy, dvdx = dvdy;
     if (!hy && hx) dudy = dudx, dvdy = dvdx;
     const float lod = hx || hy ? textureLod(dudx, dvdx, dudy, dvdy) : -1000.0f;
