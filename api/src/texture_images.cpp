@@ -61,7 +61,9 @@ void storeTexel(TextureBase base, const float* c, uint8_t* t) {
 struct ImageSource {
   const PixelStore* store = nullptr;
   GLenum format = GL_RGBA, type = GL_UNSIGNED_BYTE;
-  const void* data = nullptr;        // client memory (null: no image, the texels undefined: 0)
+  // Client memory (null: no image, the texels undefined: 0). Colour indices are all (0, 0, 0, 0):
+  // GL's initial index-to-RGBA maps, one entry of 0 each, which primflow has no glPixelMap to change.
+  const void* data = nullptr;
   const float* rgba = nullptr;       // or unpacked, width * height * 4
   const PFcontextRec* frame = nullptr;  // or the colour buffer from (x, y)
   int x = 0, y = 0;
@@ -78,7 +80,7 @@ struct ImageSource {
         for (int k = 0; k < 4; ++k)
           out[i * 4 + k] = inside ? frame->color[(static_cast<size_t>(fy) * frame->width + fx) * 4 + k] / 255.0f : 0.0f;
       }
-    } else if (data) {
+    } else if (data && format != GL_COLOR_INDEX) {
       PixelStore s = *store;
       s.skip_rows += row;
       scratch.resize(static_cast<size_t>(width) * 4);
@@ -99,11 +101,14 @@ bool imageTarget(int dims, GLenum target, bool proxy) {
 }
 
 // Mesa's check of the external format and type for a colour texture: a depth or stencil
-// format (or colour indices) cannot fill one.
+// format cannot fill one; colour indices can (of a basic type, or bits), through the pixel maps.
 GLenum textureFormatError(GLenum format, GLenum type) {
-  if ((format == GL_DEPTH_COMPONENT || format == GL_STENCIL_INDEX || format == GL_COLOR_INDEX) && type != GL_BITMAP &&
-      checkColorFormatAndType(GL_RGBA, type) == GL_NO_ERROR)
-    return GL_INVALID_OPERATION;
+  const bool basic = type != GL_BITMAP && checkColorFormatAndType(GL_RGBA, type) == GL_NO_ERROR;
+  if (format == GL_COLOR_INDEX) {
+    if (type == GL_BITMAP || (basic && checkColorFormatAndType(GL_LUMINANCE, type) == GL_NO_ERROR)) return GL_NO_ERROR;
+    return checkColorFormatAndType(GL_LUMINANCE, type);  // (a packed type: GL_INVALID_OPERATION)
+  }
+  if ((format == GL_DEPTH_COMPONENT || format == GL_STENCIL_INDEX) && basic) return GL_INVALID_OPERATION;
   return checkColorFormatAndType(format, type);
 }
 
@@ -393,6 +398,7 @@ void pfglGetTexImage(GLenum target, GLint level, GLenum format, GLenum type, GLv
   if (!ctx) return;
   if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D) return ctx->setError(GL_INVALID_ENUM);
   if (level < 0 || level >= pf::kMaxTextureLevels) return ctx->setError(GL_INVALID_VALUE);
+  if (format == GL_COLOR_INDEX) return ctx->setError(GL_INVALID_ENUM);  // (not a texture's to give)
   if (const GLenum e = pf::textureFormatError(format, type); e != GL_NO_ERROR) return ctx->setError(e);
   const pf::TextureImage& img = ctx->textures.bound(target).images[level];
   if (!img.level || !pixels) return;
