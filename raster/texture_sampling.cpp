@@ -22,16 +22,32 @@ namespace {
 // undefined).
 float finite(float v) { return std::fabs(v) < 1e30f ? v : 0.0f; }
 
+// floor(x) of a finite float, exactly, without a library call (the baseline x86-64 has no
+// rounding instruction): by truncation below 2^30; a float past 2^23 is an integer already.
+double floorOf(float x) {
+  if (!(std::fabs(x) < 1073741824.0f)) return static_cast<double>(x);
+  const int i = static_cast<int>(x);
+  return static_cast<double>(x < static_cast<float>(i) ? i - 1 : i);
+}
+
+// f (a whole number) modulo size, in [0, size): exact integer arithmetic where f fits, else in
+// double, clamped (coordinates that large have lost every texel anyway).
+int repeatIndex(double f, int size) {
+  if (std::fabs(f) < 1073741824.0) {
+    int m = static_cast<int>(f) % size;
+    return m < 0 ? m + size : m;
+  }
+  const double m = f - static_cast<double>(size) * std::floor(f / size);
+  return static_cast<int>(std::clamp(m, 0.0, static_cast<double>(size - 1)));
+}
+
 // A coordinate's texel index along an axis of `size` texels under `wrap`, for a nearest sample
 // at u (in texels; s already clamped to [0, 1] for GL_CLAMP, mirrored for GL_MIRRORED_REPEAT);
 // -1: the border (GL_CLAMP_TO_BORDER past the edge).
 int wrapNearest(GLenum wrap, float u, int size) {
   u = finite(u);
-  const double f = std::floor(static_cast<double>(u));
-  if (wrap == GL_REPEAT) {
-    const double m = f - static_cast<double>(size) * std::floor(f / size);
-    return static_cast<int>(std::clamp(m, 0.0, static_cast<double>(size - 1)));  // (m may round past either end)
-  }
+  const double f = floorOf(u);
+  if (wrap == GL_REPEAT) return repeatIndex(f, size);
   if (wrap == GL_CLAMP_TO_BORDER) return f < 0 || f >= size ? -1 : static_cast<int>(f);
   return static_cast<int>(std::clamp(f, 0.0, static_cast<double>(size - 1)));
 }
@@ -41,11 +57,10 @@ int wrapNearest(GLenum wrap, float u, int size) {
 void wrapLinear(GLenum wrap, float u, int size, int& i0, int& i1, float& a) {
   u = finite(u);
   const float shifted = u - 0.5f;
-  const double f = std::floor(static_cast<double>(shifted));
-  a = static_cast<float>(static_cast<double>(shifted) - f);
+  const double f = floorOf(shifted);
+  a = static_cast<float>(static_cast<double>(shifted) - f);  // (exact: a float's fraction is a float)
   if (wrap == GL_REPEAT) {
-    const double m = f - static_cast<double>(size) * std::floor(f / size);
-    i0 = static_cast<int>(std::clamp(m, 0.0, static_cast<double>(size - 1)));
+    i0 = repeatIndex(f, size);
     i1 = i0 + 1 == size ? 0 : i0 + 1;
     return;
   }
@@ -210,7 +225,7 @@ void textureEnvironment(const TextureUnit& unit, const float f[4], const float t
       break;
     default: break;
   }
-  for (int k = 0; k < 4; ++k) out[k] = std::clamp(out[k], 0.0f, 1.0f);
+  for (int k = 0; k < 4; ++k) out[k] = out[k] > 0.0f ? (out[k] < 1.0f ? out[k] : 1.0f) : 0.0f;  // (NaN: 0)
 }
 
 void textureSpan(const TextureUnit& unit, const TextureSpan& span, float (*c)[kTileSize], int skip) {
