@@ -152,6 +152,7 @@ PF_SIMD_CLONES void lightRun(const ShadeState& s, const LightingState& l, const 
 
 // What shading a tile reads besides its ids: the G-buffer and the frame's lighting states.
 struct TileShading {
+  const uint32_t* shade_ids;  // the whole tile's (a textured pixel's neighbours)
   const float* const* slots;
   const ShadeState* shades;
   const LightingState* lightings;
@@ -185,6 +186,18 @@ struct RowSpan {
   const ShadeState& s = in.shades[r.id - 1];
   runColour(s, in.slots, i0, span, c);
   if (s.lighting >= 0) lightRun(s, in.lightings[s.lighting], in.equations[s.lighting], in.slots, i0, span, c);
+  if (s.texture) {
+    TextureSpan ts;
+    for (int k = 0; k < 4; ++k) ts.coord[k] = in.slots[s.texcoord_slot + k];
+    ts.ids = in.shade_ids;
+    ts.tile_w = t.w;
+    ts.tile_h = t.h;
+    ts.y = y;
+    ts.x = x;
+    ts.n = n;
+    ts.id = r.id;
+    textureSpan(*s.texture, ts, c, skip);
+  }
   uint8_t* px = t.color + (static_cast<size_t>(t.y0 + y) * t.stride + t.x0 + x) * 4;
   const uint32_t* const span_ids = ids + x;
   uint64_t shaded = static_cast<uint64_t>(n);
@@ -240,7 +253,7 @@ struct RowSpan {
 
 PF_SIMD_CLONES uint64_t shadeTile(const uint32_t* shade_ids, const float* const* slots, const ShadeState* shades,
                    const LightingState* lightings, const LightingEquation* equations, const ShadeTarget& t) {
-  const TileShading in{slots, shades, lightings, equations};
+  const TileShading in{shade_ids, slots, shades, lightings, equations};
   uint64_t shaded = 0;
   alignas(64) float c[4][kTileSize];
   const int row_end = t.row_end < 0 ? t.h : t.row_end;

@@ -6,9 +6,11 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 
 #include "raster/fragment_ops.h"
 #include "raster/lighting.h"
+#include "raster/texture.h"
 
 namespace pf {
 
@@ -23,6 +25,10 @@ struct ShadeState {
   // index into the frame's lighting states, set by the renderer); -1: none.
   int surface_slot = -1;
   int lighting = -1;
+  // Texturing (raster/texture.h): the 4 slots of (s, t, r, q) and the draw's texture snapshot,
+  // applied after lighting; null: untextured.
+  int texcoord_slot = -1;
+  std::shared_ptr<const TextureUnit> texture;
 
   bool operator==(const ShadeState&) const = default;
 };

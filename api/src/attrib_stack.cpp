@@ -38,6 +38,7 @@ void pushAttrib(PFcontextRec& ctx, GLbitfield mask) {
   std::copy(std::begin(ctx.hints), std::end(ctx.hints), s.hints);
   s.list_base = ctx.lists.base;
   s.fragment = ctx.fragment;
+  s.texture = ctx.textures.a;
   try {
     ctx.attrib_stack.push_back(s);
   } catch (const std::bad_alloc&) {
@@ -85,6 +86,18 @@ void popAttrib(PFcontextRec& ctx) {
     l.normalize = s.lighting.normalize;
     l.rescale_normal = s.lighting.rescale_normal;
     l.per_pixel_vertices = s.lighting.per_pixel_vertices;
+    TextureAttribs& t = ctx.textures.a;
+    t.enabled_1d = s.texture.enabled_1d;
+    t.enabled_2d = s.texture.enabled_2d;
+    for (int k = 0; k < 4; ++k) t.gen[k].enabled = s.texture.gen[k].enabled;
+    ctx.textures.dirty = true;
+  }
+  if (m & GL_TEXTURE_BIT) {  // the bindings, the environment, the generation (enables included)
+    ctx.textures.a = s.texture;
+    // (A binding to a texture deleted since is the default texture's.)
+    if (ctx.textures.a.binding_1d && !ctx.textures.object(ctx.textures.a.binding_1d)) ctx.textures.a.binding_1d = 0;
+    if (ctx.textures.a.binding_2d && !ctx.textures.object(ctx.textures.a.binding_2d)) ctx.textures.a.binding_2d = 0;
+    ctx.textures.dirty = true;
   }
   if (m & GL_DEPTH_BUFFER_BIT) {
     ctx.depth_test = s.depth_test;

@@ -48,7 +48,8 @@ Values<T, N> valuesOf(const U* p, int n, GLint count) {
 // X(opcode, function in pf::cmd, argument types...). Every GL command GL compiles into a
 // display list, and primflow's extension commands that set state or feed a glBegin. Not here,
 // executed at once even while compiling (GL 1.5 section 5.4): glGen/Delete/IsList, glNewList,
-// glEndList, queries, glFinish, glFlush, glReadPixels, glPixelStore, client state (with
+// glEndList, queries, glFinish, glFlush, glReadPixels, glPixelStore, glGen/Delete/IsTexture,
+// glPrioritizeTextures, glAreTexturesResident, proxy glTexImage*, client state (with
 // glPush/PopClientAttrib) and array pointers (glArrayElement, glDrawArrays and glDrawElements record the commands they issue, the
 // arrays read when compiled), and the extension's compile and look-up commands.
 #define PF_LIST_COMMANDS(X)                                                               \
@@ -123,7 +124,15 @@ Values<T, N> valuesOf(const U* p, int n, GLint count) {
   /* when a command was recorded (glDrawArrays' checks), raised when the list executes   */ \
   X(CallList, callList, GLuint)                                                           \
   X(ListBase, listBase, GLuint)                                                           \
-  X(Error, raise, GLenum)
+  X(Error, raise, GLenum)                                                                 \
+  /* texture_objects.cpp, texture_images.cpp: glTexParameter / glTexEnv / glTexGen as    */ \
+  /* glLight's values are; glCopyTexImage*D and glCopyTexSubImage*D with their dimension */ \
+  X(BindTexture, bindTexture, GLenum, GLuint)                                             \
+  X(TexParameter, texParameter, GLenum, GLenum, Values4f)                                 \
+  X(TexEnv, texEnv, GLenum, GLenum, Values4f)                                             \
+  X(TexGen, texGen, GLenum, GLenum, Values4f)                                             \
+  X(CopyTexImage, copyTexImage, GLint, GLenum, GLint, GLenum, GLint, GLint, GLsizei, GLsizei, GLint) \
+  X(CopyTexSubImage, copyTexSubImage, GLint, GLenum, GLint, GLint, GLint, GLint, GLint, GLsizei, GLsizei)
 
 enum class GlOp : uint32_t {
 #define PF_OP(name, ...) name,
@@ -132,7 +141,13 @@ enum class GlOp : uint32_t {
   // glCallLists, of variable length: n, type, then n offsets from the list base when the type
   // is valid (display_lists.cpp).
   CallLists,
+  // glTexImage*D / glTexSubImage*D, of variable length: the arguments, then the image unpacked
+  // to RGBA floats when the list was compiled (texture_images.cpp).
+  TexImage,
 };
+
+// Executes a recorded TexImage from the words after its opcode; returns how many it takes.
+uint32_t replayTexImage(PFcontextRec& ctx, const uint32_t* args);
 
 namespace cmd {
 #define PF_DECLARE(name, fn, ...) void fn(PFcontextRec& ctx __VA_OPT__(, ) __VA_ARGS__);

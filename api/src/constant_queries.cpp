@@ -94,19 +94,11 @@ constexpr Constant kConstants[] = {
     {GL_SAMPLE_COVERAGE_VALUE, 1, {1}},
     {GL_SAMPLE_COVERAGE_INVERT, 1, {kFalse}},
     // Texturing.
-    {GL_TEXTURE_1D, 1, {kFalse}, kCapability},
-    {GL_TEXTURE_2D, 1, {kFalse}, kCapability},
     {GL_TEXTURE_3D, 1, {kFalse}, kCapability},
     {GL_TEXTURE_CUBE_MAP, 1, {kFalse}, kCapability},
-    {GL_TEXTURE_BINDING_1D, 1, {0}},
-    {GL_TEXTURE_BINDING_2D, 1, {0}},
     {GL_TEXTURE_BINDING_3D, 1, {0}},
     {GL_TEXTURE_BINDING_CUBE_MAP, 1, {0}},
     {GL_ACTIVE_TEXTURE, 1, {GL_TEXTURE0}},
-    {GL_TEXTURE_GEN_S, 1, {kFalse}, kCapability},
-    {GL_TEXTURE_GEN_T, 1, {kFalse}, kCapability},
-    {GL_TEXTURE_GEN_R, 1, {kFalse}, kCapability},
-    {GL_TEXTURE_GEN_Q, 1, {kFalse}, kCapability},
     // Fragment operations (those primflow has: state_queries.cpp).
     {GL_INDEX_LOGIC_OP, 1, {kFalse}, kCapability},
     // Framebuffer: one front buffer, no index or accumulation buffer.
@@ -184,10 +176,9 @@ constexpr Constant kConstants[] = {
     {GL_SELECTION_BUFFER_SIZE, 1, {0}},
     {GL_FEEDBACK_BUFFER_SIZE, 1, {0}},
     {GL_FEEDBACK_BUFFER_TYPE, 1, {GL_2D}},
-    // primflow's limits for what it does not have (not OSMesa's): no clip planes, textures,
+    // primflow's limits for what it does not have (not OSMesa's): no clip planes, 3D or cube map textures,
     // evaluators or selection names; points and lines of size 1; pixel maps of their one entry.
     {GL_MAX_CLIP_PLANES, 1, {0}},
-    {GL_MAX_TEXTURE_SIZE, 1, {0}},
     {GL_MAX_3D_TEXTURE_SIZE, 1, {0}},
     {GL_MAX_CUBE_MAP_TEXTURE_SIZE, 1, {0}},
     {GL_MAX_TEXTURE_UNITS, 1, {1}},

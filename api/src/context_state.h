@@ -14,6 +14,7 @@
 #include <primflow/gl.h>
 
 #include "api/src/display_lists.h"
+#include "api/src/textures.h"
 #include "api/src/vertex_lighting.h"
 #include "raster/lighting.h"
 #include "compiler/compiler.h"
@@ -125,6 +126,7 @@ struct AttribState {
   GLuint list_base;                                  // GL_LIST_BIT
   FragmentState fragment;                            // GL_SCISSOR_BIT, GL_COLOR_BUFFER_BIT, GL_ENABLE_BIT,
                                                      // GL_STENCIL_BUFFER_BIT
+  TextureAttribs texture;                            // GL_TEXTURE_BIT (the enables: GL_ENABLE_BIT too)
 };
 
 // glPixelStore's modes for one direction (GL 1.5 table 3.1): pack (glReadPixels writes by
@@ -225,6 +227,7 @@ struct PFcontextRec {
 
   pf::ClientArray vertex_array, color_array, normal_array, texcoord_array;
   pf::LightingState lighting;
+  pf::TextureState textures;
   pf::DisplayLists lists;
   GLenum hints[pf::kHintCount] = {GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE,
                                   GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE};
@@ -286,6 +289,10 @@ struct PFcontextRec {
   std::vector<pf::ShadingChannel> shading;
   pf::ChannelLayout begin_layout;
   int color_channel = -1, back_color_channel = -1;  // first channel of the colour(s); -1: none
+  // Texturing (textures.h): the snapshot the glBegin's instances sample (null: untextured), and
+  // the first channel of their texture coordinates.
+  std::shared_ptr<const pf::TextureUnit> begin_texture;
+  int texcoord_channel = -1;
   size_t rows_count = 0;
   std::vector<uint32_t> rows;
   std::vector<float> row_shading;  // row_channels floats per sequence point

@@ -151,6 +151,7 @@ void execute(PFcontextRec& ctx, const std::vector<uint32_t>& list) {
       PF_LIST_COMMANDS(PF_REPLAY)
 #undef PF_REPLAY
       case GlOp::CallLists: p += replayCallLists(ctx, p); break;
+      case GlOp::TexImage: p += replayTexImage(ctx, p); break;
     }
   }
 }

@@ -39,7 +39,8 @@ float clamp01(double v) { return v > 0 ? (v < 1 ? static_cast<float>(v) : 1.0f) 
 
 // The capabilities primflow has: depth test, face culling, lighting and its lights, colour
 // material, normalising and rescaling normals, per-pixel lighting of vertex primitives, the
-// per-fragment operations and dithering (kept, nothing dithered).
+// per-fragment operations and dithering (kept, nothing dithered), 1D and 2D texturing and
+// texture coordinate generation.
 bool* capability(PFcontextRec& ctx, GLenum cap) {
   if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + pf::kMaxLights) return &ctx.lighting.lights[cap - GL_LIGHT0].enabled;
   switch (cap) {
@@ -56,6 +57,12 @@ bool* capability(PFcontextRec& ctx, GLenum cap) {
     case GL_COLOR_LOGIC_OP: return &ctx.fragment.logic_op;
     case GL_DITHER: return &ctx.fragment.dither;
     case GL_STENCIL_TEST: return &ctx.fragment.stencil_test;
+    case GL_TEXTURE_1D: return &ctx.textures.a.enabled_1d;
+    case GL_TEXTURE_2D: return &ctx.textures.a.enabled_2d;
+    case GL_TEXTURE_GEN_S: return &ctx.textures.a.gen[0].enabled;
+    case GL_TEXTURE_GEN_T: return &ctx.textures.a.gen[1].enabled;
+    case GL_TEXTURE_GEN_R: return &ctx.textures.a.gen[2].enabled;
+    case GL_TEXTURE_GEN_Q: return &ctx.textures.a.gen[3].enabled;
     default: ctx.setError(GL_INVALID_ENUM); return nullptr;
   }
 }
@@ -216,12 +223,14 @@ void depthRange(PFcontextRec& ctx, GLdouble zNear, GLdouble zFar) {
 void enable(PFcontextRec& ctx, GLenum cap) {
   if (!outsideBegin(ctx)) return;
   if (bool* c = capability(ctx, cap)) *c = true;
+  if (cap == GL_TEXTURE_1D || cap == GL_TEXTURE_2D) ctx.textures.dirty = true;
   if (cap == GL_COLOR_MATERIAL) ctx.lighting.trackColor(ctx.current_color);  // tracks from now on
 }
 
 void disable(PFcontextRec& ctx, GLenum cap) {
   if (!outsideBegin(ctx)) return;
   if (bool* c = capability(ctx, cap)) *c = false;
+  if (cap == GL_TEXTURE_1D || cap == GL_TEXTURE_2D) ctx.textures.dirty = true;
 }
 
 void colorMask(PFcontextRec& ctx, GLboolean r, GLboolean g, GLboolean b, GLboolean a) {

@@ -150,6 +150,8 @@ constexpr size_t kInstancesPerChunk = 1024 * pf::kSetupBatchLanes;
 // Hands the rows to the renderer: for a primitive with a fixed count, one instance per
 // `sequence_points` rows; for one with parameter-sized arrays, one instance holding them all.
 void submitInstances(PFcontextRec& ctx) {
+  // Textured and flat: colours flattened here, texture coordinates interpolated (flat_texturing.cpp).
+  const bool flattened = ctx.shade_model == GL_FLAT && pf::flattenForTexturing(ctx);
   const pf::CompiledPrimitive& prim = *ctx.begin_primitive;
   const size_t total = ctx.rows_count;
   const bool sized = prim.sequence_points == 0;
@@ -164,10 +166,15 @@ void submitInstances(PFcontextRec& ctx) {
   if (prim.has_interp_data) {
     shade.color_slot = ctx.color_channel;
     shade.back_color_slot = ctx.back_color_channel;
+    if (ctx.begin_texture) {
+      shade.texture = ctx.begin_texture;
+      shade.texcoord_slot = layout.gbuffer_slot[static_cast<size_t>(ctx.texcoord_channel)];
+    }
   } else {
     for (int k = 0; k < 4; ++k) shade.constant_color[k] = ctx.current_color[k];
   }
-  const pf::RasterState state = ctx.rasterState();
+  pf::RasterState state = ctx.rasterState();
+  if (flattened) state.flat_shading = false;
   // Instances go to the renderer a chunk at a time (sized primitives: the one instance), so
   // that it can run their setup across instances; it keeps their order.
   const size_t instances = total / per;
@@ -268,12 +275,14 @@ void rowChannels(PFcontextRec& ctx) {
   ctx.row_shading.resize(at + static_cast<size_t>(ctx.row_channels));
   float* out = ctx.row_shading.data() + at;
   glm::vec3 eye(0.0f), n(0.0f);
-  if (ctx.begin_lit || ctx.begin_vertices_per_pixel) {
+  glm::vec4 p(0.0f), eye4(0.0f);
+  const bool generating = ctx.begin_texture && ctx.textures.generating();
+  if (ctx.begin_lit || ctx.begin_vertices_per_pixel || generating) {
     const pf::ParamValue& v = ctx.param(ctx.vertex_param);
     const pf::ParamValue& nv = ctx.param(ctx.normal_param);
-    glm::vec4 p(static_cast<float>(v.v[0]), static_cast<float>(v.v[1]), v.count > 2 ? static_cast<float>(v.v[2]) : 0.0f,
-                v.count > 3 ? static_cast<float>(v.v[3]) : 1.0f);
-    glm::vec4 eye4 = ctx.begin_modelview * p;
+    p = glm::vec4(static_cast<float>(v.v[0]), static_cast<float>(v.v[1]), v.count > 2 ? static_cast<float>(v.v[2]) : 0.0f,
+                  v.count > 3 ? static_cast<float>(v.v[3]) : 1.0f);
+    eye4 = ctx.begin_modelview * p;
     eye = eye4.w != 0.0f ? glm::vec3(eye4) / eye4.w : glm::vec3(eye4);
     n = ctx.begin_normal_matrix *
         glm::vec3(static_cast<float>(nv.v[0]), static_cast<float>(nv.v[1]), static_cast<float>(nv.v[2]));
@@ -301,6 +310,14 @@ void rowChannels(PFcontextRec& ctx) {
       continue;
     }
     const pf::ParamValue& v = ctx.param(s.param);
+    if (s.param == ctx.texcoord_param && ctx.begin_texture) {
+      // The texture coordinates a textured draw samples by: generated, then the texture matrix.
+      const glm::vec4 current(static_cast<float>(v.v[0]), static_cast<float>(v.v[1]), static_cast<float>(v.v[2]),
+                              static_cast<float>(v.v[3]));
+      const glm::vec4 c = pf::textureCoordinates(ctx.textures, ctx.texture.top, current, p, eye4, n);
+      for (int k = 0; k < 4; ++k) dst[k] = c[k];
+      continue;
+    }
     for (int k = 0; k < 4; ++k) dst[k] = k < v.count ? static_cast<float>(v.v[k]) : (k == 3 ? 1.0f : 0.0f);
   }
   if (ctx.vertex_lighting.full()) flushVertexLighting(ctx);
@@ -311,7 +328,7 @@ void rowChannels(PFcontextRec& ctx) {
 // channels each, ordered by interpolation kind as ChannelLayout wants.
 void planShading(PFcontextRec& ctx, GLenum mode, const pf::CompiledPrimitive& prim) {
   ctx.shading.clear();
-  ctx.color_channel = ctx.back_color_channel = -1;
+  ctx.color_channel = ctx.back_color_channel = ctx.texcoord_channel = -1;
   // Cleared, not rebuilt: a glBegin per triangle must not allocate (their capacity stays).
   pf::ChannelLayout& layout = ctx.begin_layout;
   layout.count = 0;
@@ -327,9 +344,14 @@ void planShading(PFcontextRec& ctx, GLenum mode, const pf::CompiledPrimitive& pr
   bound.clear();
   auto it = ctx.shading_bindings.find(mode);
   if (it != ctx.shading_bindings.end()) bound.assign(it->second.begin(), it->second.end());
-  bool has_color = false;
-  for (const auto& b : bound) has_color = has_color || b.first == ctx.color_param;
+  bool has_color = false, has_texcoord = false;
+  for (const auto& b : bound) {
+    has_color = has_color || b.first == ctx.color_param;
+    has_texcoord = has_texcoord || b.first == ctx.texcoord_param;
+  }
   if (!has_color) bound.insert(bound.begin(), {ctx.color_param, GL_PERSPECTIVE_LINEAR_INTERPOLATOR_EXT});
+  // A textured draw carries its texture coordinates, perspective-correct unless bound otherwise.
+  if (ctx.begin_texture && !has_texcoord) bound.push_back({ctx.texcoord_param, GL_PERSPECTIVE_LINEAR_INTERPOLATOR_EXT});
   for (int kind = 0; kind < pf::kInterpKindCount; ++kind) {
     layout.kind_begin[kind] = 4 * static_cast<int>(ctx.shading.size());
     if (kind == static_cast<int>(pf::InterpKind::PerspectiveLinear) && ctx.begin_vertices_per_pixel) {
@@ -353,6 +375,7 @@ void planShading(PFcontextRec& ctx, GLenum mode, const pf::CompiledPrimitive& pr
         const int first = 4 * static_cast<int>(ctx.shading.size());
         ctx.shading.push_back({param, face == 1, k, first, shared});
         if (color) (face == 0 ? ctx.color_channel : ctx.back_color_channel) = first;
+        if (param == ctx.texcoord_param) ctx.texcoord_channel = first;
         if (shared) {
           uint32_t offset = 0;
           for (const auto& s : layout.shared)
@@ -363,6 +386,7 @@ void planShading(PFcontextRec& ctx, GLenum mode, const pf::CompiledPrimitive& pr
     }
     layout.kind_end[kind] = 4 * static_cast<int>(ctx.shading.size());
   }
+  if (ctx.texcoord_channel < 0) ctx.begin_texture.reset();  // (no channels: nothing to sample by)
   ctx.row_channels = 4 * static_cast<int>(ctx.shading.size());
   layout.count = ctx.row_channels;
   for (int c = 0; c < ctx.row_channels; ++c) layout.gbuffer_slot.push_back(c);
@@ -425,6 +449,9 @@ static void startBegin(PFcontextRec& context, GLenum mode, const pf::CompiledPri
       if (len > 0.0f) ctx->begin_normal_matrix /= len;
     }
   }
+  // Texturing: the bound texture's snapshot when it is enabled and complete, for primitives
+  // that carry shading parameters (the others have no texture coordinates to sample by).
+  ctx->begin_texture = ctx->begin_primitive->has_interp_data ? ctx->textures.current() : nullptr;
   planShading(*ctx, mode, *ctx->begin_primitive);
   // A primitive that sets its normal and has no vertices to light is lit per pixel: its P and N
   // follow its channels in the G-buffer.
@@ -477,6 +504,7 @@ void end(PFcontextRec& ctx) {
   if (ctx.begin_out_of_memory) {  // already reported (GL_OUT_OF_MEMORY): nothing to draw
     ctx.begin_out_of_memory = false;
     ctx.begin_primitive = nullptr;
+    ctx.begin_texture.reset();
     return;
   }
   const CompiledPrimitive& prim = *ctx.begin_primitive;
@@ -498,6 +526,7 @@ void end(PFcontextRec& ctx) {
     }
   }
   ctx.begin_primitive = nullptr;
+  ctx.begin_texture.reset();  // (the instances hold the snapshot; a level changed next is not copied for it)
 }
 
 void vertex2f(PFcontextRec& ctx, GLfloat x, GLfloat y) { setVertex(ctx, x, y, 0, 1, 2); }

@@ -1,5 +1,6 @@
 // Pixel store modes and reading pixels: glPixelStorei / glPixelStoref for every pack and unpack
-// mode of GL 1.5 table 3.1, and glReadPixels, which writes by the pack modes.
+// mode of GL 1.5 table 3.1 (the unpack modes read by glTexImage and glTexSubImage, the pack modes
+// written by glReadPixels and glGetTexImage, both through pixel_transfer.h), and glReadPixels.
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -7,6 +8,7 @@
 #include <primflow/gl.h>
 
 #include "api/src/context_state.h"
+#include "api/src/pixel_transfer.h"
 
 namespace {
 
@@ -93,12 +95,11 @@ void pfglReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum form
   if (!pixels || !ctx->color || width == 0 || height == 0) return;
   ctx->finish();
   const pf::PixelStore& pack = ctx->pack;
-  const size_t align = static_cast<size_t>(pack.alignment);
-  const size_t pixel_bytes = components * bytes;
-  const size_t row_pixels = static_cast<size_t>(pack.row_length > 0 ? pack.row_length : width);
-  const size_t row_bytes = (row_pixels * pixel_bytes + align - 1) / align * align;
-  auto* out = static_cast<unsigned char*>(pixels) + static_cast<size_t>(pack.skip_rows) * row_bytes +
-              static_cast<size_t>(pack.skip_pixels) * pixel_bytes;
+  // (The rows laid out as every client image is: pixel_transfer.h.)
+  const pf::ImageLayout layout = pf::imageLayout(pack, format, type, width);
+  const size_t pixel_bytes = layout.pixel_bytes;
+  const size_t row_bytes = layout.row_bytes;
+  auto* out = static_cast<unsigned char*>(pixels) + layout.offset;
   for (int row = 0; row < height; ++row) {
     const long fy = static_cast<long>(y) + row;
     if (fy < 0 || fy >= ctx->height) continue;

@@ -161,6 +161,14 @@ bool query(const PFcontextRec& ctx, GLenum pname, Query& q) {
     case GL_CLIENT_ATTRIB_STACK_DEPTH: set({double(ctx.client_attrib_stack.size())}); return true;
     case GL_MAX_ATTRIB_STACK_DEPTH: case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: set({double(pf::kMaxAttribStackDepth)}); return true;
     case GL_SUBPIXEL_BITS: set({8}); return true;  // window coordinates snap to 1/256 pixel
+    case GL_TEXTURE_1D: set({ctx.textures.a.enabled_1d ? 1.0 : 0.0}); return true;
+    case GL_TEXTURE_2D: set({ctx.textures.a.enabled_2d ? 1.0 : 0.0}); return true;
+    case GL_TEXTURE_GEN_S: case GL_TEXTURE_GEN_T: case GL_TEXTURE_GEN_R: case GL_TEXTURE_GEN_Q:
+      set({ctx.textures.a.gen[pname - GL_TEXTURE_GEN_S].enabled ? 1.0 : 0.0});
+      return true;
+    case GL_TEXTURE_BINDING_1D: set({double(ctx.textures.a.binding_1d)}); return true;
+    case GL_TEXTURE_BINDING_2D: set({double(ctx.textures.a.binding_2d)}); return true;
+    case GL_MAX_TEXTURE_SIZE: set({double(pf::kMaxTextureSize)}); return true;
     case GL_SCISSOR_BOX: {
       const int* b = ctx.fragment.scissor;
       set({double(b[0]), double(b[1]), double(b[2]), double(b[3])});

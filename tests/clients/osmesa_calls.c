@@ -255,7 +255,7 @@ static int crashers(void) {
   glFinish();
   OSMesaPixelStore(OSMESA_ROW_LENGTH, 0);
   /* an entry point primflow lacks, by name and through OSMesaGetProcAddress */
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, buffer);
+  glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA, 1, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, buffer);
   fine &= glGetError() == GL_INVALID_OPERATION;
   ((void (*)(void))OSMesaGetProcAddress("glFooBar"))();
   fine &= glGetError() == GL_INVALID_OPERATION;

@@ -45,7 +45,7 @@ GLenum aMode(FuzzedDataProvider& in) {
 
 GLenum aCapability(FuzzedDataProvider& in) {
   static const GLenum kCaps[] = {GL_DEPTH_TEST, GL_CULL_FACE,   GL_LIGHTING,   GL_LIGHT0,         GL_LIGHT7,
-                                 GL_NORMALIZE,  GL_COLOR_MATERIAL, GL_SCISSOR_TEST, GL_TEXTURE_2D,  0x1234,
+                                 GL_NORMALIZE,  GL_COLOR_MATERIAL, GL_SCISSOR_TEST, GL_TEXTURE_2D,  0x1234,  GL_TEXTURE_1D,
                                  GL_BLEND,      GL_ALPHA_TEST,  GL_STENCIL_TEST, GL_COLOR_LOGIC_OP, GL_DITHER};
   return kCaps[in.ConsumeIntegralInRange<size_t>(0, sizeof(kCaps) / sizeof(kCaps[0]) - 1)];
 }
@@ -143,8 +143,86 @@ void fragmentState(FuzzedDataProvider& in) {
   }
 }
 
+// Texturing, any values: images of random sizes, levels, formats and types from a small buffer
+// (the sizes kept within it, or a NULL image), sub-images anywhere, copies, parameters,
+// environment and generation, bindings and deletions, texture coordinates.
+void textureState(FuzzedDataProvider& in) {
+  static std::vector<unsigned char> image(4096);
+  for (size_t i = 0; i < image.size(); i += 61) image[i] = static_cast<unsigned char>(i * 13);
+  const GLenum target = in.ConsumeBool() ? GL_TEXTURE_2D : in.ConsumeBool() ? GL_TEXTURE_1D : in.ConsumeIntegral<GLenum>();
+  const GLenum formats[] = {GL_RGBA, GL_RGB, GL_BGRA, GL_LUMINANCE, GL_ALPHA, GL_LUMINANCE_ALPHA, GL_DEPTH_COMPONENT, 0x1234};
+  const GLenum types[] = {GL_UNSIGNED_BYTE, GL_BYTE, GL_FLOAT, GL_UNSIGNED_SHORT_5_6_5, GL_UNSIGNED_INT_2_10_10_10_REV,
+                          GL_BITMAP, 0x1234};
+  const GLenum format = formats[in.ConsumeIntegralInRange<size_t>(0, 7)];
+  const GLenum type = types[in.ConsumeIntegralInRange<size_t>(0, 6)];
+  // At most 8 x 8 texels of 16 bytes with unpack skips below: within the buffer.
+  const GLsizei w = in.ConsumeIntegralInRange<GLsizei>(-2, 8), h = in.ConsumeIntegralInRange<GLsizei>(-2, 8);
+  const GLint level = in.ConsumeIntegralInRange<GLint>(-1, 16);
+  const void* data = in.ConsumeBool() ? image.data() : nullptr;
+  switch (in.ConsumeIntegralInRange<int>(0, 9)) {
+    case 0:
+      pfglPixelStorei(GL_UNPACK_SKIP_PIXELS, in.ConsumeIntegralInRange<int>(0, 4));
+      pfglPixelStorei(GL_UNPACK_ALIGNMENT, 1 << in.ConsumeIntegralInRange<int>(0, 3));
+      pfglTexImage2D(target, level, in.ConsumeBool() ? GL_RGBA : in.ConsumeIntegralInRange<GLint>(0, 0x8100), w, h,
+                     in.ConsumeIntegralInRange<GLint>(-1, 2), format, type, data);
+      break;
+    case 1: pfglTexImage1D(target, level, GL_RGB, w, in.ConsumeIntegralInRange<GLint>(0, 1), format, type, data); break;
+    case 2:
+      pfglTexSubImage2D(target, level, in.ConsumeIntegralInRange<GLint>(-3, 10), in.ConsumeIntegralInRange<GLint>(-3, 10), w,
+                        h, format, type, data);
+      break;
+    case 3:
+      pfglCopyTexImage2D(target, level, GL_RGBA, in.ConsumeIntegralInRange<GLint>(-100, 100),
+                         in.ConsumeIntegralInRange<GLint>(-100, 100), w, h, 0);
+      pfglCopyTexSubImage2D(target, level, 0, 0, in.ConsumeIntegral<GLint>(), in.ConsumeIntegral<GLint>(), w, h);
+      break;
+    case 4: {
+      const GLenum pnames[] = {GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER, GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T,
+                               GL_TEXTURE_BASE_LEVEL, GL_TEXTURE_MAX_LEVEL, GL_TEXTURE_MIN_LOD, GL_TEXTURE_MAX_LOD};
+      const GLenum values[] = {GL_NEAREST, GL_LINEAR, GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR_MIPMAP_LINEAR, GL_REPEAT,
+                               GL_CLAMP, GL_CLAMP_TO_EDGE, GL_MIRRORED_REPEAT, GL_CLAMP_TO_BORDER, 0x1234};
+      pfglTexParameteri(target, pnames[in.ConsumeIntegralInRange<size_t>(0, 7)], in.ConsumeBool()
+                        ? static_cast<GLint>(values[in.ConsumeIntegralInRange<size_t>(0, 9)]) : in.ConsumeIntegral<GLint>());
+      const float border[4] = {aFloat(in), aFloat(in), aFloat(in), aFloat(in)};
+      pfglTexParameterfv(target, GL_TEXTURE_BORDER_COLOR, border);
+      break;
+    }
+    case 5: {
+      const GLenum modes[] = {GL_MODULATE, GL_DECAL, GL_BLEND, GL_REPLACE, GL_ADD, GL_COMBINE};
+      pfglTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, static_cast<GLint>(modes[in.ConsumeIntegralInRange<size_t>(0, 5)]));
+      const float c[4] = {aFloat(in), aFloat(in), aFloat(in), aFloat(in)};
+      pfglTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, c);
+      break;
+    }
+    case 6: {
+      const GLenum coord = GL_S + in.ConsumeIntegralInRange<GLenum>(0, 4);
+      const GLint gen_modes[] = {GL_OBJECT_LINEAR, GL_EYE_LINEAR, GL_SPHERE_MAP, 0};
+      pfglTexGeni(coord, GL_TEXTURE_GEN_MODE, gen_modes[in.ConsumeIntegralInRange<size_t>(0, 3)]);
+      const float plane[4] = {aFloat(in), aFloat(in), aFloat(in), aFloat(in)};
+      pfglTexGenfv(coord, in.ConsumeBool() ? GL_OBJECT_PLANE : GL_EYE_PLANE, plane);
+      (in.ConsumeBool() ? pfglEnable : pfglDisable)(GL_TEXTURE_GEN_S + in.ConsumeIntegralInRange<GLenum>(0, 3));
+      break;
+    }
+    case 7: {
+      GLuint names[3] = {in.ConsumeIntegralInRange<GLuint>(0, 5), 0, 0};
+      if (in.ConsumeBool()) pfglGenTextures(in.ConsumeIntegralInRange<GLsizei>(-1, 3), names);
+      pfglBindTexture(target, names[0]);
+      if (in.ConsumeBool()) pfglDeleteTextures(in.ConsumeIntegralInRange<GLsizei>(-1, 3), names);
+      break;
+    }
+    case 8: {
+      std::vector<unsigned char> back(8 * 8 * 16 * 2);
+      pfglGetTexImage(target, level, format, type, in.ConsumeBool() ? back.data() : nullptr);
+      GLint v;
+      pfglGetTexLevelParameteriv(target, level, in.ConsumeIntegralInRange<GLenum>(0x1000, 0x1006), &v);
+      break;
+    }
+    default: pfglTexCoord4f(aFloat(in), aFloat(in), aFloat(in), aFloat(in)); break;
+  }
+}
+
 void oneCall(FuzzedDataProvider& in, bool& huge_drawn) {
-  switch (in.ConsumeIntegralInRange<int>(0, 21)) {
+  switch (in.ConsumeIntegralInRange<int>(0, 22)) {
     case 0: oneBegin(in, in.ConsumeBool()); break;
     case 19: hugeBegin(in, huge_drawn); break;
     case 1: pfglBegin(in.ConsumeIntegral<GLenum>()); break;  // any enum, a primitive's mode or none
@@ -189,6 +267,7 @@ void oneCall(FuzzedDataProvider& in, bool& huge_drawn) {
       break;
     }
     case 20: fragmentState(in); break;
+    case 21: textureState(in); break;
     default: pfglFinish(); break;
   }
 }

@@ -409,3 +409,30 @@ TEST(Allocation, CompilingAPrimitiveCostsTheSameWithManyRegistered) {
   pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
   pfDestroyContext(ctx);
 }
+
+// A texture image past memory: glTexImage2D answers GL_OUT_OF_MEMORY and keeps the level it had;
+// glTexSubImage2D and a draw sampling the texture go on; a smaller image then fits.
+TEST(OutOfMemory, ATextureImagePastMemoryIsAnErrorNotACrash) {
+  std::vector<unsigned char> px(256 * 256 * 4);
+  PFcontext ctx = windowContext(px);
+  ASSERT_NE(ctx, nullptr);
+  const GLubyte blue[4] = {0, 0, 255, 255};
+  pfglTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  pfglTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, blue);
+  g_fail_from_bytes = 1024 * 1024;
+  pfglTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4096, 4096, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);  // 64 MB
+  g_fail_from_bytes = 0;
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_OUT_OF_MEMORY));
+  GLint width = -1;
+  pfglGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &width);
+  EXPECT_EQ(width, 1);
+  pfglEnable(GL_TEXTURE_2D);
+  pfglTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  drawRedTriangle();  // replaced by the texture's blue
+  pfglFinish();
+  const unsigned char* p = px.data() + (static_cast<size_t>(100) * 256 + 100) * 4;
+  EXPECT_TRUE(p[0] == 0 && p[1] == 0 && p[2] == 255);
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
+  pfDestroyContext(ctx);
+}

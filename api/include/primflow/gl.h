@@ -116,6 +116,55 @@ void pfglPixelStoref(GLenum pname, GLfloat param);
 void pfglReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type,
                     GLvoid *pixels);
 
+/* Texturing (GL 1.x: 1D and 2D textures, objects, mipmaps, filters, wraps, env modes, texture
+ * coordinate generation; docs/api.md lists the errors). Images are read by the unpack modes of
+ * glPixelStore (glGetTexImage writes by the pack modes) and stored with 8 bits a component. */
+void pfglGenTextures(GLsizei n, GLuint *textures);
+void pfglDeleteTextures(GLsizei n, const GLuint *textures);
+void pfglBindTexture(GLenum target, GLuint texture);
+GLboolean pfglIsTexture(GLuint texture);
+void pfglPrioritizeTextures(GLsizei n, const GLuint *textures, const GLclampf *priorities);
+GLboolean pfglAreTexturesResident(GLsizei n, const GLuint *textures, GLboolean *residences);
+void pfglTexImage1D(GLenum target, GLint level, GLint internalformat, GLsizei width, GLint border, GLenum format,
+                    GLenum type, const GLvoid *pixels);
+void pfglTexImage2D(GLenum target, GLint level, GLint internalformat, GLsizei width, GLsizei height, GLint border,
+                    GLenum format, GLenum type, const GLvoid *pixels);
+void pfglTexSubImage1D(GLenum target, GLint level, GLint xoffset, GLsizei width, GLenum format, GLenum type,
+                       const GLvoid *pixels);
+void pfglTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLsizei width, GLsizei height,
+                       GLenum format, GLenum type, const GLvoid *pixels);
+void pfglCopyTexImage1D(GLenum target, GLint level, GLenum internalformat, GLint x, GLint y, GLsizei width,
+                        GLint border);
+void pfglCopyTexImage2D(GLenum target, GLint level, GLenum internalformat, GLint x, GLint y, GLsizei width,
+                        GLsizei height, GLint border);
+void pfglCopyTexSubImage1D(GLenum target, GLint level, GLint xoffset, GLint x, GLint y, GLsizei width);
+void pfglCopyTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x, GLint y, GLsizei width,
+                           GLsizei height);
+void pfglGetTexImage(GLenum target, GLint level, GLenum format, GLenum type, GLvoid *pixels);
+void pfglGetTexLevelParameteriv(GLenum target, GLint level, GLenum pname, GLint *params);
+void pfglGetTexLevelParameterfv(GLenum target, GLint level, GLenum pname, GLfloat *params);
+void pfglTexParameterf(GLenum target, GLenum pname, GLfloat param);
+void pfglTexParameteri(GLenum target, GLenum pname, GLint param);
+void pfglTexParameterfv(GLenum target, GLenum pname, const GLfloat *params);
+void pfglTexParameteriv(GLenum target, GLenum pname, const GLint *params);
+void pfglGetTexParameterfv(GLenum target, GLenum pname, GLfloat *params);
+void pfglGetTexParameteriv(GLenum target, GLenum pname, GLint *params);
+void pfglTexEnvf(GLenum target, GLenum pname, GLfloat param);
+void pfglTexEnvi(GLenum target, GLenum pname, GLint param);
+void pfglTexEnvfv(GLenum target, GLenum pname, const GLfloat *params);
+void pfglTexEnviv(GLenum target, GLenum pname, const GLint *params);
+void pfglGetTexEnvfv(GLenum target, GLenum pname, GLfloat *params);
+void pfglGetTexEnviv(GLenum target, GLenum pname, GLint *params);
+void pfglTexGeni(GLenum coord, GLenum pname, GLint param);
+void pfglTexGenf(GLenum coord, GLenum pname, GLfloat param);
+void pfglTexGend(GLenum coord, GLenum pname, GLdouble param);
+void pfglTexGeniv(GLenum coord, GLenum pname, const GLint *params);
+void pfglTexGenfv(GLenum coord, GLenum pname, const GLfloat *params);
+void pfglTexGendv(GLenum coord, GLenum pname, const GLdouble *params);
+void pfglGetTexGeniv(GLenum coord, GLenum pname, GLint *params);
+void pfglGetTexGenfv(GLenum coord, GLenum pname, GLfloat *params);
+void pfglGetTexGendv(GLenum coord, GLenum pname, GLdouble *params);
+
 /* Matrices (stacks: modelview 32 deep, projection and texture 4; NULL matrices are ignored) */
 void pfglMatrixMode(GLenum mode);
 void pfglLoadIdentity(void);

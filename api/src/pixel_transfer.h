@@ -1,0 +1,48 @@
+// Client images in GL 1.x's external formats and types (GL 1.5 sections 3.6.4 and 4.3.2): where
+// each pixel of an image lies under the pack or unpack modes of glPixelStore, and conversion
+// between an image's pixels and RGBA floats. glTexImage / glTexSubImage unpack by it,
+// glGetTexImage packs by it, and glReadPixels lays its rows out by the same imageLayout.
+#pragma once
+
+#include <cstddef>
+
+#include <GL/gl.h>
+
+namespace pf {
+
+struct PixelStore;
+
+// GL's check of an external format and type (Mesa's order): GL_NO_ERROR; GL_INVALID_ENUM for a
+// type or format that is none of GL 1.x's colour ones (a GL_BITMAP image of colours too);
+// GL_INVALID_OPERATION for a packed type with a format it cannot hold (GL 1.2's packed types:
+// 3_3_2 and 5_6_5 hold GL_RGB, the others GL_RGBA or GL_BGRA).
+GLenum checkColorFormatAndType(GLenum format, GLenum type);
+
+// Where the pixels of a width x height image lie in client memory: pixel (x, y) starts at
+// offset + y * row_bytes + x * pixel_bytes (rows of GL_*_ROW_LENGTH pixels, or `width`, padded
+// to GL_*_ALIGNMENT, after GL_*_SKIP_ROWS rows and GL_*_SKIP_PIXELS pixels).
+struct ImageLayout {
+  size_t pixel_bytes = 0;      // a group's bytes (a packed type's: the type's size)
+  size_t component_bytes = 0;  // what GL_*_SWAP_BYTES reverses: a component's, or a packed word's
+  size_t row_bytes = 0;
+  size_t offset = 0;
+  size_t bytes(int width, int height) const {  // the extent of the image, skips included
+    return width <= 0 || height <= 0 ? 0 : offset + (static_cast<size_t>(height) - 1) * row_bytes + static_cast<size_t>(width) * pixel_bytes;
+  }
+};
+// For a checked colour format and type (checkColorFormatAndType), or GL_DEPTH_COMPONENT /
+// GL_STENCIL_INDEX with a basic type.
+ImageLayout imageLayout(const PixelStore& store, GLenum format, GLenum type, int width);
+
+// Reads `width` x `height` pixels by the unpack modes into RGBA floats (4 a pixel, row 0 first):
+// GL's conversion of each component to [0, 1] (signed ones to [-1, 1]), luminance to red, green
+// and blue, missing colour components 0 and a missing alpha 1.
+void unpackColors(const PixelStore& store, GLenum format, GLenum type, int width, int height, const void* data,
+                  float* rgba);
+
+// Writes RGBA floats (4 a pixel, row 0 first) as `width` x `height` pixels by the pack modes:
+// each component clamped to [0, 1] and converted to the type (a luminance group takes red).
+void packColors(const PixelStore& store, GLenum format, GLenum type, int width, int height, const float* rgba,
+                void* data);
+
+}  // namespace pf
