@@ -67,8 +67,11 @@ def table_llvmpipe():
             llvmpipe = median_of(nat + c.get(False, []), "llvmpipe_ms")
             ours = median_of(nat, "primflow_ms")
             interp = median_of(c[False], "primflow_ms") if False in c else None
-            body.append([scene, threads, fmt(llvmpipe), fmt(ours), fmt(ours / llvmpipe, 2),
-                         fmt(interp) if interp else "--", fmt(interp / llvmpipe, 2) if interp else "--",
+            # The ratios are each run's own (llvmpipe and primflow timed in one process, one
+            # after the other), their median over the runs: not a ratio of medians, which would
+            # divide times taken under different loads.
+            body.append([scene, threads, fmt(llvmpipe), fmt(ours), fmt(median_of(nat, "ratio"), 2),
+                         fmt(interp) if interp else "--", fmt(median_of(c[False], "ratio"), 2) if interp else "--",
                          fmt(interp / ours, 2) if interp else "--",
                          fmt(median_of(nat, "native_blocks_percent")) + "%" if "native_blocks_percent" in nat[0] else "--",
                          max(int(r["pixels_beyond_tolerance"]) for r in nat)])
@@ -86,9 +89,8 @@ def chart_llvmpipe(plt):
             c = cases.get((scene, threads))
             if not c or native not in c:
                 continue
-            llvmpipe = median_of(c[True] + c.get(False, []), "llvmpipe_ms")
             xs.append(i + (k - 1.5) * width)
-            ys.append(median_of(c[native], "primflow_ms") / llvmpipe)
+            ys.append(median_of(c[native], "ratio"))  # each run's own ratio, as the table
         ax.bar(xs, ys, width, label=f"{'native code' if native else 'interpreter'}, {threads} thread{'s' * (threads > 1)}",
                color=["#bbbbbb", "#3366aa", "#888888", "#66aa33"][k])
     ax.axhline(1.0, color="black", linewidth=0.8)
