@@ -41,7 +41,27 @@ SceneData makeScene(const std::string& name) {
       s.colors.insert(s.colors.end(), {u01(rng), u01(rng), u01(rng)});
     }
   };
-  if (name == "small" || name == "lit") {
+  if (name == "textured" || name == "blended") {
+    for (int i = 0; i < 2000; ++i) tri(u01(rng) * s.width, u01(rng) * s.height, 150.0f + 150.0f * u01(rng));
+    if (name == "blended") s.alpha = 0.5f;
+    if (name == "textured") {
+      // Each vertex's coordinates: its window position over 128 pixels per repeat, so the
+      // texture is magnified about 2x and wraps; the image a checkerboard of 32-texel squares
+      // with a smooth ramp in each channel, so that bilinear filtering shows.
+      for (size_t i = 0; i < s.vertices.size() / 3; ++i)
+        s.texcoords.insert(s.texcoords.end(), {s.vertices[3 * i] / 128.0f, s.vertices[3 * i + 1] / 128.0f});
+      s.texture_size = 256;
+      s.texels.resize(256 * 256 * 3);
+      for (int y = 0; y < 256; ++y)
+        for (int x = 0; x < 256; ++x) {
+          const bool dark = ((x / 32) + (y / 32)) % 2 == 0;
+          unsigned char* t = &s.texels[(static_cast<size_t>(y) * 256 + x) * 3];
+          t[0] = static_cast<unsigned char>(dark ? x / 2 : 255 - x / 2);
+          t[1] = static_cast<unsigned char>(dark ? y / 2 : 255 - y / 2);
+          t[2] = static_cast<unsigned char>(dark ? 64 : 224);
+        }
+    }
+  } else if (name == "small" || name == "lit") {
     for (int i = 0; i < 200000; ++i) tri(u01(rng) * s.width, u01(rng) * s.height, 1.5f + u01(rng));
     if (name == "lit")  // a unit normal per vertex, facing the viewer
       for (size_t i = 0; i < s.vertices.size() / 3; ++i) {
@@ -96,11 +116,11 @@ double median(std::vector<double> v) {
 int main(int argc, char** argv) {
   CLI::App app{"pfbench: primflow against OSMesa (llvmpipe) on the same GL scenes"};
   int threads = 1, frames = 7, warmup = 2;
-  std::string scenes = "small,large,fill,lit", csv;
+  std::string scenes = "small,large,fill,lit,textured,blended", csv;
   app.add_option("--threads", threads, "rasterizer threads, for both (LP_NUM_THREADS for llvmpipe)")->check(CLI::Range(1, 64));
   app.add_option("--frames", frames, "timed frames (median reported)")->check(CLI::Range(1, 1000));
   app.add_option("--warmup", warmup, "frames before timing")->check(CLI::Range(0, 100));
-  app.add_option("--scenes", scenes, "comma-separated: small, large, fill, lit");
+  app.add_option("--scenes", scenes, "comma-separated: small, large, fill, lit, textured, blended");
   app.add_option("--csv", csv, "append results to this CSV file");
   bool stats = false;
   app.add_flag("--stats", stats, "print each scene's block counters per frame");
@@ -148,8 +168,9 @@ int main(int argc, char** argv) {
   std::stringstream list(scenes);
   std::string name;
   while (std::getline(list, name, ',')) {
-    if (name != "small" && name != "large" && name != "fill" && name != "lit") {
-      std::fprintf(stderr, "pfbench: unknown scene '%s' (small, large, fill, lit)\n", name.c_str());
+    if (name != "small" && name != "large" && name != "fill" && name != "lit" && name != "textured" &&
+        name != "blended") {
+      std::fprintf(stderr, "pfbench: unknown scene '%s' (small, large, fill, lit, textured, blended)\n", name.c_str());
       return 2;
     }
     pfbench::SceneData s = pfbench::makeScene(name);

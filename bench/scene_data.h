@@ -13,6 +13,10 @@ struct SceneData {
   std::vector<float> vertices;  // x, y, z per vertex, window coordinates (glOrtho onto pixels)
   std::vector<float> colors;    // r, g, b per vertex
   std::vector<float> normals;   // x, y, z per vertex; empty: unlit
+  std::vector<float> texcoords; // s, t per vertex; empty: untextured
+  float alpha = 1.0f;           // every vertex's alpha; below 1: blended (GL_SRC_ALPHA, 1 - GL_SRC_ALPHA)
+  int texture_size = 0;         // textured: a texture_size^2 RGB image, texels below
+  std::vector<unsigned char> texels;
 };
 
 // "small": 200k small Gouraud triangles (about 3 pixels across), depth-tested.
@@ -20,6 +24,11 @@ struct SceneData {
 // "fill":  64 triangles covering the frame 32 times (the per-pixel cost of the triangle program).
 // "lit":   "small" with one directional light, lit per vertex (GL_COLOR_MATERIAL: the colours
 //          are the material).
+// "textured": "large"'s triangles with texture coordinates, a 256x256 RGB texture, bilinear
+//          (GL_LINEAR both ways, no mipmaps), GL_REPEAT, GL_MODULATE; each frame uploads the
+//          image (glTexImage2D) and draws.
+// "blended": "large"'s triangles at alpha 0.5, blended over each other in submission order
+//          (glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA)), depth test off.
 SceneData makeScene(const std::string& name);
 
 // Renders `frames` frames after `warmup` ones; returns each frame's milliseconds. `image`, if

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "raster/shading.h"
+#include "raster/simd_clones.h"
 
 namespace pf {
 namespace {
@@ -16,38 +17,46 @@ inline int mul8(int a, int b) {
   return (t + (t >> 8) + 128) >> 8;
 }
 
-// Factor `f` of channel k (0..3: R, G, B, A) as an 8-bit value, for source s, destination d and
-// constant colour cc.
-int factor(GLenum f, int k, const int s[4], const int d[4], const uint8_t cc[4]) {
+// Factor `f` of channel k (0..3: R, G, B, A) as an 8-bit value, for each of n fragments with
+// sources s[channel][i], destinations d[channel][i] and constant colour cc: the switch is
+// outside the loops, so that each loop is plain integer arithmetic the compiler vectorizes.
+void factors(GLenum f, int k, int n, const int (*s)[kTileSize], const int (*d)[kTileSize], const uint8_t cc[4],
+             int* out) {
+  auto fill = [&](int v) { std::fill_n(out, n, v); };
   switch (f) {
-    case GL_ZERO: return 0;
-    case GL_ONE: return 255;
-    case GL_SRC_COLOR: return s[k];
-    case GL_ONE_MINUS_SRC_COLOR: return 255 - s[k];
-    case GL_DST_COLOR: return d[k];
-    case GL_ONE_MINUS_DST_COLOR: return 255 - d[k];
-    case GL_SRC_ALPHA: return s[3];
-    case GL_ONE_MINUS_SRC_ALPHA: return 255 - s[3];
-    case GL_DST_ALPHA: return d[3];
-    case GL_ONE_MINUS_DST_ALPHA: return 255 - d[3];
-    case GL_CONSTANT_COLOR: return cc[k];
-    case GL_ONE_MINUS_CONSTANT_COLOR: return 255 - cc[k];
-    case GL_CONSTANT_ALPHA: return cc[3];
-    case GL_ONE_MINUS_CONSTANT_ALPHA: return 255 - cc[3];
-    case GL_SRC_ALPHA_SATURATE: return k == 3 ? 255 : std::min(s[3], 255 - d[3]);
-    default: return 0;
+    case GL_ZERO: fill(0); return;
+    case GL_ONE: fill(255); return;
+    case GL_SRC_COLOR: std::copy_n(s[k], n, out); return;
+    case GL_ONE_MINUS_SRC_COLOR: for (int i = 0; i < n; ++i) out[i] = 255 - s[k][i]; return;
+    case GL_DST_COLOR: std::copy_n(d[k], n, out); return;
+    case GL_ONE_MINUS_DST_COLOR: for (int i = 0; i < n; ++i) out[i] = 255 - d[k][i]; return;
+    case GL_SRC_ALPHA: std::copy_n(s[3], n, out); return;
+    case GL_ONE_MINUS_SRC_ALPHA: for (int i = 0; i < n; ++i) out[i] = 255 - s[3][i]; return;
+    case GL_DST_ALPHA: std::copy_n(d[3], n, out); return;
+    case GL_ONE_MINUS_DST_ALPHA: for (int i = 0; i < n; ++i) out[i] = 255 - d[3][i]; return;
+    case GL_CONSTANT_COLOR: fill(cc[k]); return;
+    case GL_ONE_MINUS_CONSTANT_COLOR: fill(255 - cc[k]); return;
+    case GL_CONSTANT_ALPHA: fill(cc[3]); return;
+    case GL_ONE_MINUS_CONSTANT_ALPHA: fill(255 - cc[3]); return;
+    case GL_SRC_ALPHA_SATURATE:
+      if (k == 3)
+        fill(255);
+      else
+        for (int i = 0; i < n; ++i) out[i] = std::min(s[3][i], 255 - d[3][i]);
+      return;
+    default: fill(0); return;
   }
 }
 
-// The blend equation over one channel's source and destination terms (already multiplied by
-// their factors) or, for GL_MIN / GL_MAX, the unweighted values.
-int combine(GLenum equation, int s, int d, int s_term, int d_term) {
+// The blend equation over n fragments' values of one channel: source and destination terms
+// (already multiplied by their factors) or, for GL_MIN / GL_MAX, the unweighted values.
+void combine(GLenum equation, int n, const int* s, const int* d, const int* s_term, const int* d_term, int* out) {
   switch (equation) {
-    case GL_FUNC_SUBTRACT: return std::max(s_term - d_term, 0);
-    case GL_FUNC_REVERSE_SUBTRACT: return std::max(d_term - s_term, 0);
-    case GL_MIN: return std::min(s, d);
-    case GL_MAX: return std::max(s, d);
-    default: return std::min(s_term + d_term, 255);  // GL_FUNC_ADD
+    case GL_FUNC_SUBTRACT: for (int i = 0; i < n; ++i) out[i] = std::max(s_term[i] - d_term[i], 0); return;
+    case GL_FUNC_REVERSE_SUBTRACT: for (int i = 0; i < n; ++i) out[i] = std::max(d_term[i] - s_term[i], 0); return;
+    case GL_MIN: for (int i = 0; i < n; ++i) out[i] = std::min(s[i], d[i]); return;
+    case GL_MAX: for (int i = 0; i < n; ++i) out[i] = std::max(s[i], d[i]); return;
+    default: for (int i = 0; i < n; ++i) out[i] = std::min(s_term[i] + d_term[i], 255); return;  // GL_FUNC_ADD
   }
 }
 
@@ -77,36 +86,52 @@ int logic(GLenum mode, int s, int d) {
 
 }  // namespace
 
-void writeFragments(const FragmentOps& ops, uint8_t color_mask, const float (*c)[kTileSize], int skip, int n,
+// A span at a time: each step a loop over the span's fragments (covered or not: the
+// uncovered are computed and not written), so that the conversions and the blend's integer
+// arithmetic vectorize (built for AVX-512, AVX2 and the baseline: simd_clones.h; the file
+// without trapping math, as the shading pass); fragment by fragment it is the arithmetic GL
+// and llvmpipe define.
+PF_SIMD_CLONES void writeFragments(const FragmentOps& ops, uint8_t color_mask, const float (*c)[kTileSize], int skip, int n,
                     const uint32_t* covered, uint8_t* px, uint8_t* discarded) {
+  n = std::min(n, kTileSize);
+  uint8_t write[kTileSize];
   for (int i = 0; i < n; ++i) {
     discarded[i] = 0;
-    if (covered[i] == 0) continue;
-    if (ops.alpha_test &&
+    write[i] = covered[i] != 0;
+    if (write[i] && ops.alpha_test &&
         !compares(ops.alpha_func, static_cast<float>(toUnorm8Even(c[3][skip + i])), static_cast<float>(ops.alpha_ref))) {
       discarded[i] = 1;
-      continue;
+      write[i] = 0;
     }
-    int s[4], d[4], out[4];
-    uint8_t* const p = px + 4 * i;
-    for (int k = 0; k < 4; ++k) {
-      s[k] = toUnorm8(c[k][skip + i]);
-      d[k] = p[k];
-    }
-    if (ops.logic_op) {
-      for (int k = 0; k < 4; ++k) out[k] = logic(ops.logic_mode, s[k], d[k]);
-    } else if (ops.blend) {
-      for (int k = 0; k < 4; ++k) {
-        const GLenum sf = k < 3 ? ops.src_rgb : ops.src_alpha, df = k < 3 ? ops.dst_rgb : ops.dst_alpha;
-        const int s_term = mul8(s[k], factor(sf, k, s, d, ops.blend_color));
-        const int d_term = mul8(d[k], factor(df, k, s, d, ops.blend_color));
-        out[k] = combine(k < 3 ? ops.equation_rgb : ops.equation_alpha, s[k], d[k], s_term, d_term);
-      }
-    } else {
-      for (int k = 0; k < 4; ++k) out[k] = s[k];
-    }
+  }
+  int s[4][kTileSize], d[4][kTileSize], out[4][kTileSize];
+  for (int k = 0; k < 4; ++k) {
+    const float* const ck = c[k] + skip;
+    for (int i = 0; i < n; ++i) s[k][i] = toUnorm8Select(ck[i]);
+    for (int i = 0; i < n; ++i) d[k][i] = px[4 * i + k];
+  }
+  if (ops.logic_op) {
     for (int k = 0; k < 4; ++k)
-      if (color_mask & (1u << k)) p[k] = static_cast<uint8_t>(out[k]);
+      for (int i = 0; i < n; ++i) out[k][i] = logic(ops.logic_mode, s[k][i], d[k][i]);
+  } else if (ops.blend) {
+    int fs[kTileSize], fd[kTileSize], s_term[kTileSize], d_term[kTileSize];
+    for (int k = 0; k < 4; ++k) {
+      factors(k < 3 ? ops.src_rgb : ops.src_alpha, k, n, s, d, ops.blend_color, fs);
+      factors(k < 3 ? ops.dst_rgb : ops.dst_alpha, k, n, s, d, ops.blend_color, fd);
+      for (int i = 0; i < n; ++i) {
+        s_term[i] = mul8(s[k][i], fs[i]);
+        d_term[i] = mul8(d[k][i], fd[i]);
+      }
+      combine(k < 3 ? ops.equation_rgb : ops.equation_alpha, n, s[k], d[k], s_term, d_term, out[k]);
+    }
+  } else {
+    for (int k = 0; k < 4; ++k) std::copy_n(s[k], n, out[k]);
+  }
+  for (int i = 0; i < n; ++i) {
+    if (!write[i]) continue;
+    uint8_t* const p = px + 4 * i;
+    for (int k = 0; k < 4; ++k)
+      if (color_mask & (1u << k)) p[k] = static_cast<uint8_t>(out[k][i]);
   }
 }
 

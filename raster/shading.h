@@ -60,5 +60,12 @@ inline uint8_t toUnorm8(float c) {
   if (c >= 1.0f) return 255;
   return static_cast<uint8_t>(c * 255.0f + 0.5f);
 }
+// toUnorm8 with selects instead of branches -- the same value for every float (clamped to
+// [0, 1] first, 1 gives 255.5 -> 255) -- for loops the compiler should vectorize.
+inline int toUnorm8Select(float c) {
+  float v = c > 0.0f ? c : 0.0f;  // NaN too
+  v = v < 1.0f ? v : 1.0f;
+  return static_cast<int>(v * 255.0f + 0.5f);
+}
 
 }  // namespace pf

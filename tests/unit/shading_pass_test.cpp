@@ -8,6 +8,10 @@
 
 #include <glm/glm.hpp>
 
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -90,4 +94,24 @@ TEST(ShadingPass, RunsGiveThePixelAtATimeBytes) {
     for (size_t i = 0; i < got.size(); ++i) differ += got[i] != want[i];
     EXPECT_EQ(differ, 0u) << "trial " << trial;
   }
+}
+
+// The branch-free conversion the fragment operations vectorize gives toUnorm8's value for
+// every float: all 2^32 bit patterns, in strides so that the test stays quick (every 61st
+// pattern), plus the boundaries, infinities and NaNs exactly.
+TEST(ShadingPass, SelectFormOfToUnorm8GivesTheSameValueForEveryFloat) {
+  auto check = [](float c) { return toUnorm8Select(c) == static_cast<int>(toUnorm8(c)); };
+  uint64_t wrong = 0;
+  for (uint64_t b = 0; b <= 0xffffffffull; b += 61) {
+    const uint32_t u = static_cast<uint32_t>(b);
+    float c;
+    std::memcpy(&c, &u, sizeof c);
+    wrong += !check(c);
+  }
+  for (float c : {0.0f, -0.0f, 1.0f, 254.5f / 255.0f, 0.5f / 255.0f, std::nextafter(1.0f, 0.0f),
+                  std::nextafter(1.0f, 2.0f), std::numeric_limits<float>::infinity(),
+                  -std::numeric_limits<float>::infinity(), std::numeric_limits<float>::quiet_NaN(),
+                  std::numeric_limits<float>::denorm_min()})
+    wrong += !check(c);
+  EXPECT_EQ(wrong, 0u);
 }
