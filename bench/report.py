@@ -43,7 +43,7 @@ def table(header, body):
     return "\n".join(out)
 
 
-SCENES = ["small", "large", "fill", "lit"]
+SCENES = ["small", "large", "fill", "lit", "textured", "blended"]
 
 
 def llvmpipe_cases():
