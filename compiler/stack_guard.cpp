@@ -2,6 +2,8 @@
 // pthread_getattr_np once per thread, against the current frame's address.
 #include "compiler/stack_guard.h"
 
+#include "compiler/sanitizers.h"
+
 #include <pthread.h>
 
 #include <cstddef>
@@ -10,13 +12,7 @@
 namespace pf {
 namespace {
 
-// GCC says __SANITIZE_ADDRESS__; clang says __has_feature(address_sanitizer).
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define PF_UNDER_ASAN 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__) || defined(PF_UNDER_ASAN)
+#if defined(PF_UNDER_ASAN)
 constexpr uintptr_t kReserve = 256 * 1024;
 #else
 constexpr uintptr_t kReserve = 64 * 1024;

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "compile_helpers.h"
+#include "compiler/sanitizers.h"
 
 namespace pf::test {
 namespace {
@@ -32,7 +33,7 @@ void onStack(size_t bytes, const std::function<void()>& work) {
 // An application thread's stack: 1 MB. Under the sanitizers every frame is several times larger
 // (the analyzer's recursive expr() is 6.8 KB under ASan, 0.3 KB without), so those builds test
 // on 8 MB -- and the smaller-stack test below shows they still stop with an error on less.
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#if defined(PF_SANITIZED)
 constexpr size_t kThreadStack = size_t{8} << 20;
 #else
 constexpr size_t kThreadStack = size_t{1} << 20;

@@ -14,9 +14,11 @@
 #include <memory>
 #include <vector>
 
+#include "compiler/sanitizers.h"
+
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#if defined(PF_SANITIZED)
 constexpr bool kSanitized = true;
 #else
 constexpr bool kSanitized = false;
