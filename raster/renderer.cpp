@@ -484,9 +484,14 @@ void Renderer::runTile(int tile, WorkerScratch& s) {
     if (k + 4 < count) __builtin_prefetch(&scene_.instances[bin.instances[k + 4]]);
     if (k + 2 < count) {
       const Instance& ahead = scene_.instances[bin.instances[k + 2]];
+      // Every line the record's uniforms touch (a record starts anywhere in a line).
       const uint32_t* r = scene_.records.data() + ahead.record_offset;
       const size_t words = ahead.prim->pixel.num_uniform_slots;
-      for (size_t at = 0; at < words; at += 16) __builtin_prefetch(r + at);
+      if (words > 0) {
+        const uintptr_t first = reinterpret_cast<uintptr_t>(r) & ~uintptr_t{63};
+        const uintptr_t last = reinterpret_cast<uintptr_t>(r + words - 1);
+        for (uintptr_t line = first; line <= last; line += 64) __builtin_prefetch(reinterpret_cast<const void*>(line));
+      }
     }
     const uint32_t index = bin.instances[k];
     const Instance& inst = scene_.instances[index];
