@@ -10,6 +10,7 @@ namespace pf {
 
 static_assert(kNativeBlockSize == kBlockSize && kNativeLanes == kLanes && kNativeTileSize == kTileSize,
               "compiler/native/native_abi.h repeats the rasterizer's sizes");
+static_assert(RasterState::kMaxClipPlanes == kNativeMaxClipPlanes, "native code reads every clip plane");
 
 namespace {
 
@@ -204,6 +205,8 @@ void NativeBlocks::prepare(PreparedCall& call, const CompiledPrimitive& prim, co
   a.shade_id = shade_id;
   a.iteration_cap = state.iteration_cap;
   a.depth_pass = depthPass(state);
+  a.clip_planes = &state.clip_planes[0][0];
+  a.clip_plane_count = static_cast<uint32_t>(state.clip_plane_count);
   a.depth_write = target.depth && state.depth_test && state.depth_write ? 1u : 0u;
   call.state = &state;
   call.prim = &prim;

@@ -319,6 +319,12 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const PixelProgra
           case DepthFunc::Equal: run(Op::FEq, d, z, w, zb, true, kZeroLanes, false, exec); break;
           case DepthFunc::NotEqual: run(Op::FNe, d, z, w, zb, true, kZeroLanes, false, exec); break;
         }
+        // User clip planes: a fragment they clip fails (RasterState::clipKeeps, as native code).
+        if (state.clip_plane_count > 0)
+          for (uint64_t m = exec; m != 0; m &= m - 1) {
+            const int i = __builtin_ctzll(m);
+            if (!state.clipKeeps(asF(RX[i]), asF(RY[i]), asF(w ? z[i] : z[0]))) d[i] = 0u;
+          }
         continue;
       }
       case Op::FieldBox:

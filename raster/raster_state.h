@@ -46,8 +46,26 @@ struct RasterState {
   // The context's fields (pfglCompileFieldEXT), which field_hit() and field_gradient() name by
   // id (1-based). Owned by the context, which outlives its drawing.
   const field::FieldTable* fields = nullptr;
+  // User clip planes (GL 1.5 section 2.11), the enabled ones in window coordinates: a fragment
+  // at window (X, Y) and depth z is kept where ((a * X + b * Y) + c * z) + d >= 0 for each of
+  // the first clip_plane_count planes (a, b, c, d). ztest() applies them -- a clipped
+  // fragment fails it -- so every primitive that tests depth is clipped per pixel
+  // (docs/architecture.md, "Fog and clip planes").
+  static constexpr int kMaxClipPlanes = 8;
+  int clip_plane_count = 0;
+  float clip_planes[kMaxClipPlanes][4] = {};
 
   bool operator==(const RasterState&) const = default;
+
+  // Whether the enabled clip planes keep the fragment at (x, y, z), evaluated as ztest() does.
+  bool clipKeeps(float x, float y, float z) const {
+    for (int p = 0; p < clip_plane_count; ++p) {
+      const float* e = clip_planes[p];
+      const float ax = e[0] * x, by = e[1] * y, cz = e[2] * z;
+      if (!(((ax + by) + cz) + e[3] >= 0.0f)) return false;
+    }
+    return true;
+  }
 };
 
 // The state value `which` (compiler/isa.h: StateValue) of `s`, as LoadState reads it.

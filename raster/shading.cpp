@@ -198,6 +198,7 @@ struct RowSpan {
     ts.id = r.id;
     textureSpan(*s.texture, ts, c, skip);
   }
+  if (s.fog_slot >= 0) fogRun(s.fog, in.slots[s.fog_slot] + i0, c, span);
   uint8_t* px = t.color + (static_cast<size_t>(t.y0 + y) * t.stride + t.x0 + x) * 4;
   const uint32_t* const span_ids = ids + x;
   uint64_t shaded = static_cast<uint64_t>(n);

@@ -1,13 +1,14 @@
 // The deferred shading pass: after every instance of a tile has run, each pixel that some
 // instance covered is shaded once from the shading parameters left in the G-buffer.
 // Shading is the colour parameter (lit per vertex already, or unlit), or -- for primitives that
-// set their normal N -- GL's lighting evaluated per pixel from the G-buffer's P and N, clamped
-// and rounded to 8 bits.
+// set their normal N -- GL's lighting evaluated per pixel from the G-buffer's P and N; then the
+// texture and fog, clamped and rounded to 8 bits.
 #pragma once
 
 #include <cstdint>
 #include <memory>
 
+#include "raster/fog.h"
 #include "raster/fragment_ops.h"
 #include "raster/lighting.h"
 #include "raster/texture.h"
@@ -29,6 +30,9 @@ struct ShadeState {
   // applied after lighting; null: untextured.
   int texcoord_slot = -1;
   std::shared_ptr<const TextureUnit> texture;
+  // Fog (raster/fog.h), applied after texturing: the slot of the fog coordinate (-1: no fog).
+  int fog_slot = -1;
+  FogParams fog;
 
   bool operator==(const ShadeState&) const = default;
 };

@@ -39,6 +39,8 @@ void pushAttrib(PFcontextRec& ctx, GLbitfield mask) {
   s.list_base = ctx.lists.base;
   s.fragment = ctx.fragment;
   s.texture = ctx.textures.a;
+  s.fog = ctx.fog;
+  s.clip = ctx.clip;
   try {
     ctx.attrib_stack.push_back(s);
   } catch (const std::bad_alloc&) {
@@ -91,7 +93,10 @@ void popAttrib(PFcontextRec& ctx) {
     t.enabled_2d = s.texture.enabled_2d;
     for (int k = 0; k < 4; ++k) t.gen[k].enabled = s.texture.gen[k].enabled;
     ctx.textures.dirty = true;
+    ctx.fog.enabled = s.fog.enabled;
+    std::copy(std::begin(s.clip.enabled), std::end(s.clip.enabled), ctx.clip.enabled);
   }
+  if (m & GL_FOG_BIT) ctx.fog = s.fog;  // (the enable included)
   if (m & GL_TEXTURE_BIT) {  // the bindings, the environment, the generation (enables included)
     ctx.textures.a = s.texture;
     // (A binding to a texture deleted since is the default texture's.)
@@ -110,8 +115,9 @@ void popAttrib(PFcontextRec& ctx) {
     ctx.cull_face = s.cull_face;
     ctx.front_face = s.front_face;
   }
-  if (m & GL_TRANSFORM_BIT) {
+  if (m & GL_TRANSFORM_BIT) {  // the matrix mode, the clip planes and their enables, normalising
     ctx.matrix_mode = s.matrix_mode;
+    ctx.clip = s.clip;
     l.normalize = s.lighting.normalize;
     l.rescale_normal = s.lighting.rescale_normal;
   }

@@ -34,6 +34,7 @@ struct Values {
 using Values4f = Values<GLfloat, 4>;
 using Values16f = Values<GLfloat, 16>;
 using Values16i = Values<GLint, 16>;
+using Values4d = Values<GLdouble, 4>;
 
 // Copies `n` values (at most N) from `p`, given as `count` (NULL: 0).
 template <class T, int N, class U>
@@ -79,6 +80,10 @@ Values<T, N> valuesOf(const U* p, int n, GLint count) {
   X(StencilOp, stencilOp, GLenum, GLenum, GLenum)                                         \
   X(StencilMask, stencilMask, GLuint)                                                     \
   X(ClearStencil, clearStencil, GLint)                                                    \
+  /* fog_clip_commands.cpp: glFog* as glLight* (count 1 scalar, 4 vector, 0 NULL), */        \
+  /* glClipPlane's equation as given                                               */        \
+  X(Fog, fog, GLenum, Values4f)                                                           \
+  X(ClipPlane, clipPlane, GLenum, Values4d)                                               \
   /* attrib_stack.cpp */                                                                  \
   X(PushAttrib, pushAttrib, GLbitfield)                                                   \
   X(PopAttrib, popAttrib)                                                                 \

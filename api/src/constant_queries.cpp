@@ -1,5 +1,5 @@
-// The GL 1.x state primflow holds constant, for glGet* (query.h): a program asking about fog,
-// texturing and the rest gets GL's answer for a context that has
+// The GL 1.x state primflow holds constant, for glGet* (query.h): a program asking about
+// evaluators, selection and the rest gets GL's answer for a context that has
 // never changed them (which in primflow cannot change), never GL_INVALID_ENUM; the absent
 // buffers have 0 bits. The conformance case state_queries_all compares these with OSMesa's in a
 // new context; the implementation limits at the end are primflow's own (docs/api.md).
@@ -51,20 +51,7 @@ constexpr Constant kConstants[] = {
     {GL_INDEX_ARRAY_BUFFER_BINDING, 1, {0}},
     {GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING, 1, {0}},
     {GL_EDGE_FLAG_ARRAY_BUFFER_BINDING, 1, {0}},
-    // Clip planes, fog, secondary colour.
-    {GL_CLIP_PLANE0, 1, {kFalse}, kCapability},
-    {GL_CLIP_PLANE1, 1, {kFalse}, kCapability},
-    {GL_CLIP_PLANE2, 1, {kFalse}, kCapability},
-    {GL_CLIP_PLANE3, 1, {kFalse}, kCapability},
-    {GL_CLIP_PLANE4, 1, {kFalse}, kCapability},
-    {GL_CLIP_PLANE5, 1, {kFalse}, kCapability},
-    {GL_FOG, 1, {kFalse}, kCapability},
-    {GL_FOG_COLOR, 4, {0, 0, 0, 0}, kNormalized},
-    {GL_FOG_INDEX, 1, {0}},
-    {GL_FOG_DENSITY, 1, {1}},
-    {GL_FOG_START, 1, {0}},
-    {GL_FOG_END, 1, {1}},
-    {GL_FOG_MODE, 1, {GL_EXP}},
+    // Fog coordinates (GL 1.4: the fragment depth is the one source) and the secondary colour.
     {GL_FOG_COORD_SRC, 1, {GL_FRAGMENT_DEPTH}},
     {GL_COLOR_SUM, 1, {kFalse}, kCapability},
     {GL_LIGHT_MODEL_COLOR_CONTROL, 1, {GL_SINGLE_COLOR}},
@@ -176,9 +163,8 @@ constexpr Constant kConstants[] = {
     {GL_SELECTION_BUFFER_SIZE, 1, {0}},
     {GL_FEEDBACK_BUFFER_SIZE, 1, {0}},
     {GL_FEEDBACK_BUFFER_TYPE, 1, {GL_2D}},
-    // primflow's limits for what it does not have (not OSMesa's): no clip planes, 3D or cube map textures,
+    // primflow's limits for what it does not have (not OSMesa's): no 3D or cube map textures,
     // evaluators or selection names; points and lines of size 1; pixel maps of their one entry.
-    {GL_MAX_CLIP_PLANES, 1, {0}},
     {GL_MAX_3D_TEXTURE_SIZE, 1, {0}},
     {GL_MAX_CUBE_MAP_TEXTURE_SIZE, 1, {0}},
     {GL_MAX_TEXTURE_UNITS, 1, {1}},

@@ -14,6 +14,7 @@
 #include <primflow/gl.h>
 
 #include "api/src/display_lists.h"
+#include "api/src/fog_clip.h"
 #include "api/src/textures.h"
 #include "api/src/vertex_lighting.h"
 #include "raster/lighting.h"
@@ -52,10 +53,12 @@ struct MatrixStack {
 // One per-vertex shading parameter of the instances of a glBegin: 4 channels from `first`.
 constexpr GLuint kEyePositionChannel = 0xfffffff0u;  // (x, y, z, 1) in eye coordinates
 constexpr GLuint kEyeNormalChannel = 0xfffffff1u;    // the eye-space normal (x, y, z, 0)
+constexpr GLuint kFogCoordChannel = 0xfffffff2u;     // fog: (|z| in eye coordinates, 0, 0, 0)
 
 struct ShadingChannel {
   // Name id; the colour's: its front (`back` false) or back (`back` true) lit colour. Or one of
-  // the two internal groups of per-pixel lit vertices (kEyePositionChannel, kEyeNormalChannel).
+  // the two internal groups of per-pixel lit vertices (kEyePositionChannel, kEyeNormalChannel),
+  // or the fog coordinate (kFogCoordChannel).
   GLuint param;
   bool back = false;
   InterpKind kind;
@@ -104,8 +107,8 @@ constexpr int kHintCount = 7;
 int hintIndex(GLenum target);
 
 // What glPushAttrib saves of the groups primflow has (GL 1.5 table 6.x's attribute column),
-// restored by glPopAttrib for the groups in `mask`. The state of groups it lacks (fog, stencil,
-// texturing, ...) is constant: nothing to save.
+// restored by glPopAttrib for the groups in `mask`. The state of groups it lacks (pixel maps,
+// evaluators, ...) is constant: nothing to save.
 struct AttribState {
   GLbitfield mask;
   glm::vec4 current_color;                           // GL_CURRENT_BIT
@@ -127,6 +130,8 @@ struct AttribState {
   FragmentState fragment;                            // GL_SCISSOR_BIT, GL_COLOR_BUFFER_BIT, GL_ENABLE_BIT,
                                                      // GL_STENCIL_BUFFER_BIT
   TextureAttribs texture;                            // GL_TEXTURE_BIT (the enables: GL_ENABLE_BIT too)
+  FogState fog;                                      // GL_FOG_BIT (the enable: GL_ENABLE_BIT too)
+  ClipPlaneState clip;                               // GL_TRANSFORM_BIT (the enables: GL_ENABLE_BIT too)
 };
 
 // glPixelStore's modes for one direction (GL 1.5 table 3.1): pack (glReadPixels writes by
@@ -228,6 +233,8 @@ struct PFcontextRec {
   pf::ClientArray vertex_array, color_array, normal_array, texcoord_array;
   pf::LightingState lighting;
   pf::TextureState textures;
+  pf::FogState fog;
+  pf::ClipPlaneState clip;
   pf::DisplayLists lists;
   GLenum hints[pf::kHintCount] = {GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE,
                                   GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE};
@@ -293,6 +300,11 @@ struct PFcontextRec {
   // the first channel of their texture coordinates.
   std::shared_ptr<const pf::TextureUnit> begin_texture;
   int texcoord_channel = -1;
+  // Fog (fog_clip.h): the first channel of the fog coordinate (-1: no fog), and the parameter
+  // whose eye-space z it is (the primitive's "vertex", else its first point parameter; 0: none,
+  // the coordinate 0).
+  int fog_channel = -1;
+  GLuint fog_position_param = 0;
   size_t rows_count = 0;
   std::vector<uint32_t> rows;
   std::vector<float> row_shading;  // row_channels floats per sequence point

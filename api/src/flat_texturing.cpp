@@ -1,7 +1,7 @@
-// glShadeModel(GL_FLAT) on a textured draw of a GL mode. GL flat-shades the colour only (GL 1.5
-// section 2.14.7): texture coordinates are still interpolated. The primitives' flat_shading()
+// glShadeModel(GL_FLAT) on a textured or fogged draw of a GL mode. GL flat-shades the colour only
+// (GL 1.5 section 2.14.7): texture and fog coordinates are still interpolated. The primitives' flat_shading()
 // takes the provoking vertex's value for every channel of a kind, which would flatten the
-// texture coordinates too; so for such a draw the API gives every vertex of each triangle, quad
+// texture and fog coordinates too; so for such a draw the API gives every vertex of each triangle, quad
 // or line the colour of that part's provoking vertex itself and draws it smooth. Strips, fans,
 // quad strips and line strips and loops share vertices between parts, so they are drawn as the
 // independent mode (GL_TRIANGLES, GL_QUADS, GL_LINES) with each part's vertices in the order the
@@ -36,7 +36,7 @@ bool sameFeed(const CompiledPrimitive& a, const CompiledPrimitive& b) {
 }  // namespace
 
 bool flattenForTexturing(PFcontextRec& ctx) {
-  if (!ctx.begin_texture || ctx.color_channel < 0) return false;
+  if ((!ctx.begin_texture && ctx.fog_channel < 0) || ctx.color_channel < 0) return false;
   const size_t n = ctx.rows_count;
   // Each output row: the row it copies and the row whose colour it takes.
   std::vector<std::pair<size_t, size_t>> order;

@@ -43,6 +43,7 @@ float clamp01(double v) { return v > 0 ? (v < 1 ? static_cast<float>(v) : 1.0f) 
 // texture coordinate generation.
 bool* capability(PFcontextRec& ctx, GLenum cap) {
   if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + pf::kMaxLights) return &ctx.lighting.lights[cap - GL_LIGHT0].enabled;
+  if (cap >= GL_CLIP_PLANE0 && cap < GL_CLIP_PLANE0 + pf::kMaxClipPlanes) return &ctx.clip.enabled[cap - GL_CLIP_PLANE0];
   switch (cap) {
     case GL_DEPTH_TEST: return &ctx.depth_test;
     case GL_CULL_FACE: return &ctx.cull;
@@ -57,6 +58,7 @@ bool* capability(PFcontextRec& ctx, GLenum cap) {
     case GL_COLOR_LOGIC_OP: return &ctx.fragment.logic_op;
     case GL_DITHER: return &ctx.fragment.dither;
     case GL_STENCIL_TEST: return &ctx.fragment.stencil_test;
+    case GL_FOG: return &ctx.fog.enabled;
     case GL_TEXTURE_1D: return &ctx.textures.a.enabled_1d;
     case GL_TEXTURE_2D: return &ctx.textures.a.enabled_2d;
     case GL_TEXTURE_GEN_S: return &ctx.textures.a.gen[0].enabled;
@@ -148,6 +150,7 @@ pf::RasterState PFcontextRec::rasterState() const {
     s.inv_modelview[k] = finite(inv_mv[k / 4][k % 4]);
     s.modelview[k] = modelview.top[k / 4][k % 4];
   }
+  pf::windowClipPlanes(clip, s.projection, s);
   return s;
 }
 

@@ -149,7 +149,8 @@ constexpr size_t kInstancesPerChunk = 1024 * pf::kSetupBatchLanes;
 // Hands the rows to the renderer: for a primitive with a fixed count, one instance per
 // `sequence_points` rows; for one with parameter-sized arrays, one instance holding them all.
 void submitInstances(PFcontextRec& ctx) {
-  // Textured and flat: colours flattened here, texture coordinates interpolated (flat_texturing.cpp).
+  // Textured or fogged and flat: colours flattened here, texture and fog coordinates interpolated
+  // (flat_texturing.cpp).
   const bool flattened = ctx.shade_model == GL_FLAT && pf::flattenForTexturing(ctx);
   const pf::CompiledPrimitive& prim = *ctx.begin_primitive;
   const size_t total = ctx.rows_count;
@@ -168,6 +169,10 @@ void submitInstances(PFcontextRec& ctx) {
     if (ctx.begin_texture) {
       shade.texture = ctx.begin_texture;
       shade.texcoord_slot = layout.gbuffer_slot[static_cast<size_t>(ctx.texcoord_channel)];
+    }
+    if (ctx.fog_channel >= 0) {
+      shade.fog_slot = layout.gbuffer_slot[static_cast<size_t>(ctx.fog_channel)];
+      shade.fog = pf::fogParams(ctx.fog);
     }
   } else {
     for (int k = 0; k < 4; ++k) shade.constant_color[k] = ctx.current_color[k];

@@ -2,12 +2,36 @@
 #include "api/src/shading_channels.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <glm/glm.hpp>
 
 #include "api/src/context_state.h"
 
 namespace pf {
+namespace {
+
+// The fog coordinate of the current sequence point: |z| of its position in eye coordinates (the
+// modelview's third row times the position, not divided by w: Mesa's fixed-function vertex
+// program, GL_EYE_PLANE_ABSOLUTE_NV), 0 for a primitive without a position parameter.
+float fogCoordinate(const PFcontextRec& ctx) {
+  if (ctx.fog_position_param == 0) return 0.0f;
+  const ParamValue& v = ctx.param(ctx.fog_position_param);
+  const glm::vec4 p(static_cast<float>(v.v[0]), static_cast<float>(v.v[1]), v.count > 2 ? static_cast<float>(v.v[2]) : 0.0f,
+                    v.count > 3 ? static_cast<float>(v.v[3]) : 1.0f);
+  return std::fabs((ctx.begin_modelview * p).z);
+}
+
+// The parameter whose position fog measures: the primitive's "vertex", else its first point
+// parameter given per sequence point (a sphere's centre); 0: none.
+GLuint fogPositionParam(PFcontextRec& ctx, const CompiledPrimitive& prim) {
+  if (prim.findParam("vertex")) return ctx.vertex_param;
+  for (const ParamInfo& p : prim.params)
+    if (p.per_sequence_point && p.type.base == BaseType::Point) return ctx.paramId(p.name);
+  return 0;
+}
+
+}  // namespace
 
 void flushVertexLighting(PFcontextRec& ctx) {
   ctx.vertex_lighting.flush(*ctx.begin_equation, {ctx.row_shading.data(), static_cast<size_t>(ctx.row_channels),
@@ -45,6 +69,11 @@ void rowChannels(PFcontextRec& ctx) {
   }
   for (const ShadingChannel& s : ctx.shading) {
     float* dst = out + s.first;
+    if (s.param == kFogCoordChannel) {
+      dst[0] = fogCoordinate(ctx);
+      dst[1] = dst[2] = dst[3] = 0.0f;
+      continue;
+    }
     if (s.param == kEyePositionChannel || s.param == kEyeNormalChannel) {
       const glm::vec3& v = s.param == kEyePositionChannel ? eye : n;
       for (int k = 0; k < 3; ++k) dst[k] = v[k];
@@ -75,7 +104,8 @@ void rowChannels(PFcontextRec& ctx) {
 // channels each, ordered by interpolation kind as ChannelLayout wants.
 void planShading(PFcontextRec& ctx, GLenum mode, const CompiledPrimitive& prim) {
   ctx.shading.clear();
-  ctx.color_channel = ctx.back_color_channel = ctx.texcoord_channel = -1;
+  ctx.color_channel = ctx.back_color_channel = ctx.texcoord_channel = ctx.fog_channel = -1;
+  ctx.fog_position_param = 0;
   // Cleared, not rebuilt: a glBegin per triangle must not allocate (their capacity stays).
   ChannelLayout& layout = ctx.begin_layout;
   layout.count = 0;
@@ -108,6 +138,12 @@ void planShading(PFcontextRec& ctx, GLenum mode, const CompiledPrimitive& prim) 
       for (GLuint internal : {kEyePositionChannel, kEyeNormalChannel})
         ctx.shading.push_back(
             {internal, false, InterpKind::PerspectiveLinear, 4 * static_cast<int>(ctx.shading.size()), nullptr});
+    }
+    if (kind == static_cast<int>(InterpKind::PerspectiveLinear) && ctx.fog.enabled) {
+      // Fog: the fog coordinate, interpolated perspective-correct (as llvmpipe interpolates it).
+      ctx.fog_channel = 4 * static_cast<int>(ctx.shading.size());
+      ctx.fog_position_param = fogPositionParam(ctx, prim);
+      ctx.shading.push_back({kFogCoordChannel, false, InterpKind::PerspectiveLinear, ctx.fog_channel, nullptr});
     }
     for (const auto& [param, interpolator] : bound) {
       const CompiledPrimitive* shared = ctx.primitives.interpolator(interpolator);

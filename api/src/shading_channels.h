@@ -2,7 +2,8 @@
 // section 3.1; 4 floats each, in every sequence point's row and in the G-buffer) and where each
 // goes (planShading), and each sequence point's values of them (rowChannels) -- the colour GL's
 // lit colour where lighting applies, lit a batch at a time (flushVertexLighting,
-// vertex_lighting.h), the texture coordinates generated and transformed where a texture is on.
+// vertex_lighting.h), the texture coordinates generated and transformed where a texture is on,
+// the fog coordinate where fog is on.
 #pragma once
 
 #include <GL/gl.h>

@@ -175,7 +175,7 @@ bool query(const PFcontextRec& ctx, GLenum pname, Query& q) {
       return true;
     }
     default:
-      if (fragmentQuery(ctx.fragment, pname, q)) return true;
+      if (fragmentQuery(ctx.fragment, pname, q) || pf::fogClipQuery(ctx, pname, q)) return true;
       if (pname >= GL_LIGHT0 && pname < GL_LIGHT0 + pf::kMaxLights) {
         set({ctx.lighting.lights[pname - GL_LIGHT0].enabled ? 1.0 : 0.0});
         return true;
@@ -204,11 +204,12 @@ const Query* lookup(GLenum pname, Query& q) {
   return &q;
 }
 
-// Rounded to nearest; a normalised value v as v * (2^31 - 1) truncated toward zero, as Mesa
-// does (0.5 reads 1073741823).
+// Rounded to nearest, a half away from zero (Mesa's IROUND: a fog start of 2.5 reads 3, -0.5
+// reads -1); a normalised value v as v * (2^31 - 1) truncated toward zero, as Mesa does (0.5
+// reads 1073741823).
 GLint toInt(double v, bool normalized) {
   if (v != v) return 0;  // NaN
-  double r = normalized ? std::trunc(v * 2147483647.0) : std::nearbyint(v);
+  double r = normalized ? std::trunc(v * 2147483647.0) : std::round(v);
   return static_cast<GLint>(std::clamp(r, -2147483648.0, 2147483647.0));
 }
 

@@ -85,7 +85,15 @@ struct NativeBlockArgs {
   uint32_t iteration_cap = 0;
   uint32_t depth_pass = 0;   // kDepthPass* bits
   uint32_t depth_write = 0;  // 1: ZCommit writes (a depth buffer, the depth test on, depth writes on)
+  // User clip planes ztest() applies: clip_plane_count window-space planes (a, b, c, d), 4 floats
+  // each (raster's RasterState::clip_planes); a fragment at (X, Y, z) passes where
+  // ((a * X + b * Y) + c * z) + d >= 0 for every one.
+  const float* clip_planes = nullptr;
+  uint32_t clip_plane_count = 0;
 };
+
+// The most clip planes NativeBlockArgs::clip_planes holds (RasterState::kMaxClipPlanes).
+constexpr int kNativeMaxClipPlanes = 8;
 
 // A compiled pixel program: returns the lanes that committed (alive at the end).
 using NativePixelFunction = uint64_t (*)(NativeBlockArgs* args);

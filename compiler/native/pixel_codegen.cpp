@@ -108,6 +108,8 @@ llvm::Function* PixelCodegen::build(const std::string& name, const PixelProgram&
   shade_id_ = argField(offsetof(NativeBlockArgs, shade_id), i32, "shade_id");
   iteration_cap_ = argField(offsetof(NativeBlockArgs, iteration_cap), i32, "iteration_cap");
   depth_pass_ = argField(offsetof(NativeBlockArgs, depth_pass), i32, "depth_pass");
+  clip_planes_ = argField(offsetof(NativeBlockArgs, clip_planes), ptr, "clip_planes");
+  clip_count_ = argField(offsetof(NativeBlockArgs, clip_plane_count), i32, "clip_plane_count");
   depth_write_ = b_.CreateICmpNE(argField(offsetof(NativeBlockArgs, depth_write), i32, "depth_write"), b_.getInt32(0));
   has_depth_ = b_.CreateICmpNE(depth_, llvm::ConstantPointerNull::get(b_.getPtrTy()), "has_depth");
   packed_ = variant_.gang ? b_.getTrue() : b_.CreateICmpNE(lane_x_, llvm::ConstantPointerNull::get(b_.getPtrTy()), "packed");
@@ -395,7 +397,47 @@ void PixelCodegen::emitInstruction(Env& env, size_t pc, const Instr& in, std::ma
                       b_.CreateAnd(passes(kDepthPassEqual), b_.CreateFCmpOEQ(z, zb))),
           b_.CreateOr(b_.CreateAnd(passes(kDepthPassGreater), b_.CreateFCmpOLT(zb, z)),
                       b_.CreateAnd(passes(kDepthPassUnordered), b_.CreateFCmpUNO(z, zb))));
-      setReg(env, in.dst, b_.CreateZExt(r, iv_), true);
+      // User clip planes, when there are any: a fragment they clip fails -- the interpreter's
+      // RasterState::clipKeeps, operation for operation ((a X + b Y) + c z) + d >= 0.
+      // (X and Y read before the branch: a register's value may be reused after it.)
+      llvm::Value* x = b_.CreateBitCast(operand(env, makeOperand(OperandKind::Reg, kRegX)), fv_);
+      llvm::Value* y = b_.CreateBitCast(operand(env, makeOperand(OperandKind::Reg, kRegY)), fv_);
+      llvm::BasicBlock* unclipped = b_.GetInsertBlock();
+      llvm::BasicBlock* clipping = continueIn("clip");
+      llvm::BasicBlock* clipped = continueIn("clipped");
+      b_.CreateCondBr(b_.CreateICmpNE(clip_count_, b_.getInt32(0)), clipping, clipped);
+      b_.SetInsertPoint(clipping);
+      llvm::Value* kept = r;
+      for (int p = 0; p < kNativeMaxClipPlanes; ++p) {
+        auto coefficient = [&](int k) {
+          llvm::Value* at = b_.CreateConstGEP1_32(b_.getFloatTy(), clip_planes_, static_cast<unsigned>(4 * p + k));
+          return b_.CreateVectorSplat(width_, b_.CreateLoad(b_.getFloatTy(), at));
+        };
+        llvm::Value* active = b_.CreateICmpULT(b_.getInt32(static_cast<uint32_t>(p)), clip_count_);
+        llvm::BasicBlock* plane = continueIn("clip.plane");
+        llvm::BasicBlock* next = continueIn("clip.next");
+        llvm::BasicBlock* from = b_.GetInsertBlock();
+        b_.CreateCondBr(active, plane, next);
+        b_.SetInsertPoint(plane);
+        llvm::Value* sum = b_.CreateFAdd(b_.CreateFMul(coefficient(0), x), b_.CreateFMul(coefficient(1), y));
+        sum = b_.CreateFAdd(sum, b_.CreateFMul(coefficient(2), z));
+        sum = b_.CreateFAdd(sum, coefficient(3));
+        llvm::Value* this_kept = b_.CreateAnd(kept, b_.CreateFCmpOGE(sum, splatF(0.0f)));
+        llvm::BasicBlock* plane_end = b_.GetInsertBlock();
+        b_.CreateBr(next);
+        b_.SetInsertPoint(next);
+        llvm::PHINode* merged = b_.CreatePHI(kept->getType(), 2);
+        merged->addIncoming(kept, from);
+        merged->addIncoming(this_kept, plane_end);
+        kept = merged;
+      }
+      llvm::BasicBlock* clipping_end = b_.GetInsertBlock();
+      b_.CreateBr(clipped);
+      b_.SetInsertPoint(clipped);
+      llvm::PHINode* result = b_.CreatePHI(r->getType(), 2);
+      result->addIncoming(r, unclipped);
+      result->addIncoming(kept, clipping_end);
+      setReg(env, in.dst, b_.CreateZExt(result, iv_), true);
       return;
     }
     case Op::ZCommit:

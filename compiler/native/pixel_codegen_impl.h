@@ -127,6 +127,8 @@ class PixelCodegen {
   llvm::Value* shade_id_ = nullptr;
   llvm::Value* iteration_cap_ = nullptr;
   llvm::Value* depth_pass_ = nullptr;   // i32: kDepthPass* bits
+  llvm::Value* clip_planes_ = nullptr;  // ptr: NativeBlockArgs::clip_planes
+  llvm::Value* clip_count_ = nullptr;   // i32: NativeBlockArgs::clip_plane_count
   llvm::Value* depth_write_ = nullptr;  // i1
   llvm::Value* has_depth_ = nullptr;    // i1: a depth buffer
   llvm::Value* packed_ = nullptr;       // i1: packed lanes (always, in a gang variant)

@@ -46,7 +46,8 @@ GLenum aMode(FuzzedDataProvider& in) {
 GLenum aCapability(FuzzedDataProvider& in) {
   static const GLenum kCaps[] = {GL_DEPTH_TEST, GL_CULL_FACE,   GL_LIGHTING,   GL_LIGHT0,         GL_LIGHT7,
                                  GL_NORMALIZE,  GL_COLOR_MATERIAL, GL_SCISSOR_TEST, GL_TEXTURE_2D,  0x1234,  GL_TEXTURE_1D,
-                                 GL_BLEND,      GL_ALPHA_TEST,  GL_STENCIL_TEST, GL_COLOR_LOGIC_OP, GL_DITHER};
+                                 GL_BLEND,      GL_ALPHA_TEST,  GL_STENCIL_TEST, GL_COLOR_LOGIC_OP, GL_DITHER,
+                                 GL_FOG,        GL_CLIP_PLANE0, GL_CLIP_PLANE0 + 7,  GL_CLIP_PLANE0 + 8};
   return kCaps[in.ConsumeIntegralInRange<size_t>(0, sizeof(kCaps) / sizeof(kCaps[0]) - 1)];
 }
 
@@ -221,8 +222,31 @@ void textureState(FuzzedDataProvider& in) {
   }
 }
 
+// Fog and clip planes, any values: every fog pname (and others) with any floats or integers, the
+// vector forms with a NULL pointer too; planes in and out of range, any equations (NaN, inf,
+// zero), read back.
+void fogClipState(FuzzedDataProvider& in) {
+  const GLenum pname = in.ConsumeBool() ? in.ConsumeIntegralInRange<GLenum>(GL_FOG_INDEX, GL_FOG_MODE)
+                                        : in.ConsumeIntegral<GLenum>();
+  const float v[4] = {aFloat(in), aFloat(in), aFloat(in), aFloat(in)};
+  const GLint iv[4] = {in.ConsumeIntegral<GLint>(), in.ConsumeIntegral<GLint>(), in.ConsumeIntegral<GLint>(),
+                       in.ConsumeIntegral<GLint>()};
+  const GLenum plane = GL_CLIP_PLANE0 + in.ConsumeIntegralInRange<GLenum>(0, 9) - 1;
+  const double eq[4] = {aFloat(in), aFloat(in), aFloat(in), aFloat(in)};
+  double back[4];
+  switch (in.ConsumeIntegralInRange<int>(0, 6)) {
+    case 0: pfglFogf(pname, v[0]); break;
+    case 1: pfglFogi(pname, iv[0]); break;
+    case 2: pfglFogfv(pname, in.ConsumeBool() ? v : nullptr); break;
+    case 3: pfglFogiv(pname, in.ConsumeBool() ? iv : nullptr); break;
+    case 4: pfglFogi(GL_FOG_MODE, static_cast<GLint>(in.ConsumeBool() ? GL_LINEAR : GL_EXP2)); break;
+    case 5: pfglClipPlane(plane, in.ConsumeBool() ? eq : nullptr); break;
+    default: pfglGetClipPlane(plane, in.ConsumeBool() ? back : nullptr); break;
+  }
+}
+
 void oneCall(FuzzedDataProvider& in, bool& huge_drawn) {
-  switch (in.ConsumeIntegralInRange<int>(0, 22)) {
+  switch (in.ConsumeIntegralInRange<int>(0, 23)) {
     case 0: oneBegin(in, in.ConsumeBool()); break;
     case 19: hugeBegin(in, huge_drawn); break;
     case 1: pfglBegin(in.ConsumeIntegral<GLenum>()); break;  // any enum, a primitive's mode or none
@@ -268,6 +292,7 @@ void oneCall(FuzzedDataProvider& in, bool& huge_drawn) {
     }
     case 20: fragmentState(in); break;
     case 21: textureState(in); break;
+    case 22: fogClipState(in); break;
     default: pfglFinish(); break;
   }
 }

@@ -52,6 +52,18 @@ void pfglStencilOp(GLenum fail, GLenum zfail, GLenum zpass);
 void pfglStencilMask(GLuint mask);
 void pfglClearStencil(GLint s);
 
+/* Fog (GL 1.5 section 3.10): GL_FOG_MODE (GL_LINEAR, GL_EXP, GL_EXP2), GL_FOG_DENSITY,
+ * GL_FOG_START, GL_FOG_END, GL_FOG_COLOR, GL_FOG_INDEX; applied per pixel after texturing from
+ * |z| in eye coordinates. User clip planes (section 2.11): GL_CLIP_PLANE0 .. GL_CLIP_PLANE7, each
+ * kept in eye coordinates, applied per pixel by the depth test (docs/api.md, "Fog" and "Clip
+ * planes"). */
+void pfglFogf(GLenum pname, GLfloat param);
+void pfglFogi(GLenum pname, GLint param);
+void pfglFogfv(GLenum pname, const GLfloat *params);
+void pfglFogiv(GLenum pname, const GLint *params);
+void pfglClipPlane(GLenum plane, const GLdouble *equation);
+void pfglGetClipPlane(GLenum plane, GLdouble *equation);
+
 /* Hints: kept and read back (nothing primflow draws depends on them). Attribute stacks, 16 deep:
  * the groups primflow has (docs/api.md, "Attribute stacks"); glPushAttrib / glPopAttrib are
  * recorded in display lists, the client forms are not. */

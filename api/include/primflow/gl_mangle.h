@@ -38,6 +38,12 @@
 #define glFrontFace pfglFrontFace
 #define glShadeModel pfglShadeModel
 #define glHint pfglHint
+#define glFogf pfglFogf
+#define glFogi pfglFogi
+#define glFogfv pfglFogfv
+#define glFogiv pfglFogiv
+#define glClipPlane pfglClipPlane
+#define glGetClipPlane pfglGetClipPlane
 #define glScissor pfglScissor
 #define glAlphaFunc pfglAlphaFunc
 #define glBlendFunc pfglBlendFunc

@@ -18,8 +18,6 @@
 #define glGetPolygonStipple _Pragma("GCC error \"primflow does not implement glGetPolygonStipple\"") pf_unsupported_glGetPolygonStipple
 #define glEdgeFlag _Pragma("GCC error \"primflow does not implement glEdgeFlag\"") pf_unsupported_glEdgeFlag
 #define glEdgeFlagv _Pragma("GCC error \"primflow does not implement glEdgeFlagv\"") pf_unsupported_glEdgeFlagv
-#define glClipPlane _Pragma("GCC error \"primflow does not implement glClipPlane\"") pf_unsupported_glClipPlane
-#define glGetClipPlane _Pragma("GCC error \"primflow does not implement glGetClipPlane\"") pf_unsupported_glGetClipPlane
 #define glDrawBuffer _Pragma("GCC error \"primflow does not implement glDrawBuffer\"") pf_unsupported_glDrawBuffer
 #define glReadBuffer _Pragma("GCC error \"primflow does not implement glReadBuffer\"") pf_unsupported_glReadBuffer
 #define glRenderMode _Pragma("GCC error \"primflow does not implement glRenderMode\"") pf_unsupported_glRenderMode
@@ -98,10 +96,6 @@
 #define glEvalPoint2 _Pragma("GCC error \"primflow does not implement glEvalPoint2\"") pf_unsupported_glEvalPoint2
 #define glEvalMesh1 _Pragma("GCC error \"primflow does not implement glEvalMesh1\"") pf_unsupported_glEvalMesh1
 #define glEvalMesh2 _Pragma("GCC error \"primflow does not implement glEvalMesh2\"") pf_unsupported_glEvalMesh2
-#define glFogf _Pragma("GCC error \"primflow does not implement glFogf\"") pf_unsupported_glFogf
-#define glFogi _Pragma("GCC error \"primflow does not implement glFogi\"") pf_unsupported_glFogi
-#define glFogfv _Pragma("GCC error \"primflow does not implement glFogfv\"") pf_unsupported_glFogfv
-#define glFogiv _Pragma("GCC error \"primflow does not implement glFogiv\"") pf_unsupported_glFogiv
 #define glFeedbackBuffer _Pragma("GCC error \"primflow does not implement glFeedbackBuffer\"") pf_unsupported_glFeedbackBuffer
 #define glPassThrough _Pragma("GCC error \"primflow does not implement glPassThrough\"") pf_unsupported_glPassThrough
 #define glSelectBuffer _Pragma("GCC error \"primflow does not implement glSelectBuffer\"") pf_unsupported_glSelectBuffer
