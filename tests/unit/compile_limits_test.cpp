@@ -4,31 +4,16 @@
 // runs on a thread with a 1 MB stack, an application's worker thread's, not the main thread's 8 MB
 // (8 MB under the sanitizers, whose frames are several times larger).
 #include <gtest/gtest.h>
-#include <pthread.h>
 
 #include <functional>
 #include <string>
 
 #include "compile_helpers.h"
 #include "compiler/sanitizers.h"
+#include "unit/on_stack.h"
 
 namespace pf::test {
 namespace {
-
-// Runs `work` on a new thread whose stack is `bytes`, and waits for it.
-void onStack(size_t bytes, const std::function<void()>& work) {
-  pthread_attr_t attr;
-  ASSERT_EQ(pthread_attr_init(&attr), 0);
-  ASSERT_EQ(pthread_attr_setstacksize(&attr, bytes), 0);
-  pthread_t thread;
-  auto run = [](void* arg) -> void* {
-    (*static_cast<const std::function<void()>*>(arg))();
-    return nullptr;
-  };
-  ASSERT_EQ(pthread_create(&thread, &attr, run, const_cast<std::function<void()>*>(&work)), 0);
-  pthread_join(thread, nullptr);
-  pthread_attr_destroy(&attr);
-}
 
 // An application thread's stack: 1 MB. Under the sanitizers every frame is several times larger
 // (the analyzer's recursive expr() is 6.8 KB under ASan, 0.3 KB without), so those builds test
