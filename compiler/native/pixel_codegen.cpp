@@ -397,47 +397,7 @@ void PixelCodegen::emitInstruction(Env& env, size_t pc, const Instr& in, std::ma
                       b_.CreateAnd(passes(kDepthPassEqual), b_.CreateFCmpOEQ(z, zb))),
           b_.CreateOr(b_.CreateAnd(passes(kDepthPassGreater), b_.CreateFCmpOLT(zb, z)),
                       b_.CreateAnd(passes(kDepthPassUnordered), b_.CreateFCmpUNO(z, zb))));
-      // User clip planes, when there are any: a fragment they clip fails -- the interpreter's
-      // RasterState::clipKeeps, operation for operation ((a X + b Y) + c z) + d >= 0.
-      // (X and Y read before the branch: a register's value may be reused after it.)
-      llvm::Value* x = b_.CreateBitCast(operand(env, makeOperand(OperandKind::Reg, kRegX)), fv_);
-      llvm::Value* y = b_.CreateBitCast(operand(env, makeOperand(OperandKind::Reg, kRegY)), fv_);
-      llvm::BasicBlock* unclipped = b_.GetInsertBlock();
-      llvm::BasicBlock* clipping = continueIn("clip");
-      llvm::BasicBlock* clipped = continueIn("clipped");
-      b_.CreateCondBr(b_.CreateICmpNE(clip_count_, b_.getInt32(0)), clipping, clipped);
-      b_.SetInsertPoint(clipping);
-      llvm::Value* kept = r;
-      for (int p = 0; p < kNativeMaxClipPlanes; ++p) {
-        auto coefficient = [&](int k) {
-          llvm::Value* at = b_.CreateConstGEP1_32(b_.getFloatTy(), clip_planes_, static_cast<unsigned>(4 * p + k));
-          return b_.CreateVectorSplat(width_, b_.CreateLoad(b_.getFloatTy(), at));
-        };
-        llvm::Value* active = b_.CreateICmpULT(b_.getInt32(static_cast<uint32_t>(p)), clip_count_);
-        llvm::BasicBlock* plane = continueIn("clip.plane");
-        llvm::BasicBlock* next = continueIn("clip.next");
-        llvm::BasicBlock* from = b_.GetInsertBlock();
-        b_.CreateCondBr(active, plane, next);
-        b_.SetInsertPoint(plane);
-        llvm::Value* sum = b_.CreateFAdd(b_.CreateFMul(coefficient(0), x), b_.CreateFMul(coefficient(1), y));
-        sum = b_.CreateFAdd(sum, b_.CreateFMul(coefficient(2), z));
-        sum = b_.CreateFAdd(sum, coefficient(3));
-        llvm::Value* this_kept = b_.CreateAnd(kept, b_.CreateFCmpOGE(sum, splatF(0.0f)));
-        llvm::BasicBlock* plane_end = b_.GetInsertBlock();
-        b_.CreateBr(next);
-        b_.SetInsertPoint(next);
-        llvm::PHINode* merged = b_.CreatePHI(kept->getType(), 2);
-        merged->addIncoming(kept, from);
-        merged->addIncoming(this_kept, plane_end);
-        kept = merged;
-      }
-      llvm::BasicBlock* clipping_end = b_.GetInsertBlock();
-      b_.CreateBr(clipped);
-      b_.SetInsertPoint(clipped);
-      llvm::PHINode* result = b_.CreatePHI(r->getType(), 2);
-      result->addIncoming(r, unclipped);
-      result->addIncoming(kept, clipping_end);
-      setReg(env, in.dst, b_.CreateZExt(result, iv_), true);
+      setReg(env, in.dst, b_.CreateZExt(keptByClipPlanes(env, r, z), iv_), true);
       return;
     }
     case Op::ZCommit:
@@ -563,6 +523,49 @@ void PixelCodegen::emitShared(Env& env, const Instr& in) {
   }
   b_.CreateBr(after);
   b_.SetInsertPoint(after);
+}
+
+// The lanes of `passed` that the user clip planes keep, for fragments at depth `z`: the
+// interpreter's RasterState::clipKeeps, operation for operation ((a X + b Y) + c z) + d >= 0.
+// No plane enabled (the usual case): one branch past all of it.
+llvm::Value* PixelCodegen::keptByClipPlanes(Env& env, llvm::Value* passed, llvm::Value* z) {
+  // (X and Y read before the branch: a register's value may be reused after it.)
+  llvm::Value* x = b_.CreateBitCast(operand(env, makeOperand(OperandKind::Reg, kRegX)), fv_);
+  llvm::Value* y = b_.CreateBitCast(operand(env, makeOperand(OperandKind::Reg, kRegY)), fv_);
+  // Runs `body` (returning a new value) when `condition` holds, else keeps `value`.
+  auto when = [&](llvm::Value* condition, llvm::Value* value, const char* name,
+                  const std::function<llvm::Value*()>& body) -> llvm::Value* {
+    llvm::BasicBlock* from = b_.GetInsertBlock();
+    llvm::BasicBlock* then = llvm::BasicBlock::Create(ctx_, name, fn_);
+    llvm::BasicBlock* join = llvm::BasicBlock::Create(ctx_, "clip.join", fn_);
+    b_.CreateCondBr(condition, then, join);
+    b_.SetInsertPoint(then);
+    llvm::Value* changed = body();
+    llvm::BasicBlock* then_end = b_.GetInsertBlock();
+    b_.CreateBr(join);
+    b_.SetInsertPoint(join);
+    llvm::PHINode* merged = b_.CreatePHI(value->getType(), 2);
+    merged->addIncoming(value, from);
+    merged->addIncoming(changed, then_end);
+    return merged;
+  };
+  return when(b_.CreateICmpNE(clip_count_, b_.getInt32(0)), passed, "clip", [&] {
+    llvm::Value* kept = passed;
+    for (int p = 0; p < kNativeMaxClipPlanes; ++p) {
+      llvm::Value* active = b_.CreateICmpULT(b_.getInt32(static_cast<uint32_t>(p)), clip_count_);
+      kept = when(active, kept, "clip.plane", [&] {
+        auto coefficient = [&](int k) {
+          llvm::Value* at = b_.CreateConstGEP1_32(b_.getFloatTy(), clip_planes_, static_cast<unsigned>(4 * p + k));
+          return b_.CreateVectorSplat(width_, b_.CreateLoad(b_.getFloatTy(), at));
+        };
+        llvm::Value* sum = b_.CreateFAdd(b_.CreateFMul(coefficient(0), x), b_.CreateFMul(coefficient(1), y));
+        sum = b_.CreateFAdd(sum, b_.CreateFMul(coefficient(2), z));
+        sum = b_.CreateFAdd(sum, coefficient(3));
+        return b_.CreateAnd(kept, b_.CreateFCmpOGE(sum, splatF(0.0f)));
+      });
+    }
+    return kept;
+  });
 }
 
 }  // namespace pf

@@ -51,6 +51,8 @@ class PixelCodegen {
   void startProgram(Env& env, llvm::Value* in_mask, llvm::Value* const* p_in);
   void emitProgram(Env& env);
   void emitInstruction(Env& env, size_t pc, const Instr& in, std::map<size_t, llvm::BasicBlock*>& blocks);
+  // The lanes of `passed` (a depth test's result) that the user clip planes keep at depth `z`.
+  llvm::Value* keptByClipPlanes(Env& env, llvm::Value* passed, llvm::Value* z);
   void emitShared(Env& env, const Instr& in);
   llvm::AllocaInst* entryAlloca(llvm::Type* t, const char* name);
 
