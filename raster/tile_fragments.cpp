@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "raster/fragment_ops.h"
 #include "raster/renderer.h"
 
 namespace pf {
@@ -31,7 +32,8 @@ void Renderer::clearTile(int x0, int y0, int w, int h) {
   const size_t stride = static_cast<size_t>(width_);
   if (scene_.clear.color) {
     uint8_t c[4];
-    for (int k = 0; k < 4; ++k) c[k] = toUnorm8(scene_.clear.rgba[k]);
+    // (Rounded a tie to even, as llvmpipe packs its clear colour: 0.5 / 255 clears to 0.)
+    for (int k = 0; k < 4; ++k) c[k] = toUnorm8Even(scene_.clear.rgba[k]);
     const uint8_t mask = scene_.clear.color_mask;
     uint8_t* const color = color_;
     uint32_t pixel;
