@@ -117,8 +117,11 @@ GLAPI OSMesaContext GLAPIENTRY OSMesaCreateContextAttribs(const int* attribList,
   if (!c) return nullptr;
   c->format = format;
   c->depth_bits = depthBitsFor(depth, stencil);
-  const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, c->depth_bits, PF_STENCIL_BITS, stencil, 0};
-  c->pf = pfCreateContextAttribs(attribs);  // (an 8-bit stencil buffer for any stencil bits, as OSMesa)
+  const int attribs[] = {PF_FORMAT,       GL_RGBA, PF_DEPTH_BITS, c->depth_bits, PF_STENCIL_BITS,
+                         stencil,         PF_ACCUM_BITS, accum, 0};
+  // (An 8-bit stencil buffer for any stencil bits, a 16-bit accumulation buffer for any accum
+  // bits, as OSMesa.)
+  c->pf = pfCreateContextAttribs(attribs);
   if (!c->pf) {
     delete c;
     return nullptr;

@@ -41,6 +41,7 @@ void pushAttrib(PFcontextRec& ctx, GLbitfield mask) {
   s.texture = ctx.textures.a;
   s.fog = ctx.fog;
   s.clip = ctx.clip;
+  std::copy(std::begin(ctx.accum_clear), std::end(ctx.accum_clear), s.accum_clear);
   try {
     ctx.attrib_stack.push_back(s);
   } catch (const std::bad_alloc&) {
@@ -97,6 +98,7 @@ void popAttrib(PFcontextRec& ctx) {
     std::copy(std::begin(s.clip.enabled), std::end(s.clip.enabled), ctx.clip.enabled);
   }
   if (m & GL_FOG_BIT) ctx.fog = s.fog;  // (the enable included)
+  if (m & GL_ACCUM_BUFFER_BIT) std::copy(std::begin(s.accum_clear), std::end(s.accum_clear), ctx.accum_clear);
   if (m & GL_TEXTURE_BIT) {  // the bindings, the environment, the generation (enables included)
     ctx.textures.a = s.texture;
     // (A binding to a texture deleted since is the default texture's.)

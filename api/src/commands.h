@@ -84,6 +84,9 @@ Values<T, N> valuesOf(const U* p, int n, GLint count) {
   /* glClipPlane's equation as given                                               */        \
   X(Fog, fog, GLenum, Values4f)                                                           \
   X(ClipPlane, clipPlane, GLenum, Values4d)                                               \
+  /* accumulation.cpp */                                                                   \
+  X(Accum, accum, GLenum, GLfloat)                                                        \
+  X(ClearAccum, clearAccum, GLfloat, GLfloat, GLfloat, GLfloat)                           \
   /* attrib_stack.cpp */                                                                  \
   X(PushAttrib, pushAttrib, GLbitfield)                                                   \
   X(PopAttrib, popAttrib)                                                                 \

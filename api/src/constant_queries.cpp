@@ -88,22 +88,17 @@ constexpr Constant kConstants[] = {
     {GL_ACTIVE_TEXTURE, 1, {GL_TEXTURE0}},
     // Fragment operations (those primflow has: state_queries.cpp).
     {GL_INDEX_LOGIC_OP, 1, {kFalse}, kCapability},
-    // Framebuffer: one front buffer, no index or accumulation buffer.
+    // Framebuffer: one front buffer, no index buffer (the accumulation buffer: state_queries.cpp).
     {GL_DRAW_BUFFER, 1, {GL_FRONT}},
     {GL_READ_BUFFER, 1, {GL_FRONT}},
     {GL_INDEX_WRITEMASK, 1, {-1}},
     {GL_INDEX_CLEAR_VALUE, 1, {0}},
-    {GL_ACCUM_CLEAR_VALUE, 4, {0, 0, 0, 0}, kNormalized},
     {GL_RGBA_MODE, 1, {kTrue}},
     {GL_INDEX_MODE, 1, {kFalse}},
     {GL_DOUBLEBUFFER, 1, {kFalse}},
     {GL_STEREO, 1, {kFalse}},
     {GL_AUX_BUFFERS, 1, {0}},
     {GL_INDEX_BITS, 1, {0}},
-    {GL_ACCUM_RED_BITS, 1, {0}},
-    {GL_ACCUM_GREEN_BITS, 1, {0}},
-    {GL_ACCUM_BLUE_BITS, 1, {0}},
-    {GL_ACCUM_ALPHA_BITS, 1, {0}},
     {GL_SAMPLE_BUFFERS, 1, {0}},
     {GL_SAMPLES, 1, {0}},
     // Pixel transfer, pixel maps and zoom.

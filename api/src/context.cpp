@@ -116,7 +116,7 @@ extern "C" {
 
 PFcontext pfCreateContextAttribs(const int* attribs) {
   GLenum format = GL_RGBA;
-  int depth_bits = 0, stencil_bits = 0;
+  int depth_bits = 0, stencil_bits = 0, accum_bits = 0;
   int threads = 0;
   int cap = 0;
   int native = -1;  // PF_JIT: -1 the environment's choice
@@ -125,13 +125,14 @@ PFcontext pfCreateContextAttribs(const int* attribs) {
       case PF_FORMAT: format = static_cast<GLenum>(a[1]); break;
       case PF_DEPTH_BITS: depth_bits = a[1]; break;
       case PF_STENCIL_BITS: stencil_bits = a[1]; break;
+      case PF_ACCUM_BITS: accum_bits = a[1]; break;
       case PF_THREADS: threads = a[1]; break;
       case PF_ITERATION_CAP: cap = a[1]; break;
       case PF_JIT: native = a[1]; break;
       default: return nullptr;  // unknown attribute
     }
   }
-  if (format != GL_RGBA || depth_bits < 0 || stencil_bits < 0 || threads < 0 || threads > 256 || cap < 0 || native < -1 || native > 1)
+  if (format != GL_RGBA || depth_bits < 0 || stencil_bits < 0 || accum_bits < 0 || threads < 0 || threads > 256 || cap < 0 || native < -1 || native > 1)
     return nullptr;
   if (threads == 0) threads = pf::defaultThreadCount();
   try {
@@ -146,6 +147,7 @@ PFcontext pfCreateContextAttribs(const int* attribs) {
     ctx->param(ctx->texcoord_param) = pf::ParamValue{{0, 0, 0, 1}, 4};
     ctx->depth_bits = depth_bits;
     ctx->stencil_bits = stencil_bits > 0 ? 8 : 0;
+    ctx->accum_bits = accum_bits > 0 ? 16 : 0;
     if (native >= 0) ctx->renderer.setNativeCode(native == 1);
     ctx->iteration_cap = cap > 0 ? static_cast<unsigned>(cap) : pf::kDefaultIterationCap;
     if (!pf::registerBuiltins(*ctx)) {
@@ -179,9 +181,11 @@ GLboolean pfMakeCurrent(PFcontext ctx, void* buffer, GLenum type, GLsizei width,
   // previous drawable, whole.
   std::vector<float> depth;
   std::vector<uint8_t> stencil;
+  std::vector<int16_t> accum;
   try {
     if (ctx->depth_bits > 0) depth.assign(static_cast<size_t>(width) * height, 1.0f);
     if (ctx->stencil_bits > 0) stencil.assign(static_cast<size_t>(width) * height, 0);
+    if (ctx->accum_bits > 0) accum.assign(static_cast<size_t>(width) * height * 4, 0);
     ctx->renderer.setTarget(static_cast<uint8_t*>(buffer), ctx->depth_bits > 0 ? depth.data() : nullptr, width, height,
                             ctx->stencil_bits > 0 ? stencil.data() : nullptr);
   } catch (const std::bad_alloc&) {
@@ -192,6 +196,7 @@ GLboolean pfMakeCurrent(PFcontext ctx, void* buffer, GLenum type, GLsizei width,
   }
   ctx->depth.swap(depth);  // the storage moves with the swap: the renderer's pointer stays valid
   ctx->stencil.swap(stencil);
+  ctx->accum.swap(accum);
   ctx->color = static_cast<uint8_t*>(buffer);
   ctx->width = width;
   ctx->height = height;

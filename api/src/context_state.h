@@ -132,6 +132,7 @@ struct AttribState {
   TextureAttribs texture;                            // GL_TEXTURE_BIT (the enables: GL_ENABLE_BIT too)
   FogState fog;                                      // GL_FOG_BIT (the enable: GL_ENABLE_BIT too)
   ClipPlaneState clip;                               // GL_TRANSFORM_BIT (the enables: GL_ENABLE_BIT too)
+  float accum_clear[4];                              // GL_ACCUM_BUFFER_BIT
 };
 
 // glPixelStore's modes for one direction (GL 1.5 table 3.1): pack (glReadPixels writes by
@@ -194,6 +195,11 @@ struct PFcontextRec {
   int width = 0, height = 0;
   std::vector<float> depth;
   std::vector<uint8_t> stencil;  // cleared to 0 by every pfMakeCurrent
+  // The accumulation buffer (accumulation.cpp): 16 signed bits per channel, RGBA per pixel, as
+  // Mesa's; allocated by pfMakeCurrent (cleared to 0) when accum_bits is 16, else empty.
+  int accum_bits = 0;  // 16 or 0
+  std::vector<int16_t> accum;
+  float accum_clear[4] = {0, 0, 0, 0};  // glClearAccum's, clamped to [-1, 1]
   bool ever_bound = false;
   unsigned iteration_cap = 65536;
   // Called by glFinish / glFlush after the drawing has executed, if any drawing has since the
@@ -343,6 +349,9 @@ void copyInfoLog(PFcontextRec& ctx, const std::string* text, GLsizei bufSize, GL
 // The current context, or null if there is none or (GL_INVALID_OPERATION set) it is between
 // glBegin and glEnd, where GL allows only the vertex-attribute commands.
 PFcontextRec* contextOutsideBegin();
+// glClear's GL_ACCUM_BUFFER_BIT (accumulation.cpp): the accumulation buffer, if there is one, set
+// to glClearAccum's value within the scissor box.
+void clearAccumBuffer(PFcontextRec& ctx);
 // The same check on a context: false, with GL_INVALID_OPERATION set, between glBegin and glEnd.
 inline bool outsideBegin(PFcontextRec& ctx) {
   if (!ctx.in_begin) return true;

@@ -175,6 +175,7 @@ void clear(PFcontextRec& ctx, GLbitfield mask) {
     if ((mask & GL_STENCIL_BUFFER_BIT) && ctx.stencil_bits > 0 && (ctx.fragment.stencil_write_mask & 0xff) != 0)
       ctx.renderer.clearStencil(static_cast<uint8_t>(ctx.fragment.stencil_clear),
                                 static_cast<uint8_t>(ctx.fragment.stencil_write_mask), rect);
+    if (mask & GL_ACCUM_BUFFER_BIT) pf::clearAccumBuffer(ctx);  // (drawing never touches it: no wait)
   } catch (const std::bad_alloc&) {
     ctx.outOfMemory("glClear");
   }

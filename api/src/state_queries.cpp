@@ -147,6 +147,14 @@ bool query(const PFcontextRec& ctx, GLenum pname, Query& q) {
     case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS: set({8}); return true;
     case GL_DEPTH_BITS: set({double(ctx.depth_bits > 0 ? 24 : 0)}); return true;
     case GL_STENCIL_BITS: set({double(ctx.stencil_bits)}); return true;
+    case GL_ACCUM_RED_BITS: case GL_ACCUM_GREEN_BITS: case GL_ACCUM_BLUE_BITS: case GL_ACCUM_ALPHA_BITS:
+      set({double(ctx.accum_bits)});
+      return true;
+    case GL_ACCUM_CLEAR_VALUE: {
+      const auto& ac = ctx.accum_clear;
+      set({ac[0], ac[1], ac[2], ac[3]}, true);
+      return true;
+    }
     // The reference as the test uses it: clamped to the buffer's values (0 without one), as Mesa.
     case GL_STENCIL_REF: set({double(std::clamp(ctx.fragment.stencil_ref, 0, (1 << ctx.stencil_bits) - 1))}); return true;
     // Display lists: the list being compiled and its mode (0 when none is), the base; names as

@@ -11,6 +11,11 @@
 
 #include "client_output.h"
 
+/* Accumulation bits of the context: a client that needs the buffer defines this before the include. */
+#ifndef CLIENT_ACCUM_BITS
+#define CLIENT_ACCUM_BITS 0
+#endif
+
 typedef struct {
 #ifdef PF_CLIENT_MANGLE
   PFcontext ctx;
@@ -32,11 +37,12 @@ static int client_begin(client_context *c, int argc, char *argv[], int width, in
   }
 #ifdef PF_CLIENT_MANGLE
   {
-    const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, depth_bits, PF_STENCIL_BITS, stencil_bits, 0};
+    const int attribs[] = {PF_FORMAT,       GL_RGBA,      PF_DEPTH_BITS,     depth_bits, PF_STENCIL_BITS,
+                           stencil_bits,    PF_ACCUM_BITS, CLIENT_ACCUM_BITS, 0};
     c->ctx = pfCreateContextAttribs(attribs);
   }
 #else
-  c->ctx = OSMesaCreateContextExt(OSMESA_RGBA, depth_bits, stencil_bits, 0, NULL);
+  c->ctx = OSMesaCreateContextExt(OSMESA_RGBA, depth_bits, stencil_bits, CLIENT_ACCUM_BITS, NULL);
 #endif
   c->width = width;
   c->height = height;

@@ -24,7 +24,7 @@ Rendering renderOsmesa(const std::string& name, int width, int height) {
   const GlCase* c = findCase(name);
   if (!c) return r;
   std::vector<uint8_t> buffer(static_cast<size_t>(width) * height * 4);
-  OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, nullptr);  // (the stencil cases need one)
+  OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 16, nullptr);  // (the stencil and accumulation cases need them)
   if (!ctx) return r;
   if (OSMesaMakeCurrent(ctx, buffer.data(), GL_UNSIGNED_BYTE, width, height)) drawAndRead(*c, width, height, r);
   OSMesaMakeCurrent(nullptr, nullptr, GL_UNSIGNED_BYTE, 0, 0);

@@ -25,7 +25,7 @@ Rendering renderPrimflow(const std::string& name, int width, int height, int thr
   const GlCase* c = findCase(name);
   if (!c) return r;
   std::vector<uint8_t> buffer(static_cast<size_t>(width) * height * 4);
-  const int attribs[] = {PF_FORMAT,  GL_RGBA, PF_DEPTH_BITS, 24, PF_STENCIL_BITS, 8, PF_THREADS, threads,
+  const int attribs[] = {PF_FORMAT,  GL_RGBA, PF_DEPTH_BITS, 24, PF_STENCIL_BITS, 8, PF_ACCUM_BITS, 16, PF_THREADS, threads,
                          native >= 0 ? PF_JIT : 0, native, 0};
   PFcontext ctx = pfCreateContextAttribs(attribs);
   if (!ctx) return r;

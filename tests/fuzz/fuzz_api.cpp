@@ -245,8 +245,20 @@ void fogClipState(FuzzedDataProvider& in) {
   }
 }
 
+// The accumulation buffer: any op (a known one mostly) with any value (NaN, inf, huge: the
+// integer arithmetic wraps as Mesa's), any clear value, a clear of it, under whatever scissor box
+// and colour mask the other calls left.
+void accumulation(FuzzedDataProvider& in) {
+  const GLenum op = in.ConsumeBool() ? in.ConsumeIntegralInRange<GLenum>(GL_ACCUM, GL_ADD) : in.ConsumeIntegral<GLenum>();
+  switch (in.ConsumeIntegralInRange<int>(0, 2)) {
+    case 0: pfglAccum(op, aFloat(in)); break;
+    case 1: pfglClearAccum(aFloat(in), aFloat(in), aFloat(in), aFloat(in)); break;
+    default: pfglClear(GL_ACCUM_BUFFER_BIT); break;
+  }
+}
+
 void oneCall(FuzzedDataProvider& in, bool& huge_drawn) {
-  switch (in.ConsumeIntegralInRange<int>(0, 23)) {
+  switch (in.ConsumeIntegralInRange<int>(0, 24)) {
     case 0: oneBegin(in, in.ConsumeBool()); break;
     case 19: hugeBegin(in, huge_drawn); break;
     case 1: pfglBegin(in.ConsumeIntegral<GLenum>()); break;  // any enum, a primitive's mode or none
@@ -293,6 +305,7 @@ void oneCall(FuzzedDataProvider& in, bool& huge_drawn) {
     case 20: fragmentState(in); break;
     case 21: textureState(in); break;
     case 22: fogClipState(in); break;
+    case 23: accumulation(in); break;
     default: pfglFinish(); break;
   }
 }
@@ -301,7 +314,7 @@ void oneCall(FuzzedDataProvider& in, bool& huge_drawn) {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static std::vector<unsigned char> pixels(kSize * kSize * 4);
-  const int attribs[] = {PF_FORMAT,  GL_RGBA, PF_DEPTH_BITS,    24, PF_STENCIL_BITS, 8, PF_THREADS, 2,
+  const int attribs[] = {PF_FORMAT,  GL_RGBA, PF_DEPTH_BITS,    24, PF_STENCIL_BITS, 8, PF_ACCUM_BITS, 16, PF_THREADS, 2,
                          PF_ITERATION_CAP, static_cast<int>(kIterationCap), 0};
   PFcontext ctx = pfCreateContextAttribs(attribs);
   if (!ctx) return 0;

@@ -325,6 +325,35 @@ TEST(OutOfMemory, FailedAllocationsAreGlOutOfMemoryAndTheContextGoesOn) {
   pfDestroyContext(ctx);
 }
 
+// An accumulation buffer past memory: pfMakeCurrent fails with GL_OUT_OF_MEMORY and the context
+// keeps its drawable, accumulation buffer and all.
+TEST(OutOfMemory, AccumulationBufferPastMemoryKeepsTheDrawable) {
+  std::vector<unsigned char> px(64 * 64 * 4);
+  const int attribs[] = {PF_FORMAT, GL_RGBA, PF_ACCUM_BITS, 16, PF_THREADS, 1, 0};
+  PFcontext ctx = pfCreateContextAttribs(attribs);
+  ASSERT_NE(ctx, nullptr);
+  ASSERT_TRUE(pfMakeCurrent(ctx, px.data(), GL_UNSIGNED_BYTE, 64, 64));
+  pfglClearColor(0.6f, 0.2f, 1.0f, 1.0f);
+  pfglClear(GL_COLOR_BUFFER_BIT);
+  pfglAccum(GL_LOAD, 1.0f);
+  std::vector<unsigned char> big(16);
+  g_fail_from_bytes = 1024 * 1024;  // the accumulation buffer alone is 8 bytes a pixel
+  testing::internal::CaptureStderr();
+  EXPECT_FALSE(pfMakeCurrent(ctx, big.data(), GL_UNSIGNED_BYTE, 4096, 4096));
+  g_fail_from_bytes = 0;
+  testing::internal::GetCapturedStderr();
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_OUT_OF_MEMORY));
+  pfglClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  pfglClear(GL_COLOR_BUFFER_BIT);
+  pfglAccum(GL_RETURN, 1.0f);  // what was loaded before the failure
+  pfglFinish();
+  EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  EXPECT_EQ(px[(10 * 64 + 10) * 4 + 0], 153);
+  EXPECT_EQ(px[(10 * 64 + 10) * 4 + 2], 255);
+  pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
+  pfDestroyContext(ctx);
+}
+
 // A display list past memory: the commands that do not fit are left out with GL_OUT_OF_MEMORY
 // (and one line on stderr), the list keeps those recorded before, and the context goes on --
 // compiling and calling lists again. Recording allocates nothing per command once its buffer

@@ -23,6 +23,8 @@ typedef struct PFcontextRec *PFcontext;
                                   identical either way. */
 #define PF_STENCIL_BITS 0x31105 /* 0 (no stencil buffer, the default) or any positive size: an 8-bit
                                    stencil buffer */
+#define PF_ACCUM_BITS  0x31106 /* 0 (no accumulation buffer, the default) or any positive size: an
+                                  accumulation buffer of 16 signed bits per channel, as OSMesa's */
 
 /* A context rendering GL_RGBA with a depth buffer when depthBits > 0; NULL on a bad format. */
 PFcontext pfCreateContext(GLenum format, GLint depthBits);

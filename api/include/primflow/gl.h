@@ -25,6 +25,9 @@ void pfglViewport(GLint x, GLint y, GLsizei width, GLsizei height);
 void pfglDepthFunc(GLenum func);
 void pfglDepthMask(GLboolean flag);
 void pfglDepthRange(GLclampd zNear, GLclampd zFar);
+/* The accumulation buffer (a context created with accumulation bits: PF_ACCUM_BITS) */
+void pfglAccum(GLenum op, GLfloat value);
+void pfglClearAccum(GLfloat red, GLfloat green, GLfloat blue, GLfloat alpha);
 /* GL_DEPTH_TEST, GL_CULL_FACE, GL_LIGHTING, GL_LIGHT0..7, GL_COLOR_MATERIAL, GL_NORMALIZE,
  * GL_RESCALE_NORMAL, GL_SCISSOR_TEST, GL_ALPHA_TEST, GL_STENCIL_TEST, GL_BLEND, GL_COLOR_LOGIC_OP,
  * GL_DITHER; others: GL_INVALID_ENUM (glIsEnabled also takes the client arrays) */

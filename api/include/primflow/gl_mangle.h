@@ -30,6 +30,8 @@
 #define glDepthFunc pfglDepthFunc
 #define glDepthMask pfglDepthMask
 #define glDepthRange pfglDepthRange
+#define glAccum pfglAccum
+#define glClearAccum pfglClearAccum
 #define glEnable pfglEnable
 #define glDisable pfglDisable
 #define glIsEnabled pfglIsEnabled

@@ -21,8 +21,6 @@
 #define glDrawBuffer _Pragma("GCC error \"primflow does not implement glDrawBuffer\"") pf_unsupported_glDrawBuffer
 #define glReadBuffer _Pragma("GCC error \"primflow does not implement glReadBuffer\"") pf_unsupported_glReadBuffer
 #define glRenderMode _Pragma("GCC error \"primflow does not implement glRenderMode\"") pf_unsupported_glRenderMode
-#define glClearAccum _Pragma("GCC error \"primflow does not implement glClearAccum\"") pf_unsupported_glClearAccum
-#define glAccum _Pragma("GCC error \"primflow does not implement glAccum\"") pf_unsupported_glAccum
 #define glIndexd _Pragma("GCC error \"primflow does not implement glIndexd\"") pf_unsupported_glIndexd
 #define glIndexf _Pragma("GCC error \"primflow does not implement glIndexf\"") pf_unsupported_glIndexf
 #define glIndexi _Pragma("GCC error \"primflow does not implement glIndexi\"") pf_unsupported_glIndexi
