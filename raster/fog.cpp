@@ -24,7 +24,7 @@ float fogFactor(const FogParams& fog, float z) {
 
 void fogRun(const FogParams& fog, const float* coord, float (*c)[kTileSize], int n) {
   for (int i = 0; i < n; ++i) {
-    const float f = fogFactor(fog, coord[i]);
+    const float f = fogFactor(fog, std::fabs(coord[i]));  // (a surface's P.z: see fog.h)
     for (int k = 0; k < 3; ++k) {
       float v = c[k][i];
       v = v > 0.0f ? v : 0.0f;  // NaN too

@@ -1,7 +1,10 @@
 // GL fog (GL 1.5 section 3.10) as the shading pass applies it: after texturing, before the
 // fragment operations, from a fog coordinate the primitive interpolated into the G-buffer
 // (|z| in eye coordinates at each sequence point, interpolated perspective-correctly, as
-// Mesa's fixed-function vertex program computes and llvmpipe interpolates it). The factor is
+// Mesa's fixed-function vertex program computes and llvmpipe interpolates it) -- or, for a
+// primitive that sets its surface point P and normal N (a sphere, a quadric, an implicit
+// surface), |P.z| of each pixel's own surface point: the eye distance GL's formula measures,
+// exact where tessellation would interpolate it. The factor is
 // computed per pixel whatever GL_FOG_HINT says, as llvmpipe does, with Mesa's constants
 // (STATE_FOG_PARAMS_OPTIMIZED): linear f = z * scale + offset, exp f = 2^-(d / ln 2 * z),
 // exp2 f = 2^-((d / sqrt(ln 2) * z)^2), clamped to [0, 1]; then rgb = f * rgb + (1 - f) * fog
@@ -30,7 +33,9 @@ struct FogParams {
 // The fog factor of fog coordinate z.
 float fogFactor(const FogParams& fog, float z);
 
-// Fogs n colours c[k][i] (i < n) by the fog coordinates coord[i]: each colour component
+// Fogs n colours c[k][i] (i < n) by the fog coordinates |coord[i]| -- a fog coordinate channel's
+// non-negative values, or the z of a surface's eye-space point P, negative in front of the eye --:
+// each colour component
 // clamped to [0, 1] first (GL's clamped fragment colour), rgb blended towards the fog colour.
 void fogRun(const FogParams& fog, const float* coord, float (*c)[kTileSize], int n);
 

@@ -290,6 +290,9 @@ struct PFcontextRec {
   // begin_lit's vertices waiting to be lit together (vertex_lighting.h): lit when the batch
   // fills and at glEnd, into their rows' colour channels.
   pf::VertexLightingBatch vertex_lighting;
+  // Fog measured per pixel from the surface point P a primitive commits (it sets N): its P
+  // goes to the G-buffer even unlit, and no fog coordinate channel is planned.
+  bool begin_fog_surface = false;
   bool begin_lit_per_pixel = false;  // GL lighting per pixel in the shading pass: a primitive
                                      // that sets N, or vertices under GL_PER_PIXEL_LIGHTING_EXT
   // GL_PER_PIXEL_LIGHTING_EXT on a vertex primitive: each row carries its eye-space position

@@ -173,6 +173,9 @@ void submitInstances(PFcontextRec& ctx) {
     if (ctx.fog_channel >= 0) {
       shade.fog_slot = layout.gbuffer_slot[static_cast<size_t>(ctx.fog_channel)];
       shade.fog = pf::fogParams(ctx.fog);
+    } else if (ctx.begin_fog_surface) {
+      shade.fog_slot = layout.surface_slot + 2;  // P.z
+      shade.fog = pf::fogParams(ctx.fog);
     }
   } else {
     for (int k = 0; k < 4; ++k) shade.constant_color[k] = ctx.current_color[k];
@@ -322,6 +325,14 @@ static void startBegin(PFcontextRec& context, GLenum mode, const pf::CompiledPri
   if (ctx->begin_lit_per_pixel) {
     ctx->begin_layout.surface_slot = ctx->row_channels;
     ctx->begin_layout.surface_eye = pf::lightReadsEye(ctx->lighting);
+  }
+  // Fog on a primitive that commits its surface point: measured from each pixel's P (fog.h), which
+  // the G-buffer then carries whether or not lighting reads it.
+  ctx->begin_fog_surface = ctx->fog.enabled && ctx->begin_primitive->writes_normal &&
+                           ctx->begin_primitive->has_interp_data && !ctx->begin_layout.surface_interpolated;
+  if (ctx->begin_fog_surface) {
+    ctx->begin_layout.surface_slot = ctx->row_channels;
+    ctx->begin_layout.surface_eye = true;
   }
   // (Vertices lit per pixel have their surface slots already, among their channels.)
   if (ctx->begin_vertices_per_pixel && ctx->begin_layout.surface_interpolated) ctx->begin_lit_per_pixel = true;

@@ -139,8 +139,9 @@ void planShading(PFcontextRec& ctx, GLenum mode, const CompiledPrimitive& prim) 
         ctx.shading.push_back(
             {internal, false, InterpKind::PerspectiveLinear, 4 * static_cast<int>(ctx.shading.size()), nullptr});
     }
-    if (kind == static_cast<int>(InterpKind::PerspectiveLinear) && ctx.fog.enabled) {
+    if (kind == static_cast<int>(InterpKind::PerspectiveLinear) && ctx.fog.enabled && !prim.writes_normal) {
       // Fog: the fog coordinate, interpolated perspective-correct (as llvmpipe interpolates it).
+      // (A primitive that commits its surface point is fogged by it instead: immediate_mode.cpp.)
       ctx.fog_channel = 4 * static_cast<int>(ctx.shading.size());
       ctx.fog_position_param = fogPositionParam(ctx, prim);
       ctx.shading.push_back({kFogCoordChannel, false, InterpKind::PerspectiveLinear, ctx.fog_channel, nullptr});

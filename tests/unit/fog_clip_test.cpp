@@ -1,14 +1,16 @@
 // Fog and user clip planes through the API: the fog factor against GL's equations in double
-// precision, fog on a sphere (its fog coordinate from its centre), clip planes on the exact
+// precision, fog on a sphere (per pixel, from its surface point, against the analytic hit), clip planes on the exact
 // sphere primitive against an analytic ray cast (a plane across it and a plane through its
 // depth), the errors and queries, the attribute groups and display lists, and NULL pointers.
 // (The images against OSMesa: tests/conformance/cases_fog_clip.inc.)
 #include <gtest/gtest.h>
 
+#include <primflow/context.h>
 #include <primflow/gl.h>
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "raster/fog.h"
 #include "gl_context.h"
@@ -53,22 +55,92 @@ void drawSphere(float cz, float r) {
   pfglFinish();
 }
 
-TEST(Fog, SphereTakesItsCentresFogCoordinate) {
-  pf::test::GlContext c(32, 32);
-  pfglClearColor(0, 0, 0, 1);
-  pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  pfglEnable(GL_FOG);
-  pfglFogi(GL_FOG_MODE, GL_LINEAR);
-  pfglFogf(GL_FOG_START, 0.0f);
-  pfglFogf(GL_FOG_END, 8.0f);
-  const GLfloat blue[4] = {0, 0, 1, 1};
-  pfglFogfv(GL_FOG_COLOR, blue);
-  drawSphere(-2.0f, 0.8f);  // |z| = 2: f = 0.75
-  const unsigned char* p = c.at(16, 16);
-  EXPECT_NEAR(p[0], 0.75 * 255, 1.0);
-  EXPECT_NEAR(p[1], 0.75 * 0.5 * 255, 1.0);
-  EXPECT_NEAR(p[2], 0.25 * 255, 1.0);
+// A sphere is fogged by each pixel's own surface point (|P.z|), against the analytic front hit:
+// GL's linear fog from 0 to 8 in double precision, within one step of 8 bits. Lit or not (the
+// surface point reaches the shading pass either way).
+TEST(Fog, SphereIsFoggedByEachPixelsSurfacePoint) {
+  constexpr int kN = 32;
+  pf::test::GlContext c(kN, kN);
+  for (bool lit : {false, true}) {
+    pfglClearColor(0, 0, 0, 1);
+    pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    pfglEnable(GL_FOG);
+    pfglFogi(GL_FOG_MODE, GL_LINEAR);
+    pfglFogf(GL_FOG_START, 0.0f);
+    pfglFogf(GL_FOG_END, 8.0f);
+    const GLfloat blue[4] = {0, 0, 1, 1};
+    pfglFogfv(GL_FOG_COLOR, blue);
+    // Lit: ambient only, a white ambient light on an ambient material of the unlit colour --
+    // the lit colour is the unlit one, so one reference serves both.
+    const GLfloat none[4] = {0, 0, 0, 1}, white[4] = {1, 1, 1, 1}, colour[4] = {1.0f, 0.5f, 0.0f, 1.0f};
+    pfglLightModelfv(GL_LIGHT_MODEL_AMBIENT, white);
+    pfglMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT, colour);
+    pfglMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, none);
+    pfglMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, none);
+    (lit ? pfglEnable : pfglDisable)(GL_LIGHTING);
+    const float cz = -2.0f, r = 0.8f;
+    drawSphere(cz, r);
+    pfglDisable(GL_LIGHTING);
+    int checked = 0;
+    double fog_min = 1.0, fog_max = 0.0;
+    for (int y = 0; y < kN; ++y)
+      for (int x = 0; x < kN; ++x) {
+        const double px = (x + 0.5) / kN * 2 - 1, py = (y + 0.5) / kN * 2 - 1;
+        const double rr = double(r) * r - px * px - py * py;
+        if (rr < 0.02) continue;  // outside, or the rim (float and double may disagree)
+        const double z = std::fabs(cz + std::sqrt(rr));  // the front hit's eye distance
+        const double f = glFogFactor(GL_LINEAR, z, 0, 0, 8);
+        const unsigned char* p = c.at(x, y);
+        EXPECT_NEAR(p[0], f * 255, 1.0) << x << "," << y << (lit ? " lit" : "");
+        EXPECT_NEAR(p[1], f * 0.5 * 255, 1.0) << x << "," << y << (lit ? " lit" : "");
+        EXPECT_NEAR(p[2], (1 - f) * 255, 1.0) << x << "," << y << (lit ? " lit" : "");
+        fog_min = std::min(fog_min, f);
+        fog_max = std::max(fog_max, f);
+        ++checked;
+      }
+    EXPECT_GT(checked, 300);
+    EXPECT_GT(fog_max - fog_min, 0.08);  // the fog varies across the sphere: not its centre's
+  }
   EXPECT_EQ(error(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
+// The fogged sphere, lit per pixel, in perspective, drawn by native code and by the interpreter:
+// the same bytes (the surface point both commit is the fog's input).
+TEST(Fog, SphereFogIsTheSameWithNativeCodeAndTheInterpreter) {
+  constexpr int kN = 48;
+  std::vector<unsigned char> images[2];
+  for (int native = 0; native < 2; ++native) {
+    images[native].assign(kN * kN * 4, 0);
+    const int attribs[] = {PF_FORMAT, GL_RGBA, PF_DEPTH_BITS, 24, PF_JIT, native, 0};
+    PFcontext ctx = pfCreateContextAttribs(attribs);
+    ASSERT_NE(ctx, nullptr);
+    ASSERT_TRUE(pfMakeCurrent(ctx, images[native].data(), GL_UNSIGNED_BYTE, kN, kN));
+    pfglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    pfglEnable(GL_DEPTH_TEST);
+    pfglEnable(GL_LIGHTING);
+    pfglEnable(GL_LIGHT0);
+    pfglEnable(GL_FOG);
+    pfglFogi(GL_FOG_MODE, GL_EXP2);
+    pfglFogf(GL_FOG_DENSITY, 0.3f);
+    pfglMatrixMode(GL_PROJECTION);
+    pfglFrustum(-0.5, 0.5, -0.5, 0.5, 1.0, 20.0);
+    pfglMatrixMode(GL_MODELVIEW);
+    pfglBegin(pfglGetPrimitiveEXT("sphere"));
+    for (int k = 0; k < 3; ++k) {
+      pfglRastParamfEXT(pfglGetParamNameEXT("radius"), 0.6f + 0.2f * k);
+      pfglRastParam3fEXT(pfglGetParamNameEXT("center"), -0.8f + 0.8f * k, 0.1f * k, -3.0f - 1.5f * k);
+      pfglSequencePointEXT();
+    }
+    pfglEnd();
+    pfglFinish();
+    EXPECT_EQ(error(), static_cast<GLenum>(GL_NO_ERROR));
+    pfMakeCurrent(nullptr, nullptr, 0, 0, 0);
+    pfDestroyContext(ctx);
+  }
+  EXPECT_TRUE(images[0] == images[1]);
+  int covered = 0;
+  for (size_t i = 3; i < images[1].size(); i += 4) covered += images[1][i] != 0;
+  EXPECT_GT(covered, 300);
 }
 
 TEST(ClipPlanes, ExactSphereAgainstAnalyticRayCast) {
