@@ -42,6 +42,8 @@ void pushAttrib(PFcontextRec& ctx, GLbitfield mask) {
   s.fog = ctx.fog;
   s.clip = ctx.clip;
   std::copy(std::begin(ctx.accum_clear), std::end(ctx.accum_clear), s.accum_clear);
+  s.raster = ctx.raster;
+  s.pixel_mode = ctx.pixel_mode;
   try {
     ctx.attrib_stack.push_back(s);
   } catch (const std::bad_alloc&) {
@@ -63,6 +65,7 @@ void popAttrib(PFcontextRec& ctx) {
     for (int k = 0; k < 4; ++k) color.v[k] = s.current_color[k];
     ctx.param(ctx.normal_param) = s.normal;
     ctx.param(ctx.texcoord_param) = s.texcoord;
+    ctx.raster = s.raster;
   }
   if (m & GL_LIGHTING_BIT) {  // all of the lighting state but the enables of other groups
     const bool normalize = l.normalize, rescale = l.rescale_normal, per_pixel = l.per_pixel_vertices;
@@ -99,6 +102,7 @@ void popAttrib(PFcontextRec& ctx) {
   }
   if (m & GL_FOG_BIT) ctx.fog = s.fog;  // (the enable included)
   if (m & GL_ACCUM_BUFFER_BIT) std::copy(std::begin(s.accum_clear), std::end(s.accum_clear), ctx.accum_clear);
+  if (m & GL_PIXEL_MODE_BIT) ctx.pixel_mode = s.pixel_mode;  // (the zoom: no pixel transfer or maps)
   if (m & GL_TEXTURE_BIT) {  // the bindings, the environment, the generation (enables included)
     ctx.textures.a = s.texture;
     // (A binding to a texture deleted since is the default texture's.)

@@ -87,6 +87,12 @@ Values<T, N> valuesOf(const U* p, int n, GLint count) {
   /* accumulation.cpp */                                                                   \
   X(Accum, accum, GLenum, GLfloat)                                                        \
   X(ClearAccum, clearAccum, GLfloat, GLfloat, GLfloat, GLfloat)                           \
+  /* raster_position.cpp: glRasterPos as 4 floats, glWindowPos as 3 */                    \
+  X(RasterPos, rasterPos, GLfloat, GLfloat, GLfloat, GLfloat)                             \
+  X(WindowPos, windowPos, GLfloat, GLfloat, GLfloat)                                      \
+  /* draw_pixels.cpp */                                                                   \
+  X(PixelZoom, pixelZoom, GLfloat, GLfloat)                                               \
+  X(CopyPixels, copyPixels, GLint, GLint, GLsizei, GLsizei, GLenum)                       \
   /* attrib_stack.cpp */                                                                  \
   X(PushAttrib, pushAttrib, GLbitfield)                                                   \
   X(PopAttrib, popAttrib)                                                                 \
@@ -152,10 +158,18 @@ enum class GlOp : uint32_t {
   // glTexImage*D / glTexSubImage*D, of variable length: the arguments, then the image unpacked
   // to RGBA floats when the list was compiled (texture_images.cpp).
   TexImage,
+  // glBitmap, of variable length: the arguments, then the bitmap unpacked when the list was
+  // compiled, a byte a pixel (bitmap.cpp).
+  Bitmap,
+  // glDrawPixels, of variable length: the arguments, then the image unpacked when the list was
+  // compiled (draw_pixels.cpp).
+  DrawPixels,
 };
 
 // Executes a recorded TexImage from the words after its opcode; returns how many it takes.
 uint32_t replayTexImage(PFcontextRec& ctx, const uint32_t* args);
+uint32_t replayBitmap(PFcontextRec& ctx, const uint32_t* args);
+uint32_t replayDrawPixels(PFcontextRec& ctx, const uint32_t* args);
 
 namespace cmd {
 #define PF_DECLARE(name, fn, ...) void fn(PFcontextRec& ctx __VA_OPT__(, ) __VA_ARGS__);

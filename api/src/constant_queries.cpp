@@ -25,12 +25,7 @@ constexpr double kTrue = 1.0, kFalse = 0.0;
 constexpr Constant kConstants[] = {
     // Current values and the raster position (no glRasterPos: its initial state).
     {GL_CURRENT_INDEX, 1, {1}},
-    {GL_CURRENT_RASTER_POSITION, 4, {0, 0, 0, 1}},
-    {GL_CURRENT_RASTER_DISTANCE, 1, {0}},
-    {GL_CURRENT_RASTER_COLOR, 4, {1, 1, 1, 1}, kNormalized},
     {GL_CURRENT_RASTER_INDEX, 1, {1}},
-    {GL_CURRENT_RASTER_TEXTURE_COORDS, 4, {0, 0, 0, 1}},
-    {GL_CURRENT_RASTER_POSITION_VALID, 1, {kTrue}},
     {GL_EDGE_FLAG, 1, {kTrue}},
     {GL_CURRENT_FOG_COORD, 1, {0}},
     {GL_CURRENT_SECONDARY_COLOR, 4, {0, 0, 0, 1}, kNormalized},
@@ -116,8 +111,6 @@ constexpr Constant kConstants[] = {
     {GL_BLUE_BIAS, 1, {0}},
     {GL_ALPHA_BIAS, 1, {0}},
     {GL_DEPTH_BIAS, 1, {0}},
-    {GL_ZOOM_X, 1, {1}},
-    {GL_ZOOM_Y, 1, {1}},
     {GL_PIXEL_MAP_I_TO_I_SIZE, 1, {1}},
     {GL_PIXEL_MAP_S_TO_S_SIZE, 1, {1}},
     {GL_PIXEL_MAP_I_TO_R_SIZE, 1, {1}},

@@ -15,6 +15,8 @@
 
 #include "api/src/display_lists.h"
 #include "api/src/fog_clip.h"
+#include "api/src/pixel_rectangles.h"
+#include "api/src/raster_position.h"
 #include "api/src/textures.h"
 #include "api/src/vertex_lighting.h"
 #include "raster/lighting.h"
@@ -133,6 +135,8 @@ struct AttribState {
   FogState fog;                                      // GL_FOG_BIT (the enable: GL_ENABLE_BIT too)
   ClipPlaneState clip;                               // GL_TRANSFORM_BIT (the enables: GL_ENABLE_BIT too)
   float accum_clear[4];                              // GL_ACCUM_BUFFER_BIT
+  RasterPosState raster;                             // GL_CURRENT_BIT
+  PixelModeState pixel_mode;                         // GL_PIXEL_MODE_BIT
 };
 
 // glPixelStore's modes for one direction (GL 1.5 table 3.1): pack (glReadPixels writes by
@@ -241,6 +245,8 @@ struct PFcontextRec {
   pf::TextureState textures;
   pf::FogState fog;
   pf::ClipPlaneState clip;
+  pf::RasterPosState raster;
+  pf::PixelModeState pixel_mode;
   pf::DisplayLists lists;
   GLenum hints[pf::kHintCount] = {GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE,
                                   GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE};
@@ -314,6 +320,9 @@ struct PFcontextRec {
   // the coordinate 0).
   int fog_channel = -1;
   GLuint fog_position_param = 0;
+  // A pixel rectangle being drawn (pixel_rectangles.h): its sequence points' colour, texture
+  // and fog coordinates come from here; null otherwise.
+  const pf::PixelFragment* pixel_fragment = nullptr;
   size_t rows_count = 0;
   std::vector<uint32_t> rows;
   std::vector<float> row_shading;  // row_channels floats per sequence point

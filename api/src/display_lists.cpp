@@ -152,6 +152,8 @@ void execute(PFcontextRec& ctx, const std::vector<uint32_t>& list) {
 #undef PF_REPLAY
       case GlOp::CallLists: p += replayCallLists(ctx, p); break;
       case GlOp::TexImage: p += replayTexImage(ctx, p); break;
+      case GlOp::Bitmap: p += replayBitmap(ctx, p); break;
+      case GlOp::DrawPixels: p += replayDrawPixels(ctx, p); break;
     }
   }
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <vector>
 
 #include "api/src/context_state.h"
 
@@ -229,6 +230,66 @@ void packColors(const PixelStore& store, GLenum format, GLenum type, int width, 
         storeComponent(type, comp[k], c);
         if (store.swap_bytes) std::reverse(c, c + l.component_bytes);
       }
+    }
+}
+
+void unpackBitmap(const PixelStore& store, int width, int height, const void* data, unsigned char* bits) {
+  if (width <= 0 || height <= 0) return;
+  const auto* in = static_cast<const unsigned char*>(data);
+  const size_t align = static_cast<size_t>(store.alignment);
+  const size_t row_bits = static_cast<size_t>(store.row_length > 0 ? store.row_length : width);
+  const size_t row_bytes = ((row_bits + 7) / 8 + align - 1) / align * align;
+  const size_t w = static_cast<size_t>(width);
+  for (size_t y = 0; y < static_cast<size_t>(height); ++y) {
+    const unsigned char* row = in + (static_cast<size_t>(store.skip_rows) + y) * row_bytes;
+    for (size_t x = 0; x < w; ++x) {
+      const size_t bit = static_cast<size_t>(store.skip_pixels) + x;
+      const int shift = store.lsb_first ? static_cast<int>(bit % 8) : 7 - static_cast<int>(bit % 8);
+      bits[y * w + x] = static_cast<unsigned char>((row[bit / 8] >> shift) & 1);
+    }
+  }
+}
+
+GLenum checkDrawFormatAndType(GLenum format, GLenum type) {
+  if (type == GL_BITMAP)
+    return format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX ? GL_NO_ERROR : GL_INVALID_ENUM;
+  const bool index = format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX || format == GL_DEPTH_COMPONENT;
+  if (packedType(type) || !index) return checkColorFormatAndType(format, type);
+  return basicBytes(type) != 0 ? GL_NO_ERROR : GL_INVALID_ENUM;
+}
+
+void unpackIndices(const PixelStore& store, GLenum type, int width, int height, const void* data, uint32_t* out) {
+  if (width <= 0 || height <= 0) return;
+  const size_t n = static_cast<size_t>(width) * static_cast<size_t>(height);
+  if (type == GL_BITMAP) {
+    std::vector<unsigned char> bits(n);
+    unpackBitmap(store, width, height, data, bits.data());
+    for (size_t i = 0; i < n; ++i) out[i] = bits[i];
+    return;
+  }
+  const ImageLayout l = imageLayout(store, GL_STENCIL_INDEX, type, width);
+  const auto* base = static_cast<const unsigned char*>(data) + l.offset;
+  unsigned char c[4];
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const unsigned char* src = base + static_cast<size_t>(y) * l.row_bytes + static_cast<size_t>(x) * l.pixel_bytes;
+      std::memcpy(c, src, l.component_bytes);
+      if (store.swap_bytes) std::reverse(c, c + l.component_bytes);
+      uint32_t v = 0;
+      switch (type) {
+        case GL_UNSIGNED_BYTE: v = c[0]; break;
+        case GL_BYTE: v = static_cast<uint32_t>(static_cast<int8_t>(c[0])); break;
+        case GL_UNSIGNED_SHORT: { uint16_t u; std::memcpy(&u, c, 2); v = u; break; }
+        case GL_SHORT: { int16_t u; std::memcpy(&u, c, 2); v = static_cast<uint32_t>(u); break; }
+        case GL_FLOAT: {
+          float f;
+          std::memcpy(&f, c, 4);
+          v = f >= 0.0f && f < 4294967296.0f ? static_cast<uint32_t>(f) : 0u;
+          break;
+        }
+        default: std::memcpy(&v, c, 4); break;  // GL_UNSIGNED_INT, GL_INT
+      }
+      out[static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)] = v;
     }
 }
 

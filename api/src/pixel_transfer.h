@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 
 #include <GL/gl.h>
 
@@ -17,6 +18,13 @@ struct PixelStore;
 // GL_INVALID_OPERATION for a packed type with a format it cannot hold (GL 1.2's packed types:
 // 3_3_2 and 5_6_5 hold GL_RGB, the others GL_RGBA or GL_BGRA).
 GLenum checkColorFormatAndType(GLenum format, GLenum type);
+
+// glDrawPixels' check of a format and type (Mesa's _mesa_error_check_format_and_type, in its
+// order): GL_BITMAP only for GL_COLOR_INDEX and GL_STENCIL_INDEX (else GL_INVALID_ENUM); a packed
+// type only with a format it holds (else GL_INVALID_OPERATION); GL_COLOR_INDEX,
+// GL_STENCIL_INDEX and GL_DEPTH_COMPONENT with a basic type; the colour formats as
+// checkColorFormatAndType.
+GLenum checkDrawFormatAndType(GLenum format, GLenum type);
 
 // Where the pixels of a width x height image lie in client memory: pixel (x, y) starts at
 // offset + y * row_bytes + x * pixel_bytes (rows of GL_*_ROW_LENGTH pixels, or `width`, padded
@@ -44,5 +52,17 @@ void unpackColors(const PixelStore& store, GLenum format, GLenum type, int width
 // each component clamped to [0, 1] and converted to the type (a luminance group takes red).
 void packColors(const PixelStore& store, GLenum format, GLenum type, int width, int height, const float* rgba,
                 void* data);
+
+// Reads a `width` x `height` GL_BITMAP image (glBitmap's, GL 1.5 section 3.6.4) by the unpack
+// modes into one byte a pixel, 1 for a set bit (row 0 first): rows of GL_UNPACK_ROW_LENGTH bits
+// (or `width`) padded to whole bytes and to the alignment, after GL_UNPACK_SKIP_ROWS rows and
+// GL_UNPACK_SKIP_PIXELS bits, each byte's bits from the most significant unless
+// GL_UNPACK_LSB_FIRST.
+void unpackBitmap(const PixelStore& store, int width, int height, const void* data, unsigned char* bits);
+
+// Reads a `width` x `height` image of indices (GL_STENCIL_INDEX, GL_COLOR_INDEX) by the unpack
+// modes into integers (row 0 first): each component as it is (a float truncated), a GL_BITMAP
+// image's bits as 0 and 1.
+void unpackIndices(const PixelStore& store, GLenum type, int width, int height, const void* data, uint32_t* out);
 
 }  // namespace pf

@@ -67,6 +67,19 @@ void rowChannels(PFcontextRec& ctx) {
     ctx.vertex_lighting.add(row, eye, n, ctx.lighting.material[0],
                             ctx.back_color_channel >= 0 ? &ctx.lighting.material[1] : nullptr);
   }
+  if (const PixelFragment* f = ctx.pixel_fragment) {
+    // A pixel rectangle's fragment: its colour, the raster position's texture coordinates as
+    // glRasterPos computed them and its distance as the fog coordinate.
+    for (const ShadingChannel& s : ctx.shading) {
+      float* dst = out + s.first;
+      const glm::vec4 v = s.param == kFogCoordChannel    ? glm::vec4(f->fog, 0.0f, 0.0f, 0.0f)
+                          : s.param == ctx.color_param    ? f->color
+                          : s.param == ctx.texcoord_param ? f->texcoord
+                                                          : glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+      for (int k = 0; k < 4; ++k) dst[k] = v[k];
+    }
+    return;
+  }
   for (const ShadingChannel& s : ctx.shading) {
     float* dst = out + s.first;
     if (s.param == kFogCoordChannel) {

@@ -3,7 +3,7 @@
 // are NaN, infinite or huge, matrix stacks pushed and popped past their ends, degenerate
 // projections, bad enums and names, sequence points, compiles, clears and finishes, the
 // per-fragment operations' state with any values (scissor, alpha test, blending, logic op,
-// stencil), a glBegin of very many vertices -- run on a small context. Nothing may crash, hang or trip ASan/UBSan, and
+// stencil), the raster position and pixel rectangles, a glBegin of very many vertices -- run on a small context. Nothing may crash, hang or trip ASan/UBSan, and
 // GL's rules are checked (the checks trap, which libFuzzer reports): a glBegin whose only erring
 // command is one GL does not allow there leaves exactly GL_INVALID_OPERATION at glEnd, and the
 // glBegin of very many vertices leaves no error.
@@ -13,6 +13,7 @@
 #include <fuzzer/FuzzedDataProvider.h>
 #include <primflow/gl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -257,8 +258,51 @@ void accumulation(FuzzedDataProvider& in) {
   }
 }
 
+// The raster position and pixel rectangles, any values: glRasterPos of NaN, infinite and huge
+// coordinates (culled or not) and glWindowPos anywhere, then bitmaps of any size (negative too)
+// and origin and move, with or without data, possibly compiled into a list and called.
+void pixelRectangles(FuzzedDataProvider& in) {
+  static std::vector<unsigned char> image(4096);
+  for (size_t i = 0; i < image.size(); i += 7) image[i] = static_cast<unsigned char>(i * 29);
+  // At most 40 x 40 bits with unpack skips of at most 4 pixels and alignment 8: within the buffer.
+  const GLsizei w = in.ConsumeIntegralInRange<GLsizei>(-2, 40), h = in.ConsumeIntegralInRange<GLsizei>(-2, 40);
+  const unsigned char* data = in.ConsumeBool() ? image.data() : nullptr;
+  static const GLenum kFormats[] = {GL_RGBA, GL_RGB, GL_LUMINANCE, GL_ALPHA, GL_DEPTH_COMPONENT, GL_STENCIL_INDEX,
+                                    GL_COLOR_INDEX, 0x1234};
+  static const GLenum kTypes[] = {GL_UNSIGNED_BYTE, GL_FLOAT, GL_SHORT, GL_UNSIGNED_SHORT_5_6_5, GL_BITMAP, 0x1234};
+  // (At most 40 x 40 pixels of 16 bytes would not fit: images at most 12 x 12, 16 bytes a pixel,
+  // with skips of at most 4 pixels, alignment 8: within the buffer.)
+  const GLsizei iw = std::min<GLsizei>(w, 12), ih = std::min<GLsizei>(h, 12);
+  switch (in.ConsumeIntegralInRange<int>(0, 8)) {
+    case 5:
+      pfglDrawPixels(iw, ih, kFormats[in.ConsumeIntegralInRange<size_t>(0, 7)],
+                     kTypes[in.ConsumeIntegralInRange<size_t>(0, 5)], data);
+      break;
+    case 6:
+      pfglCopyPixels(in.ConsumeIntegralInRange<GLint>(-30, 30), in.ConsumeIntegralInRange<GLint>(-30, 30), w, h,
+                     in.ConsumeBool() ? GL_COLOR : in.ConsumeBool() ? GL_DEPTH : in.ConsumeBool() ? GL_STENCIL : 0x1234);
+      break;
+    case 7: pfglPixelZoom(aFloat(in), aFloat(in)); break;
+    case 8: pfglPixelZoom(in.ConsumeFloatingPointInRange<float>(-3.0f, 3.0f), in.ConsumeFloatingPointInRange<float>(-3.0f, 3.0f)); break;
+    case 0: pfglRasterPos4f(aFloat(in), aFloat(in), aFloat(in), aFloat(in)); break;
+    case 1: pfglRasterPos2i(in.ConsumeIntegralInRange<GLint>(-30, 30), in.ConsumeIntegralInRange<GLint>(-30, 30)); break;
+    case 2: pfglWindowPos3f(aFloat(in) * 10.0f, aFloat(in) * 10.0f, aFloat(in)); break;
+    case 3:
+      pfglBitmap(w, h, aFloat(in), aFloat(in), aFloat(in) * 10.0f, aFloat(in) * 10.0f, data);
+      break;
+    default: {
+      const bool execute = in.ConsumeBool();
+      pfglNewList(7, execute ? GL_COMPILE_AND_EXECUTE : GL_COMPILE);
+      pfglBitmap(w, h, aFloat(in), aFloat(in), aFloat(in), aFloat(in), data);
+      pfglEndList();
+      pfglCallList(7);
+      break;
+    }
+  }
+}
+
 void oneCall(FuzzedDataProvider& in, bool& huge_drawn) {
-  switch (in.ConsumeIntegralInRange<int>(0, 24)) {
+  switch (in.ConsumeIntegralInRange<int>(0, 25)) {
     case 0: oneBegin(in, in.ConsumeBool()); break;
     case 19: hugeBegin(in, huge_drawn); break;
     case 1: pfglBegin(in.ConsumeIntegral<GLenum>()); break;  // any enum, a primitive's mode or none
@@ -306,6 +350,7 @@ void oneCall(FuzzedDataProvider& in, bool& huge_drawn) {
     case 21: textureState(in); break;
     case 22: fogClipState(in); break;
     case 23: accumulation(in); break;
+    case 24: pixelRectangles(in); break;
     default: pfglFinish(); break;
   }
 }

@@ -67,6 +67,60 @@ void pfglFogiv(GLenum pname, const GLint *params);
 void pfglClipPlane(GLenum plane, const GLdouble *equation);
 void pfglGetClipPlane(GLenum plane, GLdouble *equation);
 
+/* The current raster position (GL 1.5 section 2.13; glWindowPos: GL 1.4): glRasterPos transforms
+ * and clips a vertex as a point's, taking its colour (lit under GL_LIGHTING), texture
+ * coordinates and eye distance; glWindowPos sets window coordinates directly (docs/api.md,
+ * "Raster position"). */
+void pfglRasterPos2s(GLshort x, GLshort y);
+void pfglRasterPos2sv(const GLshort *v);
+void pfglRasterPos2i(GLint x, GLint y);
+void pfglRasterPos2iv(const GLint *v);
+void pfglRasterPos2f(GLfloat x, GLfloat y);
+void pfglRasterPos2fv(const GLfloat *v);
+void pfglRasterPos2d(GLdouble x, GLdouble y);
+void pfglRasterPos2dv(const GLdouble *v);
+void pfglRasterPos3s(GLshort x, GLshort y, GLshort z);
+void pfglRasterPos3sv(const GLshort *v);
+void pfglRasterPos3i(GLint x, GLint y, GLint z);
+void pfglRasterPos3iv(const GLint *v);
+void pfglRasterPos3f(GLfloat x, GLfloat y, GLfloat z);
+void pfglRasterPos3fv(const GLfloat *v);
+void pfglRasterPos3d(GLdouble x, GLdouble y, GLdouble z);
+void pfglRasterPos3dv(const GLdouble *v);
+void pfglRasterPos4s(GLshort x, GLshort y, GLshort z, GLshort w);
+void pfglRasterPos4sv(const GLshort *v);
+void pfglRasterPos4i(GLint x, GLint y, GLint z, GLint w);
+void pfglRasterPos4iv(const GLint *v);
+void pfglRasterPos4f(GLfloat x, GLfloat y, GLfloat z, GLfloat w);
+void pfglRasterPos4fv(const GLfloat *v);
+void pfglRasterPos4d(GLdouble x, GLdouble y, GLdouble z, GLdouble w);
+void pfglRasterPos4dv(const GLdouble *v);
+void pfglWindowPos2s(GLshort x, GLshort y);
+void pfglWindowPos2sv(const GLshort *v);
+void pfglWindowPos2i(GLint x, GLint y);
+void pfglWindowPos2iv(const GLint *v);
+void pfglWindowPos2f(GLfloat x, GLfloat y);
+void pfglWindowPos2fv(const GLfloat *v);
+void pfglWindowPos2d(GLdouble x, GLdouble y);
+void pfglWindowPos2dv(const GLdouble *v);
+void pfglWindowPos3s(GLshort x, GLshort y, GLshort z);
+void pfglWindowPos3sv(const GLshort *v);
+/* Pixel rectangles at the raster position (GL 1.5 sections 3.6 and 3.7), drawn as instances of
+ * the built-in primitive pixel_rectangle through the per-fragment operations: glBitmap and
+ * glDrawPixels unpacked by glPixelStore's unpack modes, glCopyPixels, both zoomed by
+ * glPixelZoom (docs/api.md, "Raster position and pixel rectangles"). */
+void pfglBitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat xmove, GLfloat ymove,
+                const GLubyte *bitmap);
+void pfglDrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum type, const GLvoid *pixels);
+void pfglCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type);
+void pfglPixelZoom(GLfloat xfactor, GLfloat yfactor);
+void pfglWindowPos3i(GLint x, GLint y, GLint z);
+void pfglWindowPos3iv(const GLint *v);
+void pfglWindowPos3f(GLfloat x, GLfloat y, GLfloat z);
+void pfglWindowPos3fv(const GLfloat *v);
+void pfglWindowPos3d(GLdouble x, GLdouble y, GLdouble z);
+void pfglWindowPos3dv(const GLdouble *v);
+
 /* Hints: kept and read back (nothing primflow draws depends on them). Attribute stacks, 16 deep:
  * the groups primflow has (docs/api.md, "Attribute stacks"); glPushAttrib / glPopAttrib are
  * recorded in display lists, the client forms are not. */
