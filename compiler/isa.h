@@ -105,6 +105,9 @@ enum class StateValue : uint16_t {
   DepthNear, DepthFar,
   // 1 or 0: culled() and flat_shading() read these
   CullFront, CullBack, FrontFaceCCW, FlatShading,
+  // The rasterized width of lines and size of points (line_width(), point_size()): glLineWidth
+  // and glPointSize as the API rounds and clamps them (api/src/raster_modes.h), whole pixels
+  LineWidth, PointSize,
   // 16 elements each (column-major): InvProjection + k (eye()), Projection + k (clip()),
   // InvModelview + k (object(), eye_normal()), Modelview + k (eye_from_object())
   InvProjection, Projection = InvProjection + 16, InvModelview = Projection + 16, Modelview = InvModelview + 16

@@ -436,6 +436,8 @@ Binding Lowerer::call(const Expr& e) {
     return none;
   }
   if (f == "flat_shading") return scalar(e.type, stateOn(StateValue::FlatShading));
+  if (f == "line_width") return scalar(e.type, state(StateValue::LineWidth));
+  if (f == "point_size") return scalar(e.type, state(StateValue::PointSize));
   if (f == "unscreen") {
     // x = (X - w * offset) / scale, per axis; w stays.
     const std::vector<int>& p = args[0].comps;

@@ -26,6 +26,8 @@ float stateValue(const RasterState& s, uint16_t which) {
     case StateValue::CullBack: return s.cull_back ? 1.0f : 0.0f;
     case StateValue::FrontFaceCCW: return s.front_ccw ? 1.0f : 0.0f;
     case StateValue::FlatShading: return s.flat_shading ? 1.0f : 0.0f;
+    case StateValue::LineWidth: return s.line_width;
+    case StateValue::PointSize: return s.point_size;
     default: return 0.0f;
   }
 }

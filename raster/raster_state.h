@@ -27,6 +27,9 @@ struct RasterState {
   DepthFunc depth_func = DepthFunc::Less;
   // Polygon state the primitives read (culled(), flat_shading()).
   bool cull_front = false, cull_back = false, front_ccw = true, flat_shading = false;
+  // The width of lines and the size of points in whole pixels, as rasterized (line_width(),
+  // point_size(); api/src/raster_modes.h rounds and clamps glLineWidth and glPointSize).
+  float line_width = 1.0f, point_size = 1.0f;
   // Colour channels written (bit k: channel k of RGBA). The renderer keeps one mask per flush,
   // so that the deferred shading pass writes every pixel with the mask its instance had.
   uint8_t color_mask = 0xf;

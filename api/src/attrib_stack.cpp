@@ -41,6 +41,7 @@ void pushAttrib(PFcontextRec& ctx, GLbitfield mask) {
   s.texture = ctx.textures.a;
   s.fog = ctx.fog;
   s.clip = ctx.clip;
+  s.raster_modes = ctx.raster_modes;
   try {
     ctx.attrib_stack.push_back(s);
   } catch (const std::bad_alloc&) {
@@ -97,6 +98,8 @@ void popAttrib(PFcontextRec& ctx) {
     std::copy(std::begin(s.clip.enabled), std::end(s.clip.enabled), ctx.clip.enabled);
   }
   if (m & GL_FOG_BIT) ctx.fog = s.fog;  // (the enable included)
+  if (m & GL_POINT_BIT) ctx.raster_modes.point_size = s.raster_modes.point_size;
+  if (m & GL_LINE_BIT) ctx.raster_modes.line_width = s.raster_modes.line_width;
   if (m & GL_TEXTURE_BIT) {  // the bindings, the environment, the generation (enables included)
     ctx.textures.a = s.texture;
     // (A binding to a texture deleted since is the default texture's.)

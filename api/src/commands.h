@@ -84,6 +84,9 @@ Values<T, N> valuesOf(const U* p, int n, GLint count) {
   /* glClipPlane's equation as given                                               */        \
   X(Fog, fog, GLenum, Values4f)                                                           \
   X(ClipPlane, clipPlane, GLenum, Values4d)                                               \
+  /* raster_mode_commands.cpp */                                                          \
+  X(PointSize, pointSize, GLfloat)                                                        \
+  X(LineWidth, lineWidth, GLfloat)                                                        \
   /* attrib_stack.cpp */                                                                  \
   X(PushAttrib, pushAttrib, GLbitfield)                                                   \
   X(PopAttrib, popAttrib)                                                                 \

@@ -56,12 +56,10 @@ constexpr Constant kConstants[] = {
     {GL_COLOR_SUM, 1, {kFalse}, kCapability},
     {GL_LIGHT_MODEL_COLOR_CONTROL, 1, {GL_SINGLE_COLOR}},
     // Points, lines, polygons: size and width 1, no smoothing, stipple, modes or offset.
-    {GL_POINT_SIZE, 1, {1}},
     {GL_POINT_SMOOTH, 1, {kFalse}, kCapability},
     {GL_POINT_SIZE_MIN, 1, {0}},
     {GL_POINT_FADE_THRESHOLD_SIZE, 1, {1}},
     {GL_POINT_DISTANCE_ATTENUATION, 3, {1, 0, 0}},
-    {GL_LINE_WIDTH, 1, {1}},
     {GL_LINE_SMOOTH, 1, {kFalse}, kCapability},
     {GL_LINE_STIPPLE, 1, {kFalse}, kCapability},
     {GL_LINE_STIPPLE_PATTERN, 1, {65535}},
@@ -164,7 +162,7 @@ constexpr Constant kConstants[] = {
     {GL_FEEDBACK_BUFFER_SIZE, 1, {0}},
     {GL_FEEDBACK_BUFFER_TYPE, 1, {GL_2D}},
     // primflow's limits for what it does not have (not OSMesa's): no 3D or cube map textures,
-    // evaluators or selection names; points and lines of size 1; pixel maps of their one entry.
+    // evaluators or selection names; pixel maps of their one entry.
     {GL_MAX_3D_TEXTURE_SIZE, 1, {0}},
     {GL_MAX_CUBE_MAP_TEXTURE_SIZE, 1, {0}},
     {GL_MAX_TEXTURE_UNITS, 1, {1}},
@@ -175,12 +173,6 @@ constexpr Constant kConstants[] = {
     {GL_MAX_NAME_STACK_DEPTH, 1, {0}},
     {GL_MAX_EVAL_ORDER, 1, {0}},
     {GL_POINT_SIZE_MAX, 1, {1}},
-    {GL_ALIASED_POINT_SIZE_RANGE, 2, {1, 1}},
-    {GL_SMOOTH_POINT_SIZE_RANGE, 2, {1, 1}},
-    {GL_SMOOTH_POINT_SIZE_GRANULARITY, 1, {0}},
-    {GL_ALIASED_LINE_WIDTH_RANGE, 2, {1, 1}},
-    {GL_SMOOTH_LINE_WIDTH_RANGE, 2, {1, 1}},
-    {GL_SMOOTH_LINE_WIDTH_GRANULARITY, 1, {0}},
     // (no limit on a glDrawElements: the recommendation is the largest count)
     {GL_MAX_ELEMENTS_INDICES, 1, {2147483647}},
     {GL_MAX_ELEMENTS_VERTICES, 1, {2147483647}},

@@ -15,6 +15,7 @@
 
 #include "api/src/display_lists.h"
 #include "api/src/fog_clip.h"
+#include "api/src/raster_modes.h"
 #include "api/src/textures.h"
 #include "api/src/vertex_lighting.h"
 #include "raster/lighting.h"
@@ -132,6 +133,7 @@ struct AttribState {
   TextureAttribs texture;                            // GL_TEXTURE_BIT (the enables: GL_ENABLE_BIT too)
   FogState fog;                                      // GL_FOG_BIT (the enable: GL_ENABLE_BIT too)
   ClipPlaneState clip;                               // GL_TRANSFORM_BIT (the enables: GL_ENABLE_BIT too)
+  RasterModes raster_modes;                          // GL_POINT_BIT, GL_LINE_BIT (raster_modes.h)
 };
 
 // glPixelStore's modes for one direction (GL 1.5 table 3.1): pack (glReadPixels writes by
@@ -235,6 +237,7 @@ struct PFcontextRec {
   pf::TextureState textures;
   pf::FogState fog;
   pf::ClipPlaneState clip;
+  pf::RasterModes raster_modes;
   pf::DisplayLists lists;
   GLenum hints[pf::kHintCount] = {GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE,
                                   GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE};

@@ -151,6 +151,7 @@ pf::RasterState PFcontextRec::rasterState() const {
     s.modelview[k] = modelview.top[k / 4][k % 4];
   }
   pf::windowClipPlanes(clip, s.projection, s);
+  pf::applyRasterModes(raster_modes, s);
   return s;
 }
 

@@ -3,7 +3,7 @@
 // are NaN, infinite or huge, matrix stacks pushed and popped past their ends, degenerate
 // projections, bad enums and names, sequence points, compiles, clears and finishes, the
 // per-fragment operations' state with any values (scissor, alpha test, blending, logic op,
-// stencil), a glBegin of very many vertices -- run on a small context. Nothing may crash, hang or trip ASan/UBSan, and
+// stencil), point sizes and line widths, a glBegin of very many vertices -- run on a small context. Nothing may crash, hang or trip ASan/UBSan, and
 // GL's rules are checked (the checks trap, which libFuzzer reports): a glBegin whose only erring
 // command is one GL does not allow there leaves exactly GL_INVALID_OPERATION at glEnd, and the
 // glBegin of very many vertices leaves no error.
@@ -245,8 +245,22 @@ void fogClipState(FuzzedDataProvider& in) {
   }
 }
 
+// Points and lines, any values: sizes and widths NaN, infinite, huge, zero or negative; then a
+// point and a line drawn with them.
+void rasterModeState(FuzzedDataProvider& in) {
+  switch (in.ConsumeIntegralInRange<int>(0, 2)) {
+    case 0: pfglPointSize(in.ConsumeBool() ? aFloat(in) : in.ConsumeFloatingPointInRange<float>(0.0f, 300.0f)); break;
+    case 1: pfglLineWidth(in.ConsumeBool() ? aFloat(in) : in.ConsumeFloatingPointInRange<float>(0.0f, 300.0f)); break;
+    default:
+      pfglBegin(in.ConsumeBool() ? GL_POINTS : GL_LINE_LOOP);
+      for (int k = in.ConsumeIntegralInRange<int>(0, 4); k > 0; --k) pfglVertex2f(aFloat(in), aFloat(in));
+      pfglEnd();
+      break;
+  }
+}
+
 void oneCall(FuzzedDataProvider& in, bool& huge_drawn) {
-  switch (in.ConsumeIntegralInRange<int>(0, 23)) {
+  switch (in.ConsumeIntegralInRange<int>(0, 24)) {
     case 0: oneBegin(in, in.ConsumeBool()); break;
     case 19: hugeBegin(in, huge_drawn); break;
     case 1: pfglBegin(in.ConsumeIntegral<GLenum>()); break;  // any enum, a primitive's mode or none
@@ -293,6 +307,7 @@ void oneCall(FuzzedDataProvider& in, bool& huge_drawn) {
     case 20: fragmentState(in); break;
     case 21: textureState(in); break;
     case 22: fogClipState(in); break;
+    case 23: rasterModeState(in); break;
     default: pfglFinish(); break;
   }
 }

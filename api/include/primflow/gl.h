@@ -64,6 +64,12 @@ void pfglFogiv(GLenum pname, const GLint *params);
 void pfglClipPlane(GLenum plane, const GLdouble *equation);
 void pfglGetClipPlane(GLenum plane, GLdouble *equation);
 
+/* Points and lines (GL 1.5 sections 3.4, 3.5), aliased: glPointSize squares, glLineWidth runs
+ * of pixels across the minor axis, rounded as OSMesa rounds them (docs/api.md, "Points and
+ * lines"). */
+void pfglPointSize(GLfloat size);
+void pfglLineWidth(GLfloat width);
+
 /* Hints: kept and read back (nothing primflow draws depends on them). Attribute stacks, 16 deep:
  * the groups primflow has (docs/api.md, "Attribute stacks"); glPushAttrib / glPopAttrib are
  * recorded in display lists, the client forms are not. */

@@ -44,6 +44,8 @@
 #define glFogiv pfglFogiv
 #define glClipPlane pfglClipPlane
 #define glGetClipPlane pfglGetClipPlane
+#define glPointSize pfglPointSize
+#define glLineWidth pfglLineWidth
 #define glScissor pfglScissor
 #define glAlphaFunc pfglAlphaFunc
 #define glBlendFunc pfglBlendFunc

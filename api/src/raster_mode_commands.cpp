@@ -1,0 +1,69 @@
+// Points and lines (GL 1.5 sections 3.4 and 3.5): glPointSize and glLineWidth with OSMesa's
+// errors, their glGet values, and the widths a draw rasterizes (raster_modes.h). The primitives
+// that draw them are primitives/points.pfl and primitives/lines.pfl (point_size(),
+// line_width()); the attribute groups are in attrib_stack.cpp.
+#include <cmath>
+
+#include <primflow/gl.h>
+
+#include "api/src/commands.h"
+#include "api/src/context_state.h"
+#include "api/src/raster_modes.h"
+
+namespace pf {
+
+namespace cmd {
+
+// As Mesa: a width or size of 0 or less is GL_INVALID_VALUE; any other (NaN, 1000) is kept
+// as given, and clamped only where drawn.
+void lineWidth(PFcontextRec& ctx, GLfloat width) {
+  if (!outsideBegin(ctx)) return;
+  if (width <= 0.0f) return ctx.setError(GL_INVALID_VALUE);
+  ctx.raster_modes.line_width = width;
+}
+
+void pointSize(PFcontextRec& ctx, GLfloat size) {
+  if (!outsideBegin(ctx)) return;
+  if (size <= 0.0f) return ctx.setError(GL_INVALID_VALUE);
+  ctx.raster_modes.point_size = size;
+}
+
+}  // namespace cmd
+
+bool rasterModeQuery(const RasterModes& m, GLenum pname, Query& q) {
+  switch (pname) {
+    case GL_POINT_SIZE: q.set({m.point_size}); return true;
+    case GL_LINE_WIDTH: q.set({m.line_width}); return true;
+    case GL_ALIASED_POINT_SIZE_RANGE: case GL_SMOOTH_POINT_SIZE_RANGE: q.set({1.0, kMaxPointSize}); return true;
+    case GL_ALIASED_LINE_WIDTH_RANGE: case GL_SMOOTH_LINE_WIDTH_RANGE: q.set({1.0, kMaxLineWidth}); return true;
+    case GL_SMOOTH_POINT_SIZE_GRANULARITY: case GL_SMOOTH_LINE_WIDTH_GRANULARITY:
+      q.set({kWidthGranularity});
+      return true;
+    default: return false;
+  }
+}
+
+float rasterLineWidth(float width) {
+  if (!(width >= 1.0f)) return 1.0f;
+  return std::round(std::fmin(width, kMaxLineWidth));
+}
+
+float rasterPointSize(float size) {
+  if (!(size >= 1.0f)) return 1.0f;
+  const float fixed = std::round(std::fmin(size, kMaxPointSize) * 256.0f);  // 1/256 pixel
+  return std::floor((fixed + 127.0f) / 256.0f);
+}
+
+void applyRasterModes(const RasterModes& m, RasterState& s) {
+  s.line_width = rasterLineWidth(m.line_width);
+  s.point_size = rasterPointSize(m.point_size);
+}
+
+}  // namespace pf
+
+extern "C" {
+
+void pfglLineWidth(GLfloat width) { pf::dispatch<pf::GlOp::LineWidth>(width); }
+void pfglPointSize(GLfloat size) { pf::dispatch<pf::GlOp::PointSize>(size); }
+
+}  // extern "C"
