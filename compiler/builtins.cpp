@@ -196,6 +196,10 @@ void typeBuiltinCall(Expr& e, UnitKind unit, const std::function<void(SourceLoc,
       return;
     }
     e.type = Type::of(BaseType::Point);
+  } else if (f == "line_stipple") {
+    // glLineStipple: vector(pattern, factor, 1 where GL_LINE_STIPPLE is enabled, else 0).
+    if (!arity(0, 0)) return;
+    e.type = Type::of(BaseType::Vector);
   } else if (f == "line_width" || f == "point_size") {
     // glLineWidth / glPointSize as rasterized: whole pixels, rounded and clamped as the API says.
     if (!arity(0, 0)) return;

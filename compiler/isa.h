@@ -108,6 +108,9 @@ enum class StateValue : uint16_t {
   // The rasterized width of lines and size of points (line_width(), point_size()): glLineWidth
   // and glPointSize as the API rounds and clamps them (api/src/raster_modes.h), whole pixels
   LineWidth, PointSize,
+  // glLineStipple (line_stipple()): the pattern (0 - 65535), the repeat factor (1 - 256), and 1
+  // or 0 for GL_LINE_STIPPLE
+  LineStipplePattern, LineStippleFactor, LineStippleOn,
   // 16 elements each (column-major): InvProjection + k (eye()), Projection + k (clip()),
   // InvModelview + k (object(), eye_normal()), Modelview + k (eye_from_object())
   InvProjection, Projection = InvProjection + 16, InvModelview = Projection + 16, Modelview = InvModelview + 16

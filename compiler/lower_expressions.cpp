@@ -465,6 +465,13 @@ Binding Lowerer::call(const Expr& e) {
     // The transpose of the inverse modelview's upper 3x3 times the normal.
     return scalarMatrixTimes(e.type, StateValue::InvModelview, args[0].comps, 3, true);
   }
+  if (f == "line_stipple") {
+    Binding out;
+    out.type = e.type;
+    out.comps = {state(StateValue::LineStipplePattern), state(StateValue::LineStippleFactor),
+                 state(StateValue::LineStippleOn)};
+    return out;
+  }
   if (f == "depth_range") {
     Binding out;
     out.type = e.type;

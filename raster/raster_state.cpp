@@ -28,6 +28,9 @@ float stateValue(const RasterState& s, uint16_t which) {
     case StateValue::FlatShading: return s.flat_shading ? 1.0f : 0.0f;
     case StateValue::LineWidth: return s.line_width;
     case StateValue::PointSize: return s.point_size;
+    case StateValue::LineStipplePattern: return s.line_stipple_pattern;
+    case StateValue::LineStippleFactor: return s.line_stipple_factor;
+    case StateValue::LineStippleOn: return s.line_stipple ? 1.0f : 0.0f;
     default: return 0.0f;
   }
 }

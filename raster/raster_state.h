@@ -30,6 +30,10 @@ struct RasterState {
   // The width of lines and the size of points in whole pixels, as rasterized (line_width(),
   // point_size(); api/src/raster_modes.h rounds and clamps glLineWidth and glPointSize).
   float line_width = 1.0f, point_size = 1.0f;
+  // glLineStipple under GL_LINE_STIPPLE (line_stipple()): the 16-bit pattern and the repeat
+  // factor, as numbers.
+  bool line_stipple = false;
+  float line_stipple_pattern = 65535.0f, line_stipple_factor = 1.0f;
   // Colour channels written (bit k: channel k of RGBA). The renderer keeps one mask per flush,
   // so that the deferred shading pass writes every pixel with the mask its instance had.
   uint8_t color_mask = 0xf;

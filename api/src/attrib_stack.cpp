@@ -95,11 +95,17 @@ void popAttrib(PFcontextRec& ctx) {
     for (int k = 0; k < 4; ++k) t.gen[k].enabled = s.texture.gen[k].enabled;
     ctx.textures.dirty = true;
     ctx.fog.enabled = s.fog.enabled;
+    ctx.raster_modes.line_stipple = s.raster_modes.line_stipple;
     std::copy(std::begin(s.clip.enabled), std::end(s.clip.enabled), ctx.clip.enabled);
   }
   if (m & GL_FOG_BIT) ctx.fog = s.fog;  // (the enable included)
   if (m & GL_POINT_BIT) ctx.raster_modes.point_size = s.raster_modes.point_size;
-  if (m & GL_LINE_BIT) ctx.raster_modes.line_width = s.raster_modes.line_width;
+  if (m & GL_LINE_BIT) {  // the width, the stipple and its enable
+    ctx.raster_modes.line_width = s.raster_modes.line_width;
+    ctx.raster_modes.line_stipple = s.raster_modes.line_stipple;
+    ctx.raster_modes.stipple_factor = s.raster_modes.stipple_factor;
+    ctx.raster_modes.stipple_pattern = s.raster_modes.stipple_pattern;
+  }
   if (m & GL_TEXTURE_BIT) {  // the bindings, the environment, the generation (enables included)
     ctx.textures.a = s.texture;
     // (A binding to a texture deleted since is the default texture's.)

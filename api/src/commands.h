@@ -87,6 +87,7 @@ Values<T, N> valuesOf(const U* p, int n, GLint count) {
   /* raster_mode_commands.cpp */                                                          \
   X(PointSize, pointSize, GLfloat)                                                        \
   X(LineWidth, lineWidth, GLfloat)                                                        \
+  X(LineStipple, lineStipple, GLint, GLushort)                                            \
   /* attrib_stack.cpp */                                                                  \
   X(PushAttrib, pushAttrib, GLbitfield)                                                   \
   X(PopAttrib, popAttrib)                                                                 \

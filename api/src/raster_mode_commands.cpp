@@ -1,4 +1,4 @@
-// Points and lines (GL 1.5 sections 3.4 and 3.5): glPointSize and glLineWidth with OSMesa's
+// Points and lines (GL 1.5 sections 3.4 and 3.5): glPointSize, glLineWidth and glLineStipple with OSMesa's
 // errors, their glGet values, and the widths a draw rasterizes (raster_modes.h). The primitives
 // that draw them are primitives/points.pfl and primitives/lines.pfl (point_size(),
 // line_width()); the attribute groups are in attrib_stack.cpp.
@@ -28,12 +28,22 @@ void pointSize(PFcontextRec& ctx, GLfloat size) {
   ctx.raster_modes.point_size = size;
 }
 
+// As Mesa: the factor clamped to [1, 256]; no error but inside glBegin.
+void lineStipple(PFcontextRec& ctx, GLint factor, GLushort pattern) {
+  if (!outsideBegin(ctx)) return;
+  ctx.raster_modes.stipple_factor = factor < 1 ? 1 : factor > 256 ? 256 : factor;
+  ctx.raster_modes.stipple_pattern = pattern;
+}
+
 }  // namespace cmd
 
 bool rasterModeQuery(const RasterModes& m, GLenum pname, Query& q) {
   switch (pname) {
     case GL_POINT_SIZE: q.set({m.point_size}); return true;
     case GL_LINE_WIDTH: q.set({m.line_width}); return true;
+    case GL_LINE_STIPPLE: q.set({m.line_stipple ? 1.0 : 0.0}); return true;
+    case GL_LINE_STIPPLE_PATTERN: q.set({double(m.stipple_pattern)}); return true;
+    case GL_LINE_STIPPLE_REPEAT: q.set({double(m.stipple_factor)}); return true;
     case GL_ALIASED_POINT_SIZE_RANGE: case GL_SMOOTH_POINT_SIZE_RANGE: q.set({1.0, kMaxPointSize}); return true;
     case GL_ALIASED_LINE_WIDTH_RANGE: case GL_SMOOTH_LINE_WIDTH_RANGE: q.set({1.0, kMaxLineWidth}); return true;
     case GL_SMOOTH_POINT_SIZE_GRANULARITY: case GL_SMOOTH_LINE_WIDTH_GRANULARITY:
@@ -57,6 +67,9 @@ float rasterPointSize(float size) {
 void applyRasterModes(const RasterModes& m, RasterState& s) {
   s.line_width = rasterLineWidth(m.line_width);
   s.point_size = rasterPointSize(m.point_size);
+  s.line_stipple = m.line_stipple;
+  s.line_stipple_pattern = static_cast<float>(m.stipple_pattern);
+  s.line_stipple_factor = static_cast<float>(m.stipple_factor);
 }
 
 }  // namespace pf
@@ -65,5 +78,6 @@ extern "C" {
 
 void pfglLineWidth(GLfloat width) { pf::dispatch<pf::GlOp::LineWidth>(width); }
 void pfglPointSize(GLfloat size) { pf::dispatch<pf::GlOp::PointSize>(size); }
+void pfglLineStipple(GLint factor, GLushort pattern) { pf::dispatch<pf::GlOp::LineStipple>(factor, pattern); }
 
 }  // extern "C"

@@ -21,11 +21,14 @@ constexpr float kWidthGranularity = 0.1f;
 // too), OSMesa's initial values. Sizes are kept as given (glGet reads them back); a draw rounds.
 struct RasterModes {
   float point_size = 1.0f;  // GL_POINT_BIT
-  float line_width = 1.0f;  // GL_LINE_BIT
+  float line_width = 1.0f;  // GL_LINE_BIT, with the stipple and its enable
+  bool line_stipple = false;
+  GLint stipple_factor = 1;  // clamped to [1, 256] when set, as Mesa keeps it
+  GLushort stipple_pattern = 0xffff;
 };
 
-// The glGet* values (GL_POINT_SIZE, GL_LINE_WIDTH, the ranges and granularities); false for
-// another pname.
+// The glGet* values (GL_POINT_SIZE, GL_LINE_WIDTH, the ranges and granularities, the line
+// stipple and its enable); false for another pname.
 bool rasterModeQuery(const RasterModes& m, GLenum pname, Query& q);
 
 // The line width a draw rasterizes: the width clamped to [1, 255] and rounded to the nearest
@@ -36,7 +39,7 @@ float rasterLineWidth(float width);
 // 2.5 draw 1 and 2, 1.51 draws 2); NaN draws 1.
 float rasterPointSize(float size);
 
-// Sets the draw's line_width and point_size.
+// Sets the draw's line_width, point_size and line stipple.
 void applyRasterModes(const RasterModes& m, RasterState& s);
 
 }  // namespace pf

@@ -3,7 +3,7 @@
 // are NaN, infinite or huge, matrix stacks pushed and popped past their ends, degenerate
 // projections, bad enums and names, sequence points, compiles, clears and finishes, the
 // per-fragment operations' state with any values (scissor, alpha test, blending, logic op,
-// stencil), point sizes and line widths, a glBegin of very many vertices -- run on a small context. Nothing may crash, hang or trip ASan/UBSan, and
+// stencil), point sizes, line widths and stipples, a glBegin of very many vertices -- run on a small context. Nothing may crash, hang or trip ASan/UBSan, and
 // GL's rules are checked (the checks trap, which libFuzzer reports): a glBegin whose only erring
 // command is one GL does not allow there leaves exactly GL_INVALID_OPERATION at glEnd, and the
 // glBegin of very many vertices leaves no error.
@@ -245,11 +245,15 @@ void fogClipState(FuzzedDataProvider& in) {
   }
 }
 
-// Points and lines, any values: sizes and widths NaN, infinite, huge, zero or negative; then a
-// point and a line drawn with them.
+// Points and lines, any values: sizes and widths NaN, infinite, huge, zero or negative, any
+// stipple factor and pattern; then a point and a line drawn with them.
 void rasterModeState(FuzzedDataProvider& in) {
-  switch (in.ConsumeIntegralInRange<int>(0, 2)) {
+  switch (in.ConsumeIntegralInRange<int>(0, 3)) {
     case 0: pfglPointSize(in.ConsumeBool() ? aFloat(in) : in.ConsumeFloatingPointInRange<float>(0.0f, 300.0f)); break;
+    case 2:
+      pfglLineStipple(in.ConsumeIntegral<GLint>(), in.ConsumeIntegral<GLushort>());
+      (in.ConsumeBool() ? pfglEnable : pfglDisable)(GL_LINE_STIPPLE);
+      break;
     case 1: pfglLineWidth(in.ConsumeBool() ? aFloat(in) : in.ConsumeFloatingPointInRange<float>(0.0f, 300.0f)); break;
     default:
       pfglBegin(in.ConsumeBool() ? GL_POINTS : GL_LINE_LOOP);

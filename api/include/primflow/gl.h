@@ -65,10 +65,11 @@ void pfglClipPlane(GLenum plane, const GLdouble *equation);
 void pfglGetClipPlane(GLenum plane, GLdouble *equation);
 
 /* Points and lines (GL 1.5 sections 3.4, 3.5), aliased: glPointSize squares, glLineWidth runs
- * of pixels across the minor axis, rounded as OSMesa rounds them (docs/api.md, "Points and
- * lines"). */
+ * of pixels across the minor axis, rounded as OSMesa rounds them; glLineStipple under
+ * GL_LINE_STIPPLE (docs/api.md, "Points and lines"). */
 void pfglPointSize(GLfloat size);
 void pfglLineWidth(GLfloat width);
+void pfglLineStipple(GLint factor, GLushort pattern);
 
 /* Hints: kept and read back (nothing primflow draws depends on them). Attribute stacks, 16 deep:
  * the groups primflow has (docs/api.md, "Attribute stacks"); glPushAttrib / glPopAttrib are

@@ -46,6 +46,7 @@
 #define glGetClipPlane pfglGetClipPlane
 #define glPointSize pfglPointSize
 #define glLineWidth pfglLineWidth
+#define glLineStipple pfglLineStipple
 #define glScissor pfglScissor
 #define glAlphaFunc pfglAlphaFunc
 #define glBlendFunc pfglBlendFunc
