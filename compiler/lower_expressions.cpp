@@ -465,6 +465,22 @@ Binding Lowerer::call(const Expr& e) {
     // The transpose of the inverse modelview's upper 3x3 times the normal.
     return scalarMatrixTimes(e.type, StateValue::InvModelview, args[0].comps, 3, true);
   }
+  if (f == "polygon_mode") {
+    return scalar(e.type, emit(Op::Sel, ValueClass::F32, false, frontFacing(farg(0)), state(StateValue::PolygonModeFront),
+                               state(StateValue::PolygonModeBack)));
+  }
+  if (f == "polygon_offset") {
+    Binding out;
+    out.type = e.type;
+    out.comps = {state(StateValue::OffsetFactor), state(StateValue::OffsetUnits), constF(0.0f)};
+    return out;
+  }
+  if (f == "polygon_offset_modes") {
+    Binding out;
+    out.type = e.type;
+    out.comps = {state(StateValue::OffsetFill), state(StateValue::OffsetLine), state(StateValue::OffsetPoint)};
+    return out;
+  }
   if (f == "line_stipple") {
     Binding out;
     out.type = e.type;

@@ -96,6 +96,9 @@ void popAttrib(PFcontextRec& ctx) {
     ctx.textures.dirty = true;
     ctx.fog.enabled = s.fog.enabled;
     ctx.raster_modes.line_stipple = s.raster_modes.line_stipple;
+    ctx.raster_modes.offset_fill = s.raster_modes.offset_fill;
+    ctx.raster_modes.offset_line = s.raster_modes.offset_line;
+    ctx.raster_modes.offset_point = s.raster_modes.offset_point;
     std::copy(std::begin(s.clip.enabled), std::end(s.clip.enabled), ctx.clip.enabled);
   }
   if (m & GL_FOG_BIT) ctx.fog = s.fog;  // (the enable included)
@@ -119,10 +122,18 @@ void popAttrib(PFcontextRec& ctx) {
     ctx.depth_func = s.depth_func;
     ctx.clear_depth = s.clear_depth;
   }
-  if (m & GL_POLYGON_BIT) {
+  if (m & GL_POLYGON_BIT) {  // culling, the polygon modes, the offset and its enables
     ctx.cull = s.cull;
     ctx.cull_face = s.cull_face;
     ctx.front_face = s.front_face;
+    RasterModes& r = ctx.raster_modes;
+    const RasterModes& saved_r = s.raster_modes;
+    std::copy(std::begin(saved_r.polygon_mode), std::end(saved_r.polygon_mode), r.polygon_mode);
+    r.offset_factor = saved_r.offset_factor;
+    r.offset_units = saved_r.offset_units;
+    r.offset_fill = saved_r.offset_fill;
+    r.offset_line = saved_r.offset_line;
+    r.offset_point = saved_r.offset_point;
   }
   if (m & GL_TRANSFORM_BIT) {  // the matrix mode, the clip planes and their enables, normalising
     ctx.matrix_mode = s.matrix_mode;

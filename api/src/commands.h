@@ -88,6 +88,8 @@ Values<T, N> valuesOf(const U* p, int n, GLint count) {
   X(PointSize, pointSize, GLfloat)                                                        \
   X(LineWidth, lineWidth, GLfloat)                                                        \
   X(LineStipple, lineStipple, GLint, GLushort)                                            \
+  X(PolygonMode, polygonMode, GLenum, GLenum)                                             \
+  X(PolygonOffset, polygonOffset, GLfloat, GLfloat)                                       \
   /* attrib_stack.cpp */                                                                  \
   X(PushAttrib, pushAttrib, GLbitfield)                                                   \
   X(PopAttrib, popAttrib)                                                                 \

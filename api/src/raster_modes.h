@@ -25,7 +25,14 @@ struct RasterModes {
   bool line_stipple = false;
   GLint stipple_factor = 1;  // clamped to [1, 256] when set, as Mesa keeps it
   GLushort stipple_pattern = 0xffff;
+  GLenum polygon_mode[2] = {GL_FILL, GL_FILL};  // GL_POLYGON_BIT: front, back
+  float offset_factor = 0.0f, offset_units = 0.0f;
+  bool offset_fill = false, offset_line = false, offset_point = false;  // (GL_ENABLE_BIT too)
 };
+
+// The depth buffer's resolution r that glPolygonOffset's units multiply, as OSMesa's 24-bit
+// buffer takes it: 2^-23 (measured: 100 units move a polygon by 100 x 2^-23).
+constexpr float kOffsetUnit = 1.0f / 8388608.0f;
 
 // The glGet* values (GL_POINT_SIZE, GL_LINE_WIDTH, the ranges and granularities, the line
 // stipple and its enable); false for another pname.

@@ -70,6 +70,11 @@ void pfglGetClipPlane(GLenum plane, GLdouble *equation);
 void pfglPointSize(GLfloat size);
 void pfglLineWidth(GLfloat width);
 void pfglLineStipple(GLint factor, GLushort pattern);
+/* Polygons (GL 1.5 sections 3.5.4 - 3.5.5): glPolygonMode per face (GL_POINT, GL_LINE on the
+ * polygon's boundary, GL_FILL), after culling; glPolygonOffset under GL_POLYGON_OFFSET_FILL,
+ * _LINE, _POINT (docs/api.md, "Polygon modes and offset"). */
+void pfglPolygonMode(GLenum face, GLenum mode);
+void pfglPolygonOffset(GLfloat factor, GLfloat units);
 
 /* Hints: kept and read back (nothing primflow draws depends on them). Attribute stacks, 16 deep:
  * the groups primflow has (docs/api.md, "Attribute stacks"); glPushAttrib / glPopAttrib are

@@ -47,6 +47,8 @@
 #define glPointSize pfglPointSize
 #define glLineWidth pfglLineWidth
 #define glLineStipple pfglLineStipple
+#define glPolygonMode pfglPolygonMode
+#define glPolygonOffset pfglPolygonOffset
 #define glScissor pfglScissor
 #define glAlphaFunc pfglAlphaFunc
 #define glBlendFunc pfglBlendFunc

@@ -9,8 +9,6 @@
 
 #define glClearIndex _Pragma("GCC error \"primflow does not implement glClearIndex\"") pf_unsupported_glClearIndex
 #define glIndexMask _Pragma("GCC error \"primflow does not implement glIndexMask\"") pf_unsupported_glIndexMask
-#define glPolygonMode _Pragma("GCC error \"primflow does not implement glPolygonMode\"") pf_unsupported_glPolygonMode
-#define glPolygonOffset _Pragma("GCC error \"primflow does not implement glPolygonOffset\"") pf_unsupported_glPolygonOffset
 #define glPolygonStipple _Pragma("GCC error \"primflow does not implement glPolygonStipple\"") pf_unsupported_glPolygonStipple
 #define glGetPolygonStipple _Pragma("GCC error \"primflow does not implement glGetPolygonStipple\"") pf_unsupported_glGetPolygonStipple
 #define glEdgeFlag _Pragma("GCC error \"primflow does not implement glEdgeFlag\"") pf_unsupported_glEdgeFlag
