@@ -196,6 +196,23 @@ void typeBuiltinCall(Expr& e, UnitKind unit, const std::function<void(SourceLoc,
       return;
     }
     e.type = Type::of(BaseType::Point);
+  } else if (f == "polygon_mode") {
+    // glPolygonMode for a polygon of this window-space orientation (> 0: counter-clockwise):
+    // 0 GL_FILL, 1 GL_LINE, 2 GL_POINT.
+    if (!arity(1, 1) || any_void || !needScalars()) return;
+    e.type = Type::of(BaseType::Float);
+  } else if (f == "polygon_offset" || f == "polygon_offset_modes") {
+    // glPolygonOffset: vector(factor, units r, 0); its enables: vector(fill, line, point), 1 or 0.
+    if (!arity(0, 0)) return;
+    e.type = Type::of(BaseType::Vector);
+  } else if (f == "line_stipple") {
+    // glLineStipple: vector(pattern, factor, 1 where GL_LINE_STIPPLE is enabled, else 0).
+    if (!arity(0, 0)) return;
+    e.type = Type::of(BaseType::Vector);
+  } else if (f == "line_width" || f == "point_size") {
+    // glLineWidth / glPointSize as rasterized: whole pixels, rounded and clamped as the API says.
+    if (!arity(0, 0)) return;
+    e.type = Type::of(BaseType::Float);
   } else if (f == "flat_shading") {
     // glShadeModel(GL_FLAT): per-vertex parameters take the provoking vertex's value.
     if (!arity(0, 0)) return;

@@ -105,6 +105,16 @@ enum class StateValue : uint16_t {
   DepthNear, DepthFar,
   // 1 or 0: culled() and flat_shading() read these
   CullFront, CullBack, FrontFaceCCW, FlatShading,
+  // The rasterized width of lines and size of points (line_width(), point_size()): glLineWidth
+  // and glPointSize as the API rounds and clamps them (api/src/raster_modes.h), whole pixels
+  LineWidth, PointSize,
+  // glLineStipple (line_stipple()): the pattern (0 - 65535), the repeat factor (1 - 256), and 1
+  // or 0 for GL_LINE_STIPPLE
+  LineStipplePattern, LineStippleFactor, LineStippleOn,
+  // glPolygonMode per face (polygon_mode(): 0 fill, 1 line, 2 point) and glPolygonOffset
+  // (polygon_offset(): the factor, the units times the depth buffer's resolution;
+  // polygon_offset_modes(): 1 or 0 for GL_POLYGON_OFFSET_FILL, _LINE, _POINT)
+  PolygonModeFront, PolygonModeBack, OffsetFactor, OffsetUnits, OffsetFill, OffsetLine, OffsetPoint,
   // 16 elements each (column-major): InvProjection + k (eye()), Projection + k (clip()),
   // InvModelview + k (object(), eye_normal()), Modelview + k (eye_from_object())
   InvProjection, Projection = InvProjection + 16, InvModelview = Projection + 16, Modelview = InvModelview + 16

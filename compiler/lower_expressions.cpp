@@ -436,6 +436,8 @@ Binding Lowerer::call(const Expr& e) {
     return none;
   }
   if (f == "flat_shading") return scalar(e.type, stateOn(StateValue::FlatShading));
+  if (f == "line_width") return scalar(e.type, state(StateValue::LineWidth));
+  if (f == "point_size") return scalar(e.type, state(StateValue::PointSize));
   if (f == "unscreen") {
     // x = (X - w * offset) / scale, per axis; w stays.
     const std::vector<int>& p = args[0].comps;
@@ -462,6 +464,29 @@ Binding Lowerer::call(const Expr& e) {
   if (f == "eye_normal") {
     // The transpose of the inverse modelview's upper 3x3 times the normal.
     return scalarMatrixTimes(e.type, StateValue::InvModelview, args[0].comps, 3, true);
+  }
+  if (f == "polygon_mode") {
+    return scalar(e.type, emit(Op::Sel, ValueClass::F32, false, frontFacing(farg(0)), state(StateValue::PolygonModeFront),
+                               state(StateValue::PolygonModeBack)));
+  }
+  if (f == "polygon_offset") {
+    Binding out;
+    out.type = e.type;
+    out.comps = {state(StateValue::OffsetFactor), state(StateValue::OffsetUnits), constF(0.0f)};
+    return out;
+  }
+  if (f == "polygon_offset_modes") {
+    Binding out;
+    out.type = e.type;
+    out.comps = {state(StateValue::OffsetFill), state(StateValue::OffsetLine), state(StateValue::OffsetPoint)};
+    return out;
+  }
+  if (f == "line_stipple") {
+    Binding out;
+    out.type = e.type;
+    out.comps = {state(StateValue::LineStipplePattern), state(StateValue::LineStippleFactor),
+                 state(StateValue::LineStippleOn)};
+    return out;
   }
   if (f == "depth_range") {
     Binding out;

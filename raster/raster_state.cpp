@@ -26,6 +26,18 @@ float stateValue(const RasterState& s, uint16_t which) {
     case StateValue::CullBack: return s.cull_back ? 1.0f : 0.0f;
     case StateValue::FrontFaceCCW: return s.front_ccw ? 1.0f : 0.0f;
     case StateValue::FlatShading: return s.flat_shading ? 1.0f : 0.0f;
+    case StateValue::LineWidth: return s.line_width;
+    case StateValue::PointSize: return s.point_size;
+    case StateValue::LineStipplePattern: return s.line_stipple_pattern;
+    case StateValue::LineStippleFactor: return s.line_stipple_factor;
+    case StateValue::LineStippleOn: return s.line_stipple ? 1.0f : 0.0f;
+    case StateValue::PolygonModeFront: return s.polygon_mode_front;
+    case StateValue::PolygonModeBack: return s.polygon_mode_back;
+    case StateValue::OffsetFactor: return s.offset_factor;
+    case StateValue::OffsetUnits: return s.offset_units;
+    case StateValue::OffsetFill: return s.offset_fill ? 1.0f : 0.0f;
+    case StateValue::OffsetLine: return s.offset_line ? 1.0f : 0.0f;
+    case StateValue::OffsetPoint: return s.offset_point ? 1.0f : 0.0f;
     default: return 0.0f;
   }
 }

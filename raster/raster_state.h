@@ -27,6 +27,18 @@ struct RasterState {
   DepthFunc depth_func = DepthFunc::Less;
   // Polygon state the primitives read (culled(), flat_shading()).
   bool cull_front = false, cull_back = false, front_ccw = true, flat_shading = false;
+  // The width of lines and the size of points in whole pixels, as rasterized (line_width(),
+  // point_size(); api/src/raster_modes.h rounds and clamps glLineWidth and glPointSize).
+  float line_width = 1.0f, point_size = 1.0f;
+  // glLineStipple under GL_LINE_STIPPLE (line_stipple()): the 16-bit pattern and the repeat
+  // factor, as numbers.
+  bool line_stipple = false;
+  float line_stipple_pattern = 65535.0f, line_stipple_factor = 1.0f;
+  // glPolygonMode per face (polygon_mode(): 0 fill, 1 line, 2 point) and glPolygonOffset
+  // (polygon_offset(): the factor, and the units already times the depth resolution r).
+  float polygon_mode_front = 0.0f, polygon_mode_back = 0.0f;
+  float offset_factor = 0.0f, offset_units = 0.0f;
+  bool offset_fill = false, offset_line = false, offset_point = false;
   // Colour channels written (bit k: channel k of RGBA). The renderer keeps one mask per flush,
   // so that the deferred shading pass writes every pixel with the mask its instance had.
   uint8_t color_mask = 0xf;

@@ -44,6 +44,7 @@ void pushAttrib(PFcontextRec& ctx, GLbitfield mask) {
   std::copy(std::begin(ctx.accum_clear), std::end(ctx.accum_clear), s.accum_clear);
   s.raster = ctx.raster;
   s.pixel_mode = ctx.pixel_mode;
+  s.raster_modes = ctx.raster_modes;
   try {
     ctx.attrib_stack.push_back(s);
   } catch (const std::bad_alloc&) {
@@ -98,11 +99,22 @@ void popAttrib(PFcontextRec& ctx) {
     for (int k = 0; k < 4; ++k) t.gen[k].enabled = s.texture.gen[k].enabled;
     ctx.textures.dirty = true;
     ctx.fog.enabled = s.fog.enabled;
+    ctx.raster_modes.line_stipple = s.raster_modes.line_stipple;
+    ctx.raster_modes.offset_fill = s.raster_modes.offset_fill;
+    ctx.raster_modes.offset_line = s.raster_modes.offset_line;
+    ctx.raster_modes.offset_point = s.raster_modes.offset_point;
     std::copy(std::begin(s.clip.enabled), std::end(s.clip.enabled), ctx.clip.enabled);
   }
   if (m & GL_FOG_BIT) ctx.fog = s.fog;  // (the enable included)
   if (m & GL_ACCUM_BUFFER_BIT) std::copy(std::begin(s.accum_clear), std::end(s.accum_clear), ctx.accum_clear);
   if (m & GL_PIXEL_MODE_BIT) ctx.pixel_mode = s.pixel_mode;  // (the zoom: no pixel transfer or maps)
+  if (m & GL_POINT_BIT) ctx.raster_modes.point_size = s.raster_modes.point_size;
+  if (m & GL_LINE_BIT) {  // the width, the stipple and its enable
+    ctx.raster_modes.line_width = s.raster_modes.line_width;
+    ctx.raster_modes.line_stipple = s.raster_modes.line_stipple;
+    ctx.raster_modes.stipple_factor = s.raster_modes.stipple_factor;
+    ctx.raster_modes.stipple_pattern = s.raster_modes.stipple_pattern;
+  }
   if (m & GL_TEXTURE_BIT) {  // the bindings, the environment, the generation (enables included)
     ctx.textures.a = s.texture;
     // (A binding to a texture deleted since is the default texture's.)
@@ -116,10 +128,18 @@ void popAttrib(PFcontextRec& ctx) {
     ctx.depth_func = s.depth_func;
     ctx.clear_depth = s.clear_depth;
   }
-  if (m & GL_POLYGON_BIT) {
+  if (m & GL_POLYGON_BIT) {  // culling, the polygon modes, the offset and its enables
     ctx.cull = s.cull;
     ctx.cull_face = s.cull_face;
     ctx.front_face = s.front_face;
+    RasterModes& r = ctx.raster_modes;
+    const RasterModes& saved_r = s.raster_modes;
+    std::copy(std::begin(saved_r.polygon_mode), std::end(saved_r.polygon_mode), r.polygon_mode);
+    r.offset_factor = saved_r.offset_factor;
+    r.offset_units = saved_r.offset_units;
+    r.offset_fill = saved_r.offset_fill;
+    r.offset_line = saved_r.offset_line;
+    r.offset_point = saved_r.offset_point;
   }
   if (m & GL_TRANSFORM_BIT) {  // the matrix mode, the clip planes and their enables, normalising
     ctx.matrix_mode = s.matrix_mode;

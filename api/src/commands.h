@@ -93,6 +93,12 @@ Values<T, N> valuesOf(const U* p, int n, GLint count) {
   /* draw_pixels.cpp */                                                                   \
   X(PixelZoom, pixelZoom, GLfloat, GLfloat)                                               \
   X(CopyPixels, copyPixels, GLint, GLint, GLsizei, GLsizei, GLenum)                       \
+  /* raster_mode_commands.cpp */                                                          \
+  X(PointSize, pointSize, GLfloat)                                                        \
+  X(LineWidth, lineWidth, GLfloat)                                                        \
+  X(LineStipple, lineStipple, GLint, GLushort)                                            \
+  X(PolygonMode, polygonMode, GLenum, GLenum)                                             \
+  X(PolygonOffset, polygonOffset, GLfloat, GLfloat)                                       \
   /* attrib_stack.cpp */                                                                  \
   X(PushAttrib, pushAttrib, GLbitfield)                                                   \
   X(PopAttrib, popAttrib)                                                                 \

@@ -17,6 +17,7 @@
 #include "api/src/fog_clip.h"
 #include "api/src/pixel_rectangles.h"
 #include "api/src/raster_position.h"
+#include "api/src/raster_modes.h"
 #include "api/src/textures.h"
 #include "api/src/vertex_lighting.h"
 #include "raster/lighting.h"
@@ -137,6 +138,7 @@ struct AttribState {
   float accum_clear[4];                              // GL_ACCUM_BUFFER_BIT
   RasterPosState raster;                             // GL_CURRENT_BIT
   PixelModeState pixel_mode;                         // GL_PIXEL_MODE_BIT
+  RasterModes raster_modes;                          // GL_POINT_BIT, GL_LINE_BIT (raster_modes.h)
 };
 
 // glPixelStore's modes for one direction (GL 1.5 table 3.1): pack (glReadPixels writes by
@@ -247,6 +249,7 @@ struct PFcontextRec {
   pf::ClipPlaneState clip;
   pf::RasterPosState raster;
   pf::PixelModeState pixel_mode;
+  pf::RasterModes raster_modes;
   pf::DisplayLists lists;
   GLenum hints[pf::kHintCount] = {GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE,
                                   GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE};

@@ -37,6 +37,10 @@ bool sameFeed(const CompiledPrimitive& a, const CompiledPrimitive& b) {
 
 bool flattenForTexturing(PFcontextRec& ctx) {
   if ((!ctx.begin_texture && ctx.fog_channel < 0) || ctx.color_channel < 0) return false;
+  // Not while polygons are drawn unfilled or lines stippled: the independent primitive would
+  // fill, or restart the stipple at each segment (the primitive's flat shading applies then).
+  const pf::RasterModes& m = ctx.raster_modes;
+  if (m.line_stipple || m.polygon_mode[0] != GL_FILL || m.polygon_mode[1] != GL_FILL) return false;
   const size_t n = ctx.rows_count;
   // Each output row: the row it copies and the row whose colour it takes.
   std::vector<std::pair<size_t, size_t>> order;

@@ -59,6 +59,10 @@ bool* capability(PFcontextRec& ctx, GLenum cap) {
     case GL_DITHER: return &ctx.fragment.dither;
     case GL_STENCIL_TEST: return &ctx.fragment.stencil_test;
     case GL_FOG: return &ctx.fog.enabled;
+    case GL_LINE_STIPPLE: return &ctx.raster_modes.line_stipple;
+    case GL_POLYGON_OFFSET_FILL: return &ctx.raster_modes.offset_fill;
+    case GL_POLYGON_OFFSET_LINE: return &ctx.raster_modes.offset_line;
+    case GL_POLYGON_OFFSET_POINT: return &ctx.raster_modes.offset_point;
     case GL_TEXTURE_1D: return &ctx.textures.a.enabled_1d;
     case GL_TEXTURE_2D: return &ctx.textures.a.enabled_2d;
     case GL_TEXTURE_GEN_S: return &ctx.textures.a.gen[0].enabled;
@@ -151,6 +155,7 @@ pf::RasterState PFcontextRec::rasterState() const {
     s.modelview[k] = modelview.top[k / 4][k % 4];
   }
   pf::windowClipPlanes(clip, s.projection, s);
+  pf::applyRasterModes(raster_modes, s);
   return s;
 }
 

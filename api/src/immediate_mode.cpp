@@ -360,10 +360,19 @@ void begin(PFcontextRec& ctx, GLenum mode) {
     ctx.setError(GL_INVALID_ENUM);
     return;
   }
+  // GL_TRIANGLES with a face drawn unfilled (glPolygonMode): triangle_modes, which decides each
+  // triangle's face and calls `triangles` or draws its edges (primitives/triangles.pfl), so that
+  // `triangles` itself calls nothing.
+  const pf::CompiledPrimitive* primitive = it->second.get();
+  const pf::RasterModes& rm = ctx.raster_modes;
+  if (mode == GL_TRIANGLES && (rm.polygon_mode[0] != GL_FILL || rm.polygon_mode[1] != GL_FILL)) {
+    auto unfilled = ctx.primitives.by_name.find("triangle_modes");
+    if (unfilled != ctx.primitives.by_name.end()) primitive = unfilled->second.get();
+  }
   ctx.in_begin = true;
   ctx.begin_out_of_memory = false;
   try {
-    startBegin(ctx, mode, it->second.get());
+    startBegin(ctx, mode, primitive);
   } catch (const std::bad_alloc&) {  // planning the glBegin's rows: the glBegin is dropped
     ctx.outOfMemory("glBegin");
   }

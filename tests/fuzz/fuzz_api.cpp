@@ -3,7 +3,7 @@
 // are NaN, infinite or huge, matrix stacks pushed and popped past their ends, degenerate
 // projections, bad enums and names, sequence points, compiles, clears and finishes, the
 // per-fragment operations' state with any values (scissor, alpha test, blending, logic op,
-// stencil), the raster position and pixel rectangles, a glBegin of very many vertices -- run on a small context. Nothing may crash, hang or trip ASan/UBSan, and
+// stencil), the raster position and pixel rectangles, point sizes, line widths, stipples, polygon modes and offsets, a glBegin of very many vertices -- run on a small context. Nothing may crash, hang or trip ASan/UBSan, and
 // GL's rules are checked (the checks trap, which libFuzzer reports): a glBegin whose only erring
 // command is one GL does not allow there leaves exactly GL_INVALID_OPERATION at glEnd, and the
 // glBegin of very many vertices leaves no error.
@@ -301,8 +301,35 @@ void pixelRectangles(FuzzedDataProvider& in) {
   }
 }
 
+// Points, lines and polygon modes, any values: sizes and widths NaN, infinite, huge, zero or
+// negative, any stipple factor and pattern, polygon modes and offsets (bad enums too); then a
+// glBegin of any mode drawn with them.
+void rasterModeState(FuzzedDataProvider& in) {
+  switch (in.ConsumeIntegralInRange<int>(0, 5)) {
+    case 3:
+      pfglPolygonMode(in.ConsumeBool() ? GL_FRONT_AND_BACK : in.ConsumeIntegralInRange<GLenum>(GL_FRONT - 1, GL_BACK + 1),
+                      in.ConsumeIntegralInRange<GLenum>(GL_POINT - 1, GL_FILL + 1));
+      break;
+    case 4:
+      pfglPolygonOffset(aFloat(in), aFloat(in));
+      (in.ConsumeBool() ? pfglEnable : pfglDisable)(in.ConsumeBool() ? GL_POLYGON_OFFSET_FILL : GL_POLYGON_OFFSET_LINE);
+      break;
+    case 0: pfglPointSize(in.ConsumeBool() ? aFloat(in) : in.ConsumeFloatingPointInRange<float>(0.0f, 300.0f)); break;
+    case 2:
+      pfglLineStipple(in.ConsumeIntegral<GLint>(), in.ConsumeIntegral<GLushort>());
+      (in.ConsumeBool() ? pfglEnable : pfglDisable)(GL_LINE_STIPPLE);
+      break;
+    case 1: pfglLineWidth(in.ConsumeBool() ? aFloat(in) : in.ConsumeFloatingPointInRange<float>(0.0f, 300.0f)); break;
+    default:
+      pfglBegin(aMode(in));
+      for (int k = in.ConsumeIntegralInRange<int>(0, 4); k > 0; --k) pfglVertex2f(aFloat(in), aFloat(in));
+      pfglEnd();
+      break;
+  }
+}
+
 void oneCall(FuzzedDataProvider& in, bool& huge_drawn) {
-  switch (in.ConsumeIntegralInRange<int>(0, 25)) {
+  switch (in.ConsumeIntegralInRange<int>(0, 26)) {
     case 0: oneBegin(in, in.ConsumeBool()); break;
     case 19: hugeBegin(in, huge_drawn); break;
     case 1: pfglBegin(in.ConsumeIntegral<GLenum>()); break;  // any enum, a primitive's mode or none
@@ -351,6 +378,7 @@ void oneCall(FuzzedDataProvider& in, bool& huge_drawn) {
     case 22: fogClipState(in); break;
     case 23: accumulation(in); break;
     case 24: pixelRectangles(in); break;
+    case 25: rasterModeState(in); break;
     default: pfglFinish(); break;
   }
 }

@@ -262,7 +262,7 @@ TEST(GlState, BadEnumsAndCommandsInsideBeginEnd) {
   EXPECT_EQ(error(), static_cast<GLenum>(GL_INVALID_ENUM));
   pfglShadeModel(GL_LINE);
   EXPECT_EQ(error(), static_cast<GLenum>(GL_INVALID_ENUM));
-  pfglEnable(GL_LINE_STIPPLE);  // a capability primflow does not have
+  pfglEnable(GL_LINE_SMOOTH);  // a capability primflow does not have
   EXPECT_EQ(error(), static_cast<GLenum>(GL_INVALID_ENUM));
   pfglLoadMatrixf(nullptr);  // ignored
   pfglVertex3fv(nullptr);

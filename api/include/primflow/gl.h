@@ -120,6 +120,17 @@ void pfglWindowPos3f(GLfloat x, GLfloat y, GLfloat z);
 void pfglWindowPos3fv(const GLfloat *v);
 void pfglWindowPos3d(GLdouble x, GLdouble y, GLdouble z);
 void pfglWindowPos3dv(const GLdouble *v);
+/* Points and lines (GL 1.5 sections 3.4, 3.5), aliased: glPointSize squares, glLineWidth runs
+ * of pixels across the minor axis, rounded as OSMesa rounds them; glLineStipple under
+ * GL_LINE_STIPPLE (docs/api.md, "Points and lines"). */
+void pfglPointSize(GLfloat size);
+void pfglLineWidth(GLfloat width);
+void pfglLineStipple(GLint factor, GLushort pattern);
+/* Polygons (GL 1.5 sections 3.5.4 - 3.5.5): glPolygonMode per face (GL_POINT, GL_LINE on the
+ * polygon's boundary, GL_FILL), after culling; glPolygonOffset under GL_POLYGON_OFFSET_FILL,
+ * _LINE, _POINT (docs/api.md, "Polygon modes and offset"). */
+void pfglPolygonMode(GLenum face, GLenum mode);
+void pfglPolygonOffset(GLfloat factor, GLfloat units);
 
 /* Hints: kept and read back (nothing primflow draws depends on them). Attribute stacks, 16 deep:
  * the groups primflow has (docs/api.md, "Attribute stacks"); glPushAttrib / glPopAttrib are

@@ -90,6 +90,11 @@
 #define glWindowPos3dv pfglWindowPos3dv
 #define glClipPlane pfglClipPlane
 #define glGetClipPlane pfglGetClipPlane
+#define glPointSize pfglPointSize
+#define glLineWidth pfglLineWidth
+#define glLineStipple pfglLineStipple
+#define glPolygonMode pfglPolygonMode
+#define glPolygonOffset pfglPolygonOffset
 #define glScissor pfglScissor
 #define glAlphaFunc pfglAlphaFunc
 #define glBlendFunc pfglBlendFunc

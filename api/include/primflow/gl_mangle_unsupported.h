@@ -9,11 +9,6 @@
 
 #define glClearIndex _Pragma("GCC error \"primflow does not implement glClearIndex\"") pf_unsupported_glClearIndex
 #define glIndexMask _Pragma("GCC error \"primflow does not implement glIndexMask\"") pf_unsupported_glIndexMask
-#define glPointSize _Pragma("GCC error \"primflow does not implement glPointSize\"") pf_unsupported_glPointSize
-#define glLineWidth _Pragma("GCC error \"primflow does not implement glLineWidth\"") pf_unsupported_glLineWidth
-#define glLineStipple _Pragma("GCC error \"primflow does not implement glLineStipple\"") pf_unsupported_glLineStipple
-#define glPolygonMode _Pragma("GCC error \"primflow does not implement glPolygonMode\"") pf_unsupported_glPolygonMode
-#define glPolygonOffset _Pragma("GCC error \"primflow does not implement glPolygonOffset\"") pf_unsupported_glPolygonOffset
 #define glPolygonStipple _Pragma("GCC error \"primflow does not implement glPolygonStipple\"") pf_unsupported_glPolygonStipple
 #define glGetPolygonStipple _Pragma("GCC error \"primflow does not implement glGetPolygonStipple\"") pf_unsupported_glGetPolygonStipple
 #define glEdgeFlag _Pragma("GCC error \"primflow does not implement glEdgeFlag\"") pf_unsupported_glEdgeFlag
