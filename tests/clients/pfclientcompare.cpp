@@ -49,7 +49,9 @@ bool readPam(const char* path, Samples& s) {
   }
   const size_t n = static_cast<size_t>(s.width) * s.height * s.channels;
   if (maxval != 255 || s.width <= 0 || s.height <= 0 || data.size() < end + 7 + n) return false;
-  s.values.assign(data.begin() + static_cast<long>(end + 7), data.begin() + static_cast<long>(end + 7 + n));
+  // (As unsigned bytes: std::string's chars are signed, and 128 would read as -128.)
+  const auto* bytes = reinterpret_cast<const unsigned char*>(data.data()) + end + 7;
+  s.values.assign(bytes, bytes + n);
   return true;
 }
 
