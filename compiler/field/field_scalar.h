@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "compiler/field/field_tape.h"
+#include "compiler/field/perlin_tables.h"
 
 namespace pf::field {
 
@@ -28,6 +29,8 @@ inline float applyFieldOp(FieldOp op, float a, float b) {
     case FieldOp::Cos: return std::cos(a);
     case FieldOp::Atan: return std::atan(a);
     case FieldOp::Floor: return std::floor(a);
+    case FieldOp::NoisePerm: case FieldOp::NoiseGradX: case FieldOp::NoiseGradY: case FieldOp::NoiseGradZ:
+      return perlinTableValue(op, a);
     case FieldOp::Add: return a + b;
     case FieldOp::Sub: return a - b;
     case FieldOp::Mul: return a * b;

@@ -23,6 +23,10 @@ std::string_view fieldOpName(FieldOp op) {
     case FieldOp::Cos: return "cos";
     case FieldOp::Atan: return "atan";
     case FieldOp::Floor: return "floor";
+    case FieldOp::NoisePerm: return "hf-noise-perm";
+    case FieldOp::NoiseGradX: return "hf-noise-grad-x";
+    case FieldOp::NoiseGradY: return "hf-noise-grad-y";
+    case FieldOp::NoiseGradZ: return "hf-noise-grad-z";
     case FieldOp::Add: return "add";
     case FieldOp::Sub: return "sub";
     case FieldOp::Mul: return "mul";

@@ -34,6 +34,11 @@ constexpr size_t kMaxFieldTapeSize = 1u << 18;
 // its derivative is 0 wherever it is defined (everywhere but at the integers, where it jumps),
 // and its interval over [lo, hi] is [floor(lo), floor(hi)] -- exact in float, no rounding.
 //
+// NoisePerm and NoiseGradX/Y/Z are look-ups in HyperFun's Perlin noise tables
+// (compiler/field/perlin_tables.h) at index floor(a): step functions like Floor (derivative 0,
+// constant between the integers), whose interval is the least and greatest entry the index
+// interval reaches. hfA_NoiseP and hfA_Turbulence build noise3 from them and the arithmetic.
+//
 // Point-dependent choices (HyperFun's `if` on x, the language's `if` on p): Less and LessEq give
 // 1 where a < b (a <= b) and 0 elsewhere, NaN included (C's comparisons); Select gives b where
 // a != 0 and c elsewhere -- only the chosen operand's value, so an unchosen branch's inf or NaN
@@ -45,6 +50,7 @@ enum class FieldOp : uint8_t {
   Neg, Abs, Square, Sqrt, Exp, Log, Sin, Cos,   // unary
   Atan,                                         // unary (after the others: Fidget has no atan)
   Floor,                                        // unary: the largest integer <= a (not Fidget's)
+  NoisePerm, NoiseGradX, NoiseGradY, NoiseGradZ,  // unary: HyperFun's Perlin tables at floor(a)
   Add, Sub, Mul, Div, Min, Max,                 // binary
   Less, LessEq,                                 // binary: 1 or 0
   Select,                                       // ternary: a != 0 ? b : c
@@ -57,12 +63,17 @@ constexpr int fieldOpArity(FieldOp op) {
     case FieldOp::X: case FieldOp::Y: case FieldOp::Z: case FieldOp::Const: case FieldOp::Sample: return 0;
     case FieldOp::Neg: case FieldOp::Abs: case FieldOp::Square: case FieldOp::Sqrt:
     case FieldOp::Exp: case FieldOp::Log: case FieldOp::Sin: case FieldOp::Cos: case FieldOp::Atan:
-    case FieldOp::Floor: return 1;
+    case FieldOp::Floor: case FieldOp::NoisePerm: case FieldOp::NoiseGradX: case FieldOp::NoiseGradY:
+    case FieldOp::NoiseGradZ: return 1;
     case FieldOp::Select: return 3;
     default: return 2;
   }
 }
 std::string_view fieldOpName(FieldOp op);     // "add", "var-x", ... (Fidget's spelling)
+// The four table look-ups (NoisePerm ... NoiseGradZ).
+constexpr bool isNoiseTable(FieldOp op) {
+  return op == FieldOp::NoisePerm || op == FieldOp::NoiseGradX || op == FieldOp::NoiseGradY || op == FieldOp::NoiseGradZ;
+}
 
 struct FieldInstr {
   FieldOp op = FieldOp::Const;

@@ -1,13 +1,24 @@
 // TapeAlgebra (hyperfun_library.h): HyperFun's arithmetic on values that are known when the
 // model compiles (folded in double, as HyperFun computes) or on the tape -- the operators, a^b and
 // the R-functions the library functions are written with.
+#include <algorithm>
 #include <cmath>
 
 #include "compiler/field/hyperfun_library.h"
+#include "compiler/field/perlin_tables.h"
 
 namespace pf::field::hyperfun {
 
 Real TapeAlgebra::emit(FieldOp op, Real a) { return Real::onTape(b_.unary(op, materialize(a))); }
+
+Real TapeAlgebra::noiseTable(FieldOp op, Real a) {
+  if (!a.is_known) return emit(op, a);
+  if (a.value != a.value) return a;
+  const int k = static_cast<int>(std::clamp(std::floor(a.value), 0.0, static_cast<double>(kPerlinTableSize - 1)));
+  const PerlinTables& t = perlinTables();
+  const int table = perlinTableOf(op);
+  return Real::known(table == 0 ? t.perm[k] : t.grad[k][table - 1]);
+}
 Real TapeAlgebra::emit(FieldOp op, Real a, Real b) {
   return Real::onTape(b_.binary(op, materialize(a), materialize(b)));
 }

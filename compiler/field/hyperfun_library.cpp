@@ -489,10 +489,6 @@ Real hfSpaceMap(LibraryCall& c) {
 }
 
 // Messages for the unsupported functions; '$' stands for the function's name.
-constexpr std::string_view kPerlin =
-    "'$' is not supported: it reads HyperFun's Perlin noise, whose permutation table HyperFun draws from the C "
-    "library's (in the R package, R's) random generator at first use -- another table each run -- and whose "
-    "look-ups by the point's cell have no tape form (a field tape has no table gather)";
 constexpr std::string_view kNotYet = "'$' is not supported yet";
 constexpr std::string_view kOnlyInR =
     "'$' is not supported: it calls back into R and exists only in HyperFun's R package";
@@ -591,6 +587,8 @@ const LibraryFunction kFunctions[] = {
     {"hfA_Circles", "x, output, input_attr, input_map", "AAAA", hfACircles, {}},
     {"hfA_Crackles", "x, output, freq, input_attr, input_map", "AARAA", hfACrackles, {}},
     {"hfA_NoiseG", "x, freq, phase", "ARR", hfANoiseG, {}},
+    {"hfA_NoiseP", "x", "A", hfANoiseP, {}},
+    {"hfA_Turbulence", "x, freq", "AR", hfATurbulence, {}},
     {"hfA_LookUpTable", "t, output, input_attr, input_map", "RAAA", hfALookUpTable, {}},
     {"hfA_SmoothLookUpTable", "t, output, input_attr, input_map", "RAAA", hfASmoothLookUpTable, {}},
     {"hfA_Spline", "s, knots, x, xmin, xmax", "AARRR", hfASpline, {}},
@@ -599,7 +597,6 @@ const LibraryFunction kFunctions[] = {
     // Registered in HyperFun but not supported yet.
     no("hfBezierVolume", kNotYet), no("hfSawtooth", kNotYet),
     no("hfR", kOnlyInR),
-    no("hfA_NoiseP", kPerlin), no("hfA_Turbulence", kPerlin),
 };
 
 bool equalsLowercase(std::string_view name, std::string_view lowercase) {

@@ -60,6 +60,9 @@ class TapeAlgebra {
   Real cos(Real a) { return a.is_known ? Real::known(std::cos(a.value)) : emit(FieldOp::Cos, a); }
   Real atan(Real a) { return a.is_known ? Real::known(std::atan(a.value)) : emit(FieldOp::Atan, a); }
   Real floor(Real a) { return a.is_known ? Real::known(std::floor(a.value)) : emit(FieldOp::Floor, a); }
+  // Entry floor(a) of one of HyperFun's Perlin tables (op: FieldOp::NoisePerm ... NoiseGradZ); a
+  // known index reads the tables as HyperFun holds them (ints, double gradients).
+  Real noiseTable(FieldOp op, Real a);
   // C's (int) cast of a (towards zero), as a double: -floor(-a) below 0, floor(a) elsewhere.
   Real trunc(Real a) { return a.is_known ? Real::known(std::trunc(a.value)) : select(less(a, Real::known(0.0)), neg(floor(neg(a))), floor(a)); }
 

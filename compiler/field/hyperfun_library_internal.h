@@ -98,6 +98,9 @@ Real hfACheckerBoard(LibraryCall& c);
 Real hfACircles(LibraryCall& c);
 Real hfACrackles(LibraryCall& c);
 Real hfANoiseG(LibraryCall& c);
+// HyperFun's Perlin noise (hyperfun_attribute_noise.cpp).
+Real hfANoiseP(LibraryCall& c);
+Real hfATurbulence(LibraryCall& c);
 // The tables and colour spaces (hyperfun_attribute_tables.cpp).
 Real hfALookUpTable(LibraryCall& c);
 Real hfASmoothLookUpTable(LibraryCall& c);

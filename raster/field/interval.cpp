@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <numbers>
 
+#include "compiler/field/perlin_tables.h"
+
 namespace pf::field {
 using namespace interval_detail;
 namespace {
@@ -61,6 +63,12 @@ Interval intervalAtan(Interval a) {
 Interval intervalFloor(Interval a) {
   if (std::isnan(a.lo) || std::isnan(a.hi)) return Interval::whole();
   return {std::floor(a.lo), std::floor(a.hi)};
+}
+
+Interval intervalNoiseTable(FieldOp op, Interval a) {
+  const PerlinRange r = perlinTableRange(op, a.lo, a.hi);
+  if (r.nan) return Interval::whole();
+  return {r.lo, r.hi};
 }
 
 // sin over [lo, hi] reaches +1 where lo <= pi/2 + 2k pi <= hi, and -1 at -pi/2 + 2k pi.

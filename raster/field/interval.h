@@ -19,6 +19,8 @@
 #include <cstdint>
 #include <limits>
 
+#include "compiler/field/field_tape.h"
+
 namespace pf::field {
 
 struct Interval {
@@ -56,6 +58,9 @@ Interval intervalSin(Interval a);
 Interval intervalCos(Interval a);
 Interval intervalAtan(Interval a);
 Interval intervalFloor(Interval a);
+// A look-up in HyperFun's Perlin tables (FieldOp::NoisePerm ... NoiseGradZ) over a: the least and
+// greatest entry its indices reach, exact; a NaN end gives the whole line.
+Interval intervalNoiseTable(FieldOp op, Interval a);
 Interval intervalDiv(Interval a, Interval b);
 
 // The operations every field is made of most, inline: the interval evaluators' inner loops.

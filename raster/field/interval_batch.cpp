@@ -150,6 +150,16 @@ PF_SIMD_CLONES void runInstruction(const FloatSlotInstr& in, int n, float* __res
       }
       return;
     }
+    case FieldOp::NoisePerm:
+    case FieldOp::NoiseGradX:
+    case FieldOp::NoiseGradY:
+    case FieldOp::NoiseGradZ:  // table look-ups: the scalar operation, lane by lane
+      for (int j = 0; j < n; ++j) {
+        const Interval r = intervalNoiseTable(in.op, {alo[j], ahi[j]});
+        olo[j] = r.lo;
+        ohi[j] = r.hi;
+      }
+      return;
     case FieldOp::X:
     case FieldOp::Y:
     case FieldOp::Z:

@@ -55,6 +55,9 @@ Interval IntervalEvaluator::evaluate(Interval x, Interval y, Interval z, std::ve
       case FieldOp::Cos: v[i] = intervalCos(v[in.a]); break;
       case FieldOp::Atan: v[i] = intervalAtan(v[in.a]); break;
       case FieldOp::Floor: v[i] = intervalFloor(v[in.a]); break;
+      case FieldOp::NoisePerm: case FieldOp::NoiseGradX: case FieldOp::NoiseGradY: case FieldOp::NoiseGradZ:
+        v[i] = intervalNoiseTable(in.op, v[in.a]);
+        break;
       case FieldOp::Add: v[i] = intervalAdd(v[in.a], v[in.b]); break;
       case FieldOp::Sub: v[i] = intervalSub(v[in.a], v[in.b]); break;
       case FieldOp::Mul: v[i] = intervalMul(v[in.a], v[in.b]); break;

@@ -151,8 +151,13 @@ PF_SIMD_CLONES void runSlopeInstruction(const FloatSlotInstr& in, int n, const S
       break;
     }
     case FieldOp::Floor:  // constant over the box (rate 0) unless it steps inside it
+    case FieldOp::NoisePerm:  // (the table look-ups too: one entry over the box, or a step)
+    case FieldOp::NoiseGradX:
+    case FieldOp::NoiseGradY:
+    case FieldOp::NoiseGradZ:
       for (int j = 0; j < n; ++j) {
-        const Interval v = intervalFloor({avlo[j], avhi[j]});
+        const Interval a{avlo[j], avhi[j]};
+        const Interval v = in.op == FieldOp::Floor ? intervalFloor(a) : intervalNoiseTable(in.op, a);
         const bool constant = finite(v.lo, v.hi) & (v.lo == v.hi);
         vlo[j] = v.lo, vhi[j] = v.hi;
         rlo[j] = constant ? 0.0f : -kInf;

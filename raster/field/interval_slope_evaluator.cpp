@@ -57,7 +57,11 @@ IntervalSlope IntervalSlopeEvaluator::evaluate(Interval x, Interval y, Interval 
       case FieldOp::Cos: value = intervalCos(a), rate = intervalNeg(intervalMul(intervalSin(a), da)); break;
       case FieldOp::Atan: value = intervalAtan(a), rate = intervalDiv(da, intervalAdd(one, intervalSquare(a))); break;
       case FieldOp::Floor:  // constant over the box (rate 0) unless it steps inside it
-        value = intervalFloor(a);
+      case FieldOp::NoisePerm:  // (the table look-ups too: one entry over the box, or a step)
+      case FieldOp::NoiseGradX:
+      case FieldOp::NoiseGradY:
+      case FieldOp::NoiseGradZ:
+        value = in.op == FieldOp::Floor ? intervalFloor(a) : intervalNoiseTable(in.op, a);
         rate = finite(value) && value.lo == value.hi ? zero : Interval::whole();
         break;
       case FieldOp::Add: value = intervalAdd(a, b), rate = intervalAdd(da, db); break;

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <vector>
 
+#include "compiler/field/perlin_tables.h"
+
 namespace pf::field {
 namespace {
 
@@ -97,6 +99,9 @@ bool rayPolynomials(const FieldTape& tape, const std::array<double, 3>& origin, 
       case FieldOp::Cos: ok = onConstant(std::cos(a.c[0])); break;
       case FieldOp::Atan: ok = onConstant(std::atan(a.c[0])); break;
       case FieldOp::Floor: ok = onConstant(std::floor(a.c[0])); break;
+      case FieldOp::NoisePerm: case FieldOp::NoiseGradX: case FieldOp::NoiseGradY: case FieldOp::NoiseGradZ:
+        ok = onConstant(perlinTableValue(in.op, static_cast<float>(a.c[0])));
+        break;
       case FieldOp::Min: ok = onConstant(std::min(a.c[0], b.c[0])); break;
       case FieldOp::Max: ok = onConstant(std::max(a.c[0], b.c[0])); break;
       case FieldOp::Less: ok = onConstant(a.c[0] < b.c[0] ? 1.0 : 0.0); break;

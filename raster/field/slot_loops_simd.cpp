@@ -16,6 +16,7 @@
 
 #include <cmath>
 
+#include "compiler/field/perlin_tables.h"
 #include "compiler/field/sampled_grid.h"
 #include "raster/field/float_evaluator.h"
 #include "raster/field/gradient_evaluator.h"
@@ -74,6 +75,9 @@ void RunFloatSlotsWith(D d, const FloatSlotInstr* code, size_t count, float* bas
       }
       case FieldOp::Sample:  // the grid's own scalar code (another file): the same on every target
         in.grid->values(x, y, z, n, o);
+        continue;
+      case FieldOp::NoisePerm: case FieldOp::NoiseGradX: case FieldOp::NoiseGradY: case FieldOp::NoiseGradZ:
+        for (int j = 0; j < n; ++j) o[j] = perlinTableValue(in.op, a[j]);  // a gather: lane by lane
         continue;
       default: break;
     }
@@ -157,6 +161,12 @@ void RunGradientSlotsWith(D d, const FloatSlotInstr* code, size_t count, float* 
     const float* HWY_RESTRICT c = base + static_cast<size_t>(in.c) * 4 * K;
     if (in.op == FieldOp::Sample) {  // value and partial derivatives: the grid's own scalar code
       in.grid->valuesAndGradients(x, y, z, n, o, K);
+      continue;
+    }
+    if (isNoiseTable(in.op)) {  // a table look-up, lane by lane; a step: derivatives exactly 0
+      for (int j = 0; j < n; ++j) o[j] = perlinTableValue(in.op, a[j]);
+      for (size_t j = 0; j < end; j += N)
+        for (int c = 0; c < 3; ++c) hn::StoreU(zero, d, o + (c + 1) * K + j);
       continue;
     }
     if (in.op == FieldOp::X || in.op == FieldOp::Y || in.op == FieldOp::Z) {

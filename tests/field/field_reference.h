@@ -3,6 +3,7 @@
 // that shares nothing with the reader under test. (Also used by bench/pffields for accuracy.)
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "compiler/field/field_tape.h"
+#include "compiler/field/perlin_tables.h"
 #include "compiler/field/sampled_grid.h"
 
 namespace pf::field::testing {
@@ -87,6 +89,15 @@ inline double evaluateDouble(const FieldTape& tape, double x, double y, double z
       case FieldOp::Cos: r = std::cos(a); break;
       case FieldOp::Atan: r = std::atan(a); break;
       case FieldOp::Floor: r = std::floor(a); break;
+      case FieldOp::NoisePerm: case FieldOp::NoiseGradX: case FieldOp::NoiseGradY: case FieldOp::NoiseGradZ: {
+        // HyperFun's tables as it holds them (ints, double gradients) at floor(a), clamped.
+        if (a != a) { r = a; break; }
+        const double k = std::clamp(std::floor(a), 0.0, static_cast<double>(kPerlinTableSize - 1));
+        const PerlinTables& t = perlinTables();
+        const int table = perlinTableOf(in.op);
+        r = table == 0 ? t.perm[static_cast<int>(k)] : t.grad[static_cast<int>(k)][table - 1];
+        break;
+      }
       case FieldOp::Add: r = a + b; break;
       case FieldOp::Sub: r = a - b; break;
       case FieldOp::Mul: r = a * b; break;

@@ -44,7 +44,8 @@ void checkEveryOperation() {
   // library's own results (the comparison) are within 1 ULP of the true value.
   const Case cases[] = {{FieldOp::Neg, 0}, {FieldOp::Abs, 0}, {FieldOp::Square, 0}, {FieldOp::Sqrt, 0},
                         {FieldOp::Exp, 2}, {FieldOp::Log, 5}, {FieldOp::Sin, 4}, {FieldOp::Cos, 4}, {FieldOp::Atan, 4},
-                        {FieldOp::Floor, 0},
+                        {FieldOp::Floor, 0}, {FieldOp::NoisePerm, 0}, {FieldOp::NoiseGradX, 0},
+                        {FieldOp::NoiseGradY, 0}, {FieldOp::NoiseGradZ, 0},
                         {FieldOp::Add, 0}, {FieldOp::Sub, 0}, {FieldOp::Mul, 0}, {FieldOp::Div, 0},
                         {FieldOp::Min, 0}, {FieldOp::Max, 0}};
   for (const Case& c : cases) {
@@ -67,8 +68,9 @@ void checkEveryDerivative() {
   std::vector<float> x;
   for (int i = 0; i < FloatEvaluator::kBatch; ++i) x.push_back(0.3f + 0.11f * static_cast<float>(i));
   const FieldOp ops[] = {FieldOp::Neg, FieldOp::Abs, FieldOp::Square, FieldOp::Sqrt, FieldOp::Exp, FieldOp::Log,
-                         FieldOp::Sin, FieldOp::Cos, FieldOp::Atan, FieldOp::Floor, FieldOp::Add, FieldOp::Sub, FieldOp::Mul,
-                         FieldOp::Div, FieldOp::Min, FieldOp::Max};
+                         FieldOp::Sin, FieldOp::Cos, FieldOp::Atan, FieldOp::Floor, FieldOp::NoisePerm,
+                         FieldOp::NoiseGradY, FieldOp::Add, FieldOp::Sub, FieldOp::Mul, FieldOp::Div, FieldOp::Min,
+                         FieldOp::Max};
   for (FieldOp op : ops) {
     FieldTapeBuilder b;
     const uint32_t y = b.binary(FieldOp::Add, b.binary(FieldOp::Mul, b.constant(2.0f), b.x()), b.constant(1.0f));
@@ -91,6 +93,7 @@ void checkEveryDerivative() {
         case FieldOp::Cos: want = -std::sin(a); break;
         case FieldOp::Atan: want = 1 / (1 + a * a); break;
         case FieldOp::Floor: want = 0; break;  // a step: 0 off the integers (x is never one here)
+        case FieldOp::NoisePerm: case FieldOp::NoiseGradY: want = 0; break;  // table steps, likewise
         case FieldOp::Add: want = 3; break;
         case FieldOp::Sub: want = -1; break;
         case FieldOp::Mul: want = yv + 2 * a; break;

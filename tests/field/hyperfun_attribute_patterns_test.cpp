@@ -215,8 +215,6 @@ TEST(HyperFunAttributePatterns, MisuseIsReportedAtTheArgument) {
   expectHas(compileError(model("array mp[3];\nmp = [0, 1, 2];\nd = hfA_LookUpTable(x[1], s, s, mp);")),
             "m.hf:4:30: error: 'input_attr' (argument 3 of 'hfA_LookUpTable') must be an array of at least 9 items; "
             "'s' has 3");
-  expectHas(compileError(model("d = hfA_NoiseP(x);")),
-            "m.hf:2:5: error: 'hfA_NoiseP' is not supported: it reads HyperFun's Perlin noise");
   expectHas(compileError(model("d = hfA_NoiseG(x, 1);")), "m.hf:2:5: error: 'hfA_NoiseG' takes 3 arguments (x, freq, phase), found 2");
 }
 

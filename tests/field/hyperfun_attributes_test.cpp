@@ -137,8 +137,6 @@ TEST(HyperFunAttributes, MisuseIsReportedWhereItIs) {
             "m.hf:4:17: error: 's1' (argument 2 of 'hfA_Lerp') must be an array of 3 items; 'c' has 2");
   expectHas(compileError(model("d = hfA_Union(x[1], x[2], s, s, s, x[3]);")),
             "m.hf:2:36: error: 'op' (argument 6 of 'hfA_Union') depends on the point x");
-  expectHas(compileError(model("d = hfA_Turbulence(x, 4);")),
-            "m.hf:2:5: error: 'hfA_Turbulence' is not supported: it reads HyperFun's Perlin noise");
 }
 
 }  // namespace

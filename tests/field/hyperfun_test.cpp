@@ -600,8 +600,6 @@ TEST(HyperFun, LibraryCallErrorsArePrecise) {
               });
   expectHas(compileError(model("array e[3];\ne = [0, 0, 0];\nmy_model = hfDEllipsoid(x, e, 1, 0, 1);")),
             "m.hf:4:34: error: 'b' (argument 4 of 'hfDEllipsoid') is within 1e-6 of 0");
-  expectHas(compileError(model("my_model = hfA_NoiseP(x);")),
-            "m.hf:2:12: error: 'hfA_NoiseP' is not supported: it reads HyperFun's Perlin noise");
   expectHas(compileError(model("my_model = hfDUni(x[1], x[2], 1);")),
             "m.hf:2:12: error: 'hfDUni' takes 4 arguments (f1, f2, r, alpha), found 3");
   expectHas(compileError(model("my_model = hfNoSuchThing(x, a);")),

@@ -33,10 +33,13 @@ FieldTape everyOperation() {
   const uint32_t a = b.unary(FieldOp::Atan, b.unary(FieldOp::Neg, b.unary(FieldOp::Abs, q)));
   const uint32_t big = b.binary(FieldOp::Mul, b.constant(3e38f), b.binary(FieldOp::Add, x, y));
   const uint32_t steps = b.unary(FieldOp::Floor, b.binary(FieldOp::Mul, b.constant(4.0f), b.binary(FieldOp::Add, x, z)));
+  // HyperFun's Perlin tables, indexed by a point-dependent whole number (a table of a table).
+  const uint32_t index = b.unary(FieldOp::Floor, b.binary(FieldOp::Mul, b.constant(100.0f), b.binary(FieldOp::Add, y, b.constant(1.0f))));
+  const uint32_t table = b.unary(FieldOp::NoiseGradX, b.unary(FieldOp::NoisePerm, index));
   const uint32_t cond = b.binary(FieldOp::Less, x, y);
   const uint32_t cond2 = b.binary(FieldOp::LessEq, z, b.constant(0.0f));
   const uint32_t pick = b.select(cond, b.binary(FieldOp::Min, s, e), b.binary(FieldOp::Max, l, r));
-  const uint32_t pick2 = b.select(cond2, b.binary(FieldOp::Add, a, steps), big);
+  const uint32_t pick2 = b.select(cond2, b.binary(FieldOp::Add, a, b.binary(FieldOp::Add, steps, table)), big);
   const uint32_t sum = b.binary(FieldOp::Add, b.binary(FieldOp::Add, pick, pick2), b.binary(FieldOp::Mul, x, b.constant(1e-30f)));
   return b.finish(b.binary(FieldOp::Max, b.binary(FieldOp::Min, sum, b.constant(5.0f)), b.unary(FieldOp::Neg, q)));
 }

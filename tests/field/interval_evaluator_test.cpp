@@ -34,10 +34,13 @@ TEST(IntervalEvaluator, EveryOperationEnclosesDenseSamples) {
   const std::vector<Interval> boxes = {
       {0.0f, 0.0f},    {0.0f, 1.0f},      {-1.0f, 0.0f},   {-2.5f, 3.0f},     {1e-30f, 1e-20f},
       {-7.0f, -3.0f},  {0.1f, 0.1000001f}, {1e6f, 1e7f},   {-40.0f, 40.0f},   {1.5f, 1.6f},
-      {3.1f, 3.2f},    {-1e-7f, 1e-7f},   {80.0f, 90.0f},  {0.333f, 0.334f}};
+      {3.1f, 3.2f},    {-1e-7f, 1e-7f},   {80.0f, 90.0f},  {0.333f, 0.334f},
+      // (index ranges of the Perlin tables: one entry, a few, past 64, past the end)
+      {17.0f, 17.9f},  {200.5f, 203.0f},  {100.0f, 300.0f}, {500.0f, 600.0f}};
   const FieldOp unary[] = {FieldOp::Neg, FieldOp::Abs, FieldOp::Square, FieldOp::Sqrt,
                            FieldOp::Exp, FieldOp::Log, FieldOp::Sin,    FieldOp::Cos, FieldOp::Atan,
-                           FieldOp::Floor};
+                           FieldOp::Floor, FieldOp::NoisePerm, FieldOp::NoiseGradX, FieldOp::NoiseGradY,
+                           FieldOp::NoiseGradZ};
   const FieldOp binary[] = {FieldOp::Add, FieldOp::Sub, FieldOp::Mul, FieldOp::Div, FieldOp::Min, FieldOp::Max};
   auto samples = [](Interval r) {
     std::vector<float> s;

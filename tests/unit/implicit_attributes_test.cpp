@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "compiler/native/native_cache.h"
+#include "field/perlin_reference.h"
 #include "frame_capture.h"
 
 namespace {
@@ -169,6 +170,30 @@ TEST(ImplicitAttributes, APatternWithFloorIsColouredPerPixel) {
     const Image img = draw(2, 1, false, method, false, -1.0f, kCheckeredBall);
     EXPECT_GT(expectColoursMatch(img, false, true, checkeredBall), 1000);
   }
+}
+
+// HyperFun's Perlin noise and turbulence (the tape's table look-ups) at every hit point.
+constexpr const char* kNoisyBall =
+    "my_model(x[3], a[1], s[3]) {\n"
+    "  array c[3], y[3];\n"
+    "  c = [0, 0, 0];\n  y[1] = 4*x[1];\n  y[2] = 4*x[2];\n  y[3] = 4*x[3];\n"
+    "  s[1] = 0.5 + 0.5*hfA_NoiseP(y);\n"
+    "  s[2] = 0.6*hfA_Turbulence(x, 8);\n"
+    "  s[3] = 0.3;\n"
+    "  my_model = hfSphere(x, c, 0.9);\n"
+    "}\n";
+
+bool noisyBall(double x, double y, double z, double out[3]) {
+  const double p[3] = {x, y, z}, q[3] = {4 * x, 4 * y, 4 * z};
+  out[0] = 0.5 + 0.5 * pf::field::testing::noise3(q);
+  out[1] = 0.6 * pf::field::testing::turbulence(p, 8);
+  out[2] = 0.3;
+  return true;
+}
+
+TEST(ImplicitAttributes, PerlinNoiseIsColouredPerPixel) {
+  const Image img = draw(2, 1, false, 0.0f, false, -1.0f, kNoisyBall);
+  EXPECT_GT(expectColoursMatch(img, false, true, noisyBall), 1500);
 }
 
 TEST(ImplicitAttributes, LitThroughColorMaterial) {
