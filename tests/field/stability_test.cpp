@@ -1,7 +1,8 @@
-// The failure cases of issue #8, each against the double-precision reference: grazing rays at a
-// silhouette, a thin shell with holes (seed 004's holey sphere), tangent and clustered roots, an
-// ill-conditioned quartic, a Lipschitz bound smaller than the truth, a deep CSG tree where
-// intervals blow up, and NaN/inf inside a field. Each prints what every method does; the
+// The failure cases of issues #8 and 28, each against the double-precision reference: grazing
+// rays at a silhouette, a thin shell with holes (seed 004's holey sphere), tangent and clustered
+// roots, an ill-conditioned quartic, a Lipschitz bound smaller than the truth, a deep CSG tree
+// where intervals blow up, near-cancelling R-functions, grazing slivers of a gyroid shell, and
+// NaN/inf inside a field. Each prints what every method does; the
 // assertions say which method is expected to fail (and how), and that `auto` stays within
 // tolerance on all of them.
 #include <gtest/gtest.h>
@@ -167,6 +168,37 @@ TEST(FieldStability, DeepCsgWhereIntervalsBlowUp) {
                 static_cast<unsigned long long>(c.counters.slabs_culled));
     EXPECT_LE(c.coverage_mismatches, 3);
     EXPECT_LT(c.max_depth_error, 1e-3);
+  }
+}
+
+// Near-cancelling R-functions: a ball of radius 0.8 minus a ball of radius 0.79 by HyperFun's
+// R-subtraction, fA - fB - sqrt(fA^2 + fB^2) -- a shell 0.01 thick whose function near the
+// surface is the difference of two nearly equal terms (fA + |fB| and the root, both about 0.01).
+// Seen from above, every ray through the shell enters it for at most 0.01 near its rim (grazing)
+// and exactly 0.01 in the middle: a 50-step march (steps of 0.04) steps over it; the sound search
+// finds it on every ray.
+TEST(FieldStability, NearCancellingRFunctionShell) {
+  B b;
+  uint32_t r2 = b.binary(FieldOp::Add, b.unary(FieldOp::Square, b.x()), b.unary(FieldOp::Square, b.y()));
+  r2 = b.binary(FieldOp::Add, r2, b.unary(FieldOp::Square, b.z()));
+  const uint32_t r = b.unary(FieldOp::Sqrt, r2);
+  const uint32_t fa = b.binary(FieldOp::Sub, b.constant(0.8f), r), fb = b.binary(FieldOp::Sub, b.constant(0.79f), r);
+  const uint32_t root = b.unary(FieldOp::Sqrt, b.binary(FieldOp::Add, b.unary(FieldOp::Square, fa), b.unary(FieldOp::Square, fb)));
+  const ImplicitField shell("R-subtracted shell", b.finish(b.binary(FieldOp::Sub, b.binary(FieldOp::Sub, fa, fb), root)));
+  // `auto` reads the R-function's sign as its operands' (a CSG tree of two polynomial balls) and
+  // solves it exactly, never evaluating the cancelling difference; `interval` searches the field.
+  EXPECT_EQ(resolveMethod(shell, RootMethod::Auto), RootMethod::Analytic);
+  const FieldRays rays = orthoRays(32, 32, {-1, -1, -1}, {1, 1, 1});
+  for (auto [m, param] : {std::pair{RootMethod::Auto, 0.0f}, std::pair{RootMethod::Interval, 0.0f},
+                          std::pair{RootMethod::March, 50.0f}}) {
+    const Comparison c = compare(shell, rays, 32, 32, m, param, 6000);
+    report("R-subtracted shell", m, param, c);
+    if (m == RootMethod::March) {
+      EXPECT_GT(c.coverage_mismatches, 0);  // steps of 0.04 straddle the 0.01 shell
+    } else {
+      EXPECT_EQ(c.coverage_mismatches, 0);
+      EXPECT_LT(c.max_depth_error, 2e-5);  // 1e-5 of the box's depth
+    }
   }
 }
 
