@@ -17,10 +17,14 @@ namespace {
 using Items = std::vector<Real>;
 Real K(double v) { return Real::known(v); }
 
+constexpr double kNoiseBound = 1.75;      // > sqrt(3): |noise3| where every coordinate >= -4096
+constexpr double kFarNoiseBound = 2600.0;  // > 9^3 2 sqrt(3): |noise3| anywhere
+
 // perlin.h's setup_perlin for one coordinate v: t = v + 4096 (PERLIN_N), b0 = (int)t & 255,
 // b1 = (b0 + 1) & 255, r0 = t - (int)t, r1 = r0 - 1.
 struct LatticeAxis {
   Real b0, b1, r0, r1;
+  Real below;  // 1 where v < -4096 (t < 0, where C's cast truncates upwards), else 0
 };
 
 LatticeAxis latticeAxis(TapeAlgebra& m, Real v) {
@@ -28,7 +32,7 @@ LatticeAxis latticeAxis(TapeAlgebra& m, Real v) {
     const double t = v.value + 4096.0;
     const double whole = std::trunc(t);
     const double b0 = whole - 256.0 * std::floor(whole / 256.0);  // & 255 of a two's complement int
-    return {K(b0), K(b0 == 255.0 ? 0.0 : b0 + 1.0), K(t - whole), K(t - whole - 1.0)};
+    return {K(b0), K(b0 == 255.0 ? 0.0 : b0 + 1.0), K(t - whole), K(t - whole - 1.0), K(t < 0.0 ? 1.0 : 0.0)};
   }
   // On the tape, in float, t = v + 4096 would round v's fraction to 2^-11. Where t >= 0 the whole
   // part is floor(v) + 4096 and the fraction v - floor(v), both exact (4096 is a multiple of 256,
@@ -41,7 +45,7 @@ LatticeAxis latticeAxis(TapeAlgebra& m, Real v) {
   const Real fraction = m.select(below, m.sub(t, whole), m.sub(v, lower));
   const Real b0 = m.sub(whole, m.mul(K(256.0), m.floor(m.div(whole, K(256.0)))));
   const Real b1 = m.select(m.less(b0, K(255.0)), m.add(b0, K(1.0)), K(0.0));
-  return {b0, b1, fraction, m.sub(fraction, K(1.0))};
+  return {b0, b1, fraction, m.sub(fraction, K(1.0)), below};
 }
 
 // s_curve(t) = t * t * (3 - 2 t); lerp(t, a, b) = a + t (b - a).
@@ -80,7 +84,18 @@ Real noise3(TapeAlgebra& m, Real vx, Real vy, Real vz) {
   };
   const Real c = face(z.b0, z.r0);
   const Real d = face(z.b1, z.r1);
-  return lerp(m, sz, c, d);
+  const Real noise = lerp(m, sz, c, d);
+  // A bound noise3 never exceeds, as a clamp that changes no value: over a box spanning lattice
+  // cells the table look-ups reach whole tables, and without it the interval form of noise in a
+  // shape left nearly every box near the surface undecided. Where every coordinate is >= -4096,
+  // each corner's term is a unit gradient dotted with an offset of length at most sqrt(3) and the
+  // lerps' weights lie in [0, 1]: |noise3| < 1.75. Below -4096 HyperFun's truncation leaves
+  // fractions in (-1, 0]: offsets up to 2 per axis (terms up to 2 sqrt(3)) and s-curve weights up
+  // to 5, each lerp at most 9 times its operands: |noise3| < 9^3 2 sqrt(3) < 2600.
+  if (noise.is_known) return noise;
+  const Real far_out = m.max(m.max(x.below, y.below), z.below);
+  const Real bound = m.select(far_out, K(kFarNoiseBound), K(kNoiseBound));
+  return m.max(m.min(noise, bound), m.neg(bound));
 }
 
 }  // namespace

@@ -5,7 +5,9 @@
 // file:line:col.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 #include <set>
 
 #include "compiler/field/perlin_tables.h"
@@ -101,6 +103,24 @@ TEST(HyperFunNoise, NoisePAtCellCornersAndFarFromTheOrigin) {
   }
 }
 
+// The bounds the tape clamps noise3 to (hyperfun_attribute_noise.cpp) hold for HyperFun's own
+// noise3: within [-1.75, 1.75] where every coordinate is >= -4096, within [-2600, 2600] below,
+// where its truncation extrapolates (and the values are far outside the first bound).
+TEST(HyperFunNoise, Noise3StaysWithinTheBoundsTheTapeClampsItTo) {
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> near(-4096.0, 300.0), far(-9000.0, -4096.5), any(-9000.0, 300.0);
+  double near_max = 0, far_max = 0;
+  for (int k = 0; k < 200000; ++k) {
+    const double p[3] = {near(rng), near(rng), near(rng)};
+    near_max = std::max(near_max, std::fabs(noise3(p)));
+    const double q[3] = {far(rng), k % 2 ? far(rng) : any(rng), k % 3 ? far(rng) : any(rng)};
+    far_max = std::max(far_max, std::fabs(noise3(q)));
+  }
+  EXPECT_LT(near_max, 1.75);
+  EXPECT_GT(far_max, 1.75);  // (so the second bound is needed)
+  EXPECT_LT(far_max, 2600.0);
+}
+
 TEST(HyperFunNoise, TurbulenceSumsTheOctavesDownToFrequencyOne) {
   for (double freq : {1.0, 6.0, 8.0, 0.5}) {
     SCOPED_TRACE(freq);
@@ -142,6 +162,18 @@ TEST(HyperFunNoise, NoiseInTheShapeIsAnOrdinaryTape) {
       EXPECT_TRUE(v >= box.lo && v <= box.hi) << v << " outside [" << box.lo << ", " << box.hi << "]";
     }
   }
+}
+
+TEST(HyperFunNoise, ItsIntervalOverManyCellsIsTheClampsBound) {
+  const Compiled c = compileOk(model("s[1] = hfA_NoiseP(x);\ns[2] = 0;\ns[3] = 0;"));
+  IntervalEvaluator ie(c.attributes[0]);
+  const Interval wide = ie.evaluate({-2.0f, 2.0f}, {-2.0f, 2.0f}, {-2.0f, 2.0f});
+  EXPECT_GE(wide.lo, -1.75f);
+  EXPECT_LE(wide.hi, 1.75f);
+  const Interval far = ie.evaluate({-5000.0f, -4000.0f}, {0.0f, 1.0f}, {0.0f, 1.0f});
+  EXPECT_GE(far.lo, -2600.0f);
+  EXPECT_LE(far.hi, 2600.0f);
+  EXPECT_LT(far.lo, -1.75f);  // (a box reaching below -4096 takes the wider bound)
 }
 
 TEST(HyperFunNoise, MisuseIsReportedAtTheArgument) {
