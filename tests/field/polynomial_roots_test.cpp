@@ -3,6 +3,7 @@
 // -- and against the roots they were built from.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -45,6 +46,40 @@ TEST(PolynomialRoots, FirstRootIsTheFirstOfAllRoots) {
     }
   }
   EXPECT_GT(found, 10000);
+}
+
+// Lines and quadratics start from their closed-form root (polynomial_roots.cpp): each root of
+// k (t - r1)(t - r2) is found as accurately as the coefficients (rounded when built from the
+// roots) determine it -- within 8 eps (|c0| + |c1 r| + |c2 r^2|) / |p'(r)| -- including the small
+// root beside a large one, where the textbook formula cancels.
+TEST(PolynomialRoots, QuadraticRootsAreAccurateToDoublePrecision) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  auto check = [](double r1, double r2, double k) {
+    const std::array<double, 5> c{k * r1 * r2, -k * (r1 + r2), k, 0.0, 0.0};
+    const PolynomialRoots all = rootsIn(c, 2, -2.0, 2.0);
+    for (double r : {r1, r2}) {
+      if (r < -2.0 || r > 2.0) continue;
+      const double slope = std::fabs(2 * c[2] * r + c[1]);
+      const double tol = 8 * 2.3e-16 * (std::fabs(c[0]) + std::fabs(c[1] * r) + std::fabs(c[2] * r * r)) / slope;
+      bool seen = false;
+      for (double got : all) seen = seen || std::fabs(got - r) <= tol;
+      EXPECT_TRUE(seen) << "root " << r << " of k = " << k << " (t - " << r1 << ")(t - " << r2 << ")";
+    }
+  };
+  for (int trial = 0; trial < 5000; ++trial) check(u(rng), u(rng), trial % 2 ? 3.0 : -0.25);
+  check(1e-9, 1e8, 1.0);    // c1 ~ -1e8: the small root by c0 / q, not by cancellation
+  check(-1e-12, 5e7, -2.0);
+  // Roots 1e-7 apart: p at the vertex is below evaluate()'s rounding bound, so the pair is one
+  // touching root there (within 1e-7 of both).
+  const std::array<double, 5> pair{0.5 * (0.5 + 1e-7), -(1.0 + 1e-7), 1.0, 0.0, 0.0};
+  const auto touching = firstRootIn(pair, 2, 0.0, 1.0);
+  ASSERT_TRUE(touching);
+  EXPECT_NEAR(*touching, 0.5 + 5e-8, 1e-7);
+  const std::array<double, 5> line{-0.3, 1.5, 0.0, 0.0, 0.0};  // 1.5 t - 0.3
+  const auto r = firstRootIn(line, 1, -1.0, 1.0);
+  ASSERT_TRUE(r);
+  EXPECT_NEAR(*r, 0.2, 1e-16);
 }
 
 }  // namespace
