@@ -12,10 +12,19 @@ namespace {
 
 using Poly = RayPolynomial;
 
-Poly constantPoly(double v) {
-  Poly p;
-  p.c[0] = v;
-  return p;
+// The helpers below write their result into `r` element by element: a value the next
+// instruction reads is read the same way, element by element. (Building a Poly on the stack and
+// copying it into the array made the copy's wide loads wait on the narrow stores just made -- a
+// failed store forward per instruction, most of a ray's time on small tapes.)
+void setConstant(Poly& r, double value) {
+  r.c[0] = value;
+  for (int k = 1; k <= 4; ++k) r.c[k] = 0.0;
+  r.degree = 0;
+}
+
+void copyPoly(Poly& r, const Poly& a, double sign) {
+  for (int k = 0; k <= 4; ++k) r.c[k] = sign * a.c[k];
+  r.degree = a.degree;
 }
 
 void trim(Poly& p) {
@@ -23,13 +32,14 @@ void trim(Poly& p) {
   while (p.degree > 0 && p.c[p.degree] == 0.0) --p.degree;
 }
 
-std::optional<Poly> multiply(const Poly& a, const Poly& b) {
-  if (a.degree + b.degree > 4) return std::nullopt;
-  Poly r;
+// a * b into r (neither is r); false when the product's degree passes 4.
+bool multiplyInto(const Poly& a, const Poly& b, Poly& r) {
+  if (a.degree + b.degree > 4) return false;
+  for (int k = 0; k <= 4; ++k) r.c[k] = 0.0;
   for (int i = 0; i <= a.degree; ++i)
     for (int j = 0; j <= b.degree; ++j) r.c[i + j] += a.c[i] * b.c[j];
   trim(r);
-  return r;
+  return true;
 }
 
 }  // namespace
@@ -51,35 +61,29 @@ bool rayPolynomials(const FieldTape& tape, const std::array<double, 3>& origin, 
       valid[i] = 0;
       continue;
     }
+    // The result goes straight into v[i]; its operands are earlier values, never v[i] itself
+    // (a leaf reads neither).
     const Poly& a = v[in.a];
     const Poly& b = v[in.b];
-    Poly r;
+    Poly& r = v[i];
     bool ok = true;
     // Operations without a polynomial meaning apply only to constants.
     auto onConstant = [&](double value) {
       if (a.degree != 0 || (arity >= 2 && b.degree != 0)) return false;
-      r = constantPoly(value);
+      setConstant(r, value);
       return true;
     };
     switch (in.op) {
       case FieldOp::X: case FieldOp::Y: case FieldOp::Z: {
         const int axis = in.op == FieldOp::X ? 0 : in.op == FieldOp::Y ? 1 : 2;
-        r.c[0] = origin[axis];
+        setConstant(r, origin[axis]);
         r.c[1] = direction[axis];
         trim(r);
         break;
       }
-      case FieldOp::Const: r = constantPoly(in.value); break;
-      case FieldOp::Neg:
-        r = a;
-        for (double& c : r.c) c = -c;
-        break;
-      case FieldOp::Square: case FieldOp::Mul: {
-        auto m = multiply(a, in.op == FieldOp::Square ? a : b);
-        ok = m.has_value();
-        if (ok) r = *m;
-        break;
-      }
+      case FieldOp::Const: setConstant(r, in.value); break;
+      case FieldOp::Neg: copyPoly(r, a, -1.0); break;
+      case FieldOp::Square: case FieldOp::Mul: ok = multiplyInto(a, in.op == FieldOp::Square ? a : b, r); break;
       case FieldOp::Add: case FieldOp::Sub:
         for (int k = 0; k <= 4; ++k) r.c[k] = in.op == FieldOp::Add ? a.c[k] + b.c[k] : a.c[k] - b.c[k];
         trim(r);
@@ -109,15 +113,13 @@ bool rayPolynomials(const FieldTape& tape, const std::array<double, 3>& origin, 
       case FieldOp::Sample: ok = false; break;  // a grid is no polynomial
       case FieldOp::Select:  // a condition constant along the ray picks one polynomial
         ok = a.degree == 0;
-        if (ok) r = a.c[0] != 0.0 ? b : v[in.c];
+        if (ok) copyPoly(r, a.c[0] != 0.0 ? b : v[in.c], 1.0);
         break;
     }
     if (!ok) {
       if (stop_at_invalid) return false;
       valid[i] = 0;
-      continue;
     }
-    v[i] = r;
   }
   return true;
 }
