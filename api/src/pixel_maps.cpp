@@ -38,6 +38,10 @@ void transferColors(const PixelTransferModes& modes, const PixelMaps& maps, Colo
   }
 }
 
+void byteColorsAsMesa(float* rgba, size_t n) {
+  for (size_t i = 0; i < n * 4; ++i) rgba[i] = std::nearbyint(rgba[i] * 255.0f) * (1.0f / 255.0f);
+}
+
 void indicesToColors(const PixelTransferModes& modes, const PixelMaps& maps, bool shift_offset, const uint32_t* indices,
                      size_t n, float* rgba) {
   const int shift = modes.index_shift;

@@ -65,6 +65,11 @@ enum class ColorMapIndex {
 void transferColors(const PixelTransferModes& modes, const PixelMaps& maps, ColorMapIndex indexing, float* rgba,
                     size_t n);
 
+// Colours of 8-bit components (c / 255, as unpacked) as Mesa and llvmpipe turn them into floats
+// -- c * (1 / 255) in float, sometimes one ulp away -- so that scaled and biased values round to
+// bytes as OSMesa's do; for images about to be transferred.
+void byteColorsAsMesa(float* rgba, size_t n);
+
 // Colour indices to RGBA (4 floats each): under `shift_offset` GL_INDEX_SHIFT and
 // GL_INDEX_OFFSET first (as unsigned arithmetic, Mesa's), then each index (masked to the table's
 // size - 1) looked up in I_TO_R .. I_TO_A. No I_TO_I, scale, bias or RGBA maps, as in OSMesa.
