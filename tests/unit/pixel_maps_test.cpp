@@ -284,3 +284,31 @@ TEST(PixelMaps, ReadPixelsTransfersColours) {
   EXPECT_EQ(px[3], 153);
   EXPECT_EQ(error(), GLenum(GL_NO_ERROR));
 }
+
+// A display list keeps glTexImage's and glDrawPixels' images as unpacked and transfers them
+// when it runs (as Mesa, which replays the command with the raw image): the tables and modes
+// in effect then, not when compiled. (OSMesa gives the same bytes for the same calls.)
+TEST(PixelMaps, ListsTransferImagesWhenTheyRun) {
+  pf::test::GlContext c(4, 1);
+  const GLubyte indices[2] = {1, 2};
+  const GLubyte rgba[4] = {100, 100, 100, 200};
+  pfglNewList(1, GL_COMPILE);
+  pfglTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 1, 0, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, indices);
+  pfglRasterPos2f(-0.99f, -0.99f);
+  pfglDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+  pfglEndList();
+  const GLfloat red[4] = {0.0f, 0.25f, 0.5f, 1.0f};
+  pfglPixelMapfv(GL_PIXEL_MAP_I_TO_R, 4, red);
+  pfglPixelTransferi(GL_INDEX_OFFSET, 1);  // index 1 -> 2, 2 -> 3
+  pfglPixelTransferf(GL_RED_SCALE, 0.5f);  // (not applied to colour indices)
+  pfglCallList(1);
+  GLubyte texels[8];
+  pfglGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+  EXPECT_EQ(texels[0], 128);  // 0.5
+  EXPECT_EQ(texels[4], 255);  // 1.0
+  EXPECT_EQ(texels[3], 0);    // I_TO_A's one entry, 0
+  pfglFinish();
+  EXPECT_EQ(c.at(0, 0)[0], 50);  // 100 scaled by 0.5
+  EXPECT_EQ(c.at(0, 0)[3], 200);
+  EXPECT_EQ(error(), GLenum(GL_NO_ERROR));
+}
