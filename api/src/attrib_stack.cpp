@@ -107,7 +107,7 @@ void popAttrib(PFcontextRec& ctx) {
   }
   if (m & GL_FOG_BIT) ctx.fog = s.fog;  // (the enable included)
   if (m & GL_ACCUM_BUFFER_BIT) std::copy(std::begin(s.accum_clear), std::end(s.accum_clear), ctx.accum_clear);
-  if (m & GL_PIXEL_MODE_BIT) ctx.pixel_mode = s.pixel_mode;  // (the zoom: no pixel transfer or maps)
+  if (m & GL_PIXEL_MODE_BIT) ctx.pixel_mode = s.pixel_mode;  // (the zoom and glPixelTransfer's modes, not the maps)
   if (m & GL_POINT_BIT) ctx.raster_modes.point_size = s.raster_modes.point_size;
   if (m & GL_LINE_BIT) {  // the width, the stipple and its enable
     ctx.raster_modes.line_width = s.raster_modes.line_width;

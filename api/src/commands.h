@@ -35,6 +35,7 @@ using Values4f = Values<GLfloat, 4>;
 using Values16f = Values<GLfloat, 16>;
 using Values16i = Values<GLint, 16>;
 using Values4d = Values<GLdouble, 4>;
+using PixelMapValues = Values<GLfloat, kMaxPixelMapTable>;  // a glPixelMap table, as floats
 
 // Copies `n` values (at most N) from `p`, given as `count` (NULL: 0).
 template <class T, int N, class U>
@@ -93,6 +94,9 @@ Values<T, N> valuesOf(const U* p, int n, GLint count) {
   /* draw_pixels.cpp */                                                                   \
   X(PixelZoom, pixelZoom, GLfloat, GLfloat)                                               \
   X(CopyPixels, copyPixels, GLint, GLint, GLsizei, GLsizei, GLenum)                       \
+  /* pixel_map_commands.cpp: glPixelTransferi as its float; glPixelMap as floats */       \
+  X(PixelTransfer, pixelTransfer, GLenum, GLfloat)                                        \
+  X(PixelMap, pixelMap, GLenum, GLsizei, PixelMapValues)                                  \
   /* raster_mode_commands.cpp */                                                          \
   X(PointSize, pointSize, GLfloat)                                                        \
   X(LineWidth, lineWidth, GLfloat)                                                        \

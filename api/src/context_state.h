@@ -249,6 +249,7 @@ struct PFcontextRec {
   pf::ClipPlaneState clip;
   pf::RasterPosState raster;
   pf::PixelModeState pixel_mode;
+  pf::PixelMaps pixel_maps;  // glPixelMap's tables (pixel_maps.h): fixed, 10 KiB
   pf::RasterModes raster_modes;
   pf::DisplayLists lists;
   GLenum hints[pf::kHintCount] = {GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE,

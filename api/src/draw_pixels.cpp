@@ -8,9 +8,12 @@
 // [0, 1]); both go through the per-fragment operations as instances of pixel_rectangle
 // (pixel_rectangles.h). Stencil images are written to the stencil buffer through the scissor
 // test and the stencil write mask, as GL says (no fragments). An invalid raster position draws
-// nothing. No pixel transfer (scale, bias, maps): GL's initial values, which leave the image as
-// it is. In a display list glDrawPixels' image is unpacked when the list is compiled; glCopyPixels
-// reads the framebuffer when the list runs.
+// nothing. Pixel transfer (section 3.6.5, pixel_maps.h) as OSMesa applies it: colour images
+// through scale, bias and the colour maps (indexed as OSMesa's texture of them is), colour
+// indices through the index-to-RGBA maps alone, glDrawPixels' depth through depth scale and
+// bias, copied depth and stencil images unchanged. In a display list glDrawPixels' image is
+// unpacked when the list is compiled and transferred when it runs; glCopyPixels reads the
+// framebuffer when the list runs.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -23,6 +26,7 @@
 
 #include "api/src/commands.h"
 #include "api/src/context_state.h"
+#include "api/src/pixel_maps.h"
 #include "api/src/pixel_rectangles.h"
 #include "api/src/pixel_transfer.h"
 
@@ -30,26 +34,36 @@ namespace pf {
 namespace {
 
 // An image ready to draw, row 0 first: colour (4 floats a pixel), depth (1 float) or stencil
-// indices (1 a pixel, as floats: exact up to 2^24, past the 8 bits they are masked to).
+// indices (1 a pixel, as floats: exact up to 2^24, past the 8 bits they are masked to). Before
+// pixel transfer also colour indices (4 floats a pixel, the index in the first: its low 8 bits,
+// all that the tables' at most 256 entries look at).
 struct PixelImage {
-  GLenum kind = GL_COLOR;  // GL_COLOR, GL_DEPTH or GL_STENCIL
+  GLenum kind = GL_COLOR;  // GL_COLOR, GL_COLOR_INDEX, GL_DEPTH or GL_STENCIL
   int width = 0, height = 0;
+  bool bytes = false;      // colours of 8-bit components (GL_UNSIGNED_BYTE, or copied)
   std::vector<float> values;
-  int components() const { return kind == GL_COLOR ? 4 : 1; }
+  int components() const { return kind == GL_COLOR || kind == GL_COLOR_INDEX ? 4 : 1; }
 };
 
-// The buffer a format draws into.
+// The kind of image a format gives.
 GLenum kindOf(GLenum format) {
-  return format == GL_DEPTH_COMPONENT ? GL_DEPTH : format == GL_STENCIL_INDEX ? GL_STENCIL : GL_COLOR;
+  switch (format) {
+    case GL_DEPTH_COMPONENT: return GL_DEPTH;
+    case GL_STENCIL_INDEX: return GL_STENCIL;
+    case GL_COLOR_INDEX: return GL_COLOR_INDEX;
+    default: return GL_COLOR;
+  }
 }
 
-// Reads the client image into `image` (sized already). GL_COLOR_INDEX pixels become GL's initial
-// index-to-RGBA maps' one entry, (0, 0, 0, 0).
+// Reads the client image into `image` (sized already), before pixel transfer.
 void unpackImage(const PixelStore& store, GLenum format, GLenum type, const void* data, PixelImage& image) {
   const int w = image.width, h = image.height;
   const size_t n = static_cast<size_t>(w) * static_cast<size_t>(h);
   if (format == GL_COLOR_INDEX) {
+    std::vector<uint32_t> indices(n);
+    unpackIndices(store, type, w, h, data, indices.data());
     std::fill(image.values.begin(), image.values.end(), 0.0f);
+    for (size_t i = 0; i < n; ++i) image.values[i * 4] = static_cast<float>(indices[i] & 0xffu);
   } else if (format == GL_STENCIL_INDEX) {
     std::vector<uint32_t> indices(n);
     unpackIndices(store, type, w, h, data, indices.data());
@@ -60,6 +74,37 @@ void unpackImage(const PixelStore& store, GLenum format, GLenum type, const void
     for (size_t i = 0; i < n; ++i) image.values[i] = rgba[i * 4];
   } else {
     unpackColors(store, format, type, w, h, data, image.values.data());
+  }
+}
+
+// A transferred colour component as OSMesa's shader hands it to the 8-bit colour buffer: clamped
+// and rounded to the nearest 8-bit value, halves to even (its conversion; primflow's renderer
+// rounds its own way, 0.7 -- 178.49999 -- to 179), NaN as 0.
+float colourByte(float c) {
+  const float clamped = c > 0.0f ? std::min(c, 1.0f) : 0.0f;
+  return std::nearbyint(clamped * 255.0f) / 255.0f;
+}
+
+// Pixel transfer as OSMesa applies it to an image about to be drawn (`copied`: glCopyPixels'):
+// colours through scale, bias and the colour maps, indexed as OSMesa's 256-texel texture of the
+// maps is; colour indices to colours through the index-to-RGBA maps (no shift or offset);
+// glDrawPixels' depth values through depth scale and bias; stencil indices unchanged.
+void transferImage(const PFcontextRec& ctx, PixelImage& image, bool copied) {
+  const PixelTransferModes& modes = ctx.pixel_mode.transfer;
+  const size_t n = static_cast<size_t>(image.width) * static_cast<size_t>(image.height);
+  if (image.kind == GL_COLOR && !modes.colorIdentity()) {
+    if (image.bytes) byteColorsAsMesa(image.values.data(), n);  // (as llvmpipe samples them)
+    transferColors(modes, ctx.pixel_maps, ColorMapIndex::kTexel256, image.values.data(), n);
+    for (float& c : image.values) c = colourByte(c);
+  } else if (image.kind == GL_COLOR_INDEX) {
+    for (size_t i = 0; i < n; ++i) {
+      const uint32_t index = static_cast<uint32_t>(image.values[i * 4]);
+      indicesToColors(modes, ctx.pixel_maps, false, &index, 1, image.values.data() + i * 4);
+    }
+    for (float& c : image.values) c = colourByte(c);
+    image.kind = GL_COLOR;
+  } else if (image.kind == GL_DEPTH && !copied) {
+    for (size_t i = 0; i < n; ++i) image.values[i] = transferDepth(modes, image.values[i]);
   }
 }
 
@@ -196,10 +241,12 @@ uint32_t replayDrawPixels(PFcontextRec& ctx, const uint32_t* args) {
   } else if (d.values > 0 && ctx.raster.valid) {
     PixelImage image;
     image.kind = kindOf(d.format);
+    image.bytes = d.type == GL_UNSIGNED_BYTE;
     image.width = d.width;
     image.height = d.height;
     if (sizeImage(ctx, image, "glCallList")) {
       std::memcpy(image.values.data(), args + kRecordedWords, sizeof(float) * d.values);
+      transferImage(ctx, image, false);
       drawImage(ctx, image);
     }
   }
@@ -229,6 +276,7 @@ void copyPixels(PFcontextRec& ctx, GLint x, GLint y, GLsizei width, GLsizei heig
   if (sx0 >= sx1 || sy0 >= sy1) return;
   PixelImage image;
   image.kind = type;
+  image.bytes = true;
   image.width = static_cast<int>(sx1 - sx0);
   image.height = static_cast<int>(sy1 - sy0);
   if (!sizeImage(ctx, image, "glCopyPixels")) return;
@@ -250,6 +298,7 @@ void copyPixels(PFcontextRec& ctx, GLint x, GLint y, GLsizei width, GLsizei heig
   const RasterPosState saved = r;
   r.position.x += static_cast<float>((sx0 - x) * static_cast<double>(ctx.pixel_mode.zoom_x));
   r.position.y += static_cast<float>((sy0 - y) * static_cast<double>(ctx.pixel_mode.zoom_y));
+  transferImage(ctx, image, true);
   drawImage(ctx, image);
   r = saved;
 }
@@ -264,6 +313,7 @@ void pfglDrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum type, c
   const bool readable = pixels && width > 0 && height > 0 && pf::checkDrawFormatAndType(format, type) == GL_NO_ERROR;
   pf::PixelImage image;
   image.kind = pf::kindOf(format);
+  image.bytes = type == GL_UNSIGNED_BYTE;
   image.width = std::max(width, 0);
   image.height = std::max(height, 0);
   if (ctx->lists.compiling) {
@@ -283,6 +333,7 @@ void pfglDrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum type, c
     if (!pf::sizeImage(*ctx, image, "glDrawPixels")) return;
     pf::unpackImage(ctx->unpack, format, type, pixels, image);
   }
+  pf::transferImage(*ctx, image, false);
   pf::drawImage(*ctx, image);
 }
 

@@ -9,6 +9,8 @@
 
 #include <GL/gl.h>
 
+#include "api/src/pixel_maps.h"
+
 struct PFcontextRec;
 
 namespace pf {
@@ -55,9 +57,11 @@ class PixelRectangles {
   int saved_rect_count_ = 0;
 };
 
-// glPixelZoom's factors (GL 1.5 section 3.6.4), part of GL_PIXEL_MODE_BIT.
+// GL_PIXEL_MODE_BIT's state: glPixelZoom's factors (GL 1.5 section 3.6.4) and glPixelTransfer's
+// modes (section 3.6.5; the pixel maps are in no attribute group).
 struct PixelModeState {
   float zoom_x = 1.0f, zoom_y = 1.0f;
+  PixelTransferModes transfer;
 };
 
 }  // namespace pf

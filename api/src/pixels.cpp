@@ -1,6 +1,9 @@
 // Pixel store modes and reading pixels: glPixelStorei / glPixelStoref for every pack and unpack
 // mode of GL 1.5 table 3.1 (the unpack modes read by glTexImage and glTexSubImage, the pack modes
-// written by glReadPixels and glGetTexImage, both through pixel_transfer.h), and glReadPixels.
+// written by glReadPixels and glGetTexImage, both through pixel_transfer.h), and glReadPixels
+// with pixel transfer (section 3.6.5 as 4.3.2 applies it, pixel_maps.h): colours through scale,
+// bias and the colour maps, depth through depth scale and bias, stencil indices through index
+// shift and offset and the stencil map.
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -8,6 +11,7 @@
 #include <primflow/gl.h>
 
 #include "api/src/context_state.h"
+#include "api/src/pixel_maps.h"
 #include "api/src/pixel_transfer.h"
 
 namespace {
@@ -66,7 +70,9 @@ void pfglPixelStoref(GLenum pname, GLfloat param) { pixelStore(pname, param); }
 // long (0: `width`), starting on GL_PACK_ALIGNMENT boundaries, after GL_PACK_SKIP_ROWS rows and
 // GL_PACK_SKIP_PIXELS pixels, each component's bytes reversed under GL_PACK_SWAP_BYTES. Pixels
 // outside the framebuffer are left as they are in `pixels` (GL leaves them undefined). Drawing
-// is finished first.
+// is finished first. Colours through scale, bias and the colour maps (a float read unclamped,
+// as Mesa's), depth through scale and bias (then clamped to [0, 1], as Mesa clamps it),
+// stencil values through shift, offset and GL_MAP_STENCIL in 8 bits (Mesa's).
 void pfglReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type, GLvoid* pixels) {
   PFcontextRec* ctx = pf::contextOutsideBegin();
   if (!ctx) return;
@@ -95,6 +101,9 @@ void pfglReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum form
   if (!pixels || !ctx->color || width == 0 || height == 0) return;
   ctx->finish();
   const pf::PixelStore& pack = ctx->pack;
+  const pf::PixelTransferModes& modes = ctx->pixel_mode.transfer;
+  const bool transfer_colors = format != GL_DEPTH_COMPONENT && format != GL_STENCIL_INDEX && !modes.colorIdentity();
+  const bool transfer_depth = modes.depth_scale != 1.0f || modes.depth_bias != 0.0f;
   // (The rows laid out as every client image is: pixel_transfer.h.)
   const pf::ImageLayout layout = pf::imageLayout(pack, format, type, width);
   const size_t pixel_bytes = layout.pixel_bytes;
@@ -109,13 +118,18 @@ void pfglReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum form
       const size_t at = static_cast<size_t>(fy) * ctx->width + static_cast<size_t>(fx);
       double v[4] = {0, 0, 0, 0};
       if (format == GL_DEPTH_COMPONENT) {
-        v[0] = ctx->depth[at];
+        v[0] = transfer_depth ? std::clamp(pf::transferDepth(modes, ctx->depth[at]), 0.0f, 1.0f) : ctx->depth[at];
+      } else if (transfer_colors) {  // (in floats, as Mesa converts and transfers)
+        float rgba[4];
+        for (int c = 0; c < 4; ++c) rgba[c] = ctx->color[at * 4 + c] * (1.0f / 255.0f);
+        pf::transferColors(modes, ctx->pixel_maps, pf::ColorMapIndex::kNearest, rgba, 1);
+        for (int c = 0; c < 4; ++c) v[c] = rgba[c];
       } else {
         for (int c = 0; c < 4; ++c) v[c] = ctx->color[at * 4 + c] / 255.0;
       }
       unsigned char* dst = out + row * row_bytes + static_cast<size_t>(col) * pixel_bytes;
       if (format == GL_STENCIL_INDEX) {  // an index: not scaled to the type's range
-        const uint8_t index = ctx->stencil[at];
+        const uint8_t index = pf::transferStencil(modes, ctx->pixel_maps, ctx->stencil[at]);
         const float f = index;
         const uint16_t u16 = index;
         const uint32_t u32 = index;
@@ -127,13 +141,14 @@ void pfglReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum form
         continue;
       }
       for (int c = 0; c < components; ++c) {
-        const double f = std::clamp(v[c], 0.0, 1.0);
+        const double f = v[c] > 0.0 ? std::min(v[c], 1.0) : 0.0;  // (NaN as 0)
         if (type == GL_FLOAT) {
-          const float s = static_cast<float>(format == GL_DEPTH_COMPONENT ? v[c] : f);
+          const float s = static_cast<float>(format == GL_DEPTH_COMPONENT || transfer_colors ? v[c] : f);
           std::memcpy(dst + c * 4, &s, 4);
         } else if (type == GL_UNSIGNED_BYTE) {
           dst[c] = format == GL_DEPTH_COMPONENT ? static_cast<unsigned char>(std::nearbyint(f * 255.0))
-                                                : ctx->color[at * 4 + c];
+                   : transfer_colors ? static_cast<unsigned char>(std::nearbyint(static_cast<float>(f) * 255.0f))
+                                     : ctx->color[at * 4 + c];
         } else if (type == GL_UNSIGNED_SHORT) {
           const uint16_t s = static_cast<uint16_t>(std::nearbyint(f * 65535.0));
           std::memcpy(dst + c * 2, &s, 2);

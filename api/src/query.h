@@ -21,7 +21,7 @@ struct Query {
   }
 };
 
-// The GL 1.x state of what primflow does not have -- evaluators, pixel transfer, ... -- which no command changes: GL's initial values (those
+// The GL 1.x state of what primflow does not have -- evaluators, selection, ... -- which no command changes: GL's initial values (those
 // OSMesa reports in a new context); and primflow's implementation limits for them. False for a
 // token that is not GL 1.x state.
 bool constantQuery(GLenum pname, Query& q);

@@ -184,7 +184,8 @@ bool query(const PFcontextRec& ctx, GLenum pname, Query& q) {
     }
     default:
       if (fragmentQuery(ctx.fragment, pname, q) || pf::fogClipQuery(ctx, pname, q) ||
-          pf::rasterPosQuery(ctx, pname, q) || pf::rasterModeQuery(ctx.raster_modes, pname, q))
+          pf::rasterPosQuery(ctx, pname, q) || pf::rasterModeQuery(ctx.raster_modes, pname, q) ||
+          pf::pixelTransferQuery(ctx, pname, q))
         return true;
       if (pname >= GL_LIGHT0 && pname < GL_LIGHT0 + pf::kMaxLights) {
         set({ctx.lighting.lights[pname - GL_LIGHT0].enabled ? 1.0 : 0.0});

@@ -1,10 +1,13 @@
 // Texture images (GL 1.5 sections 3.8.1-3.8.3, 6.1.4): glTexImage1D/2D (and their proxies),
 // glTexSubImage1D/2D, glCopyTexImage1D/2D, glCopyTexSubImage1D/2D, glGetTexImage and
 // glGetTexLevelParameter, with GL's errors in Mesa's order. Client images are read by the
-// unpack modes (pixel_transfer.h) a row at a time into 8-bit RGBA levels; a level a recorded
-// draw still samples is copied before it changes (textures.h). A display list records
-// glTexImage / glTexSubImage with the image already unpacked (GL 1.5 section 5.4: the unpack
-// modes in effect when the list is compiled).
+// unpack modes (pixel_transfer.h) a row at a time, through pixel transfer (pixel_maps.h, as
+// OSMesa applies it: colours through scale, bias and the colour maps; colour indices through
+// index shift and offset and the index-to-RGBA maps; glCopyTexImage's colours as client
+// colours), into 8-bit RGBA levels; glGetTexImage applies none. A level a recorded draw still
+// samples is copied before it changes (textures.h). A display list records glTexImage /
+// glTexSubImage with the image already unpacked (GL 1.5 section 5.4: the unpack modes in effect
+// when the list is compiled) and transfers it when the list runs.
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -14,6 +17,7 @@
 
 #include "api/src/commands.h"
 #include "api/src/context_state.h"
+#include "api/src/pixel_maps.h"
 #include "api/src/pixel_transfer.h"
 
 namespace pf {
@@ -56,23 +60,25 @@ void storeTexel(TextureBase base, const float* c, uint8_t* t) {
   }
 }
 
-// Where an image's pixels come from: client memory by the unpack modes, RGBA floats unpacked
-// when a display list recorded the command, or the colour buffer (glCopyTexImage).
+// Where an image's pixels come from: client memory by the unpack modes, unpacked words
+// recorded by a display list, or the colour buffer (glCopyTexImage). Its pixels are colours, or
+// colour indices (format GL_COLOR_INDEX), before pixel transfer.
 struct ImageSource {
   const PixelStore* store = nullptr;
   GLenum format = GL_RGBA, type = GL_UNSIGNED_BYTE;
-  // Client memory (null: no image, the texels undefined: 0). Colour indices are all (0, 0, 0, 0):
-  // GL's initial index-to-RGBA maps, one entry of 0 each, which primflow has no glPixelMap to change.
-  const void* data = nullptr;
-  const float* rgba = nullptr;       // or unpacked, width * height * 4
+  const void* data = nullptr;           // client memory (null: no image, the texels undefined: 0)
+  const uint32_t* recorded = nullptr;   // or recorded: 4 floats a pixel, or 1 index a colour index
   const PFcontextRec* frame = nullptr;  // or the colour buffer from (x, y)
   int x = 0, y = 0;
-  int width = 0;                     // the source's row length in pixels
+  int width = 0;                        // the source's row length in pixels
 
-  // Row `row`, pixels [first, first + n), into out (4 floats a pixel).
-  void read(int row, int first, int n, float* out, std::vector<float>& scratch) const {
-    if (rgba) {
-      std::copy(rgba + (static_cast<size_t>(row) * width + first) * 4, rgba + (static_cast<size_t>(row) * width + first + n) * 4, out);
+  bool indices() const { return format == GL_COLOR_INDEX; }
+  bool present() const { return data || recorded || frame; }
+
+  // Row `row`, pixels [first, first + n), of a colour source into out (4 floats a pixel).
+  void readColors(int row, int first, int n, float* out, std::vector<float>& scratch) const {
+    if (recorded) {
+      std::memcpy(out, recorded + (static_cast<size_t>(row) * width + first) * 4, sizeof(float) * 4 * static_cast<size_t>(n));
     } else if (frame) {
       for (int i = 0; i < n; ++i) {
         const long fx = static_cast<long>(x) + first + i, fy = static_cast<long>(y) + row;
@@ -80,17 +86,47 @@ struct ImageSource {
         for (int k = 0; k < 4; ++k)
           out[i * 4 + k] = inside ? frame->color[(static_cast<size_t>(fy) * frame->width + fx) * 4 + k] / 255.0f : 0.0f;
       }
-    } else if (data && format != GL_COLOR_INDEX) {
+    } else {
       PixelStore s = *store;
       s.skip_rows += row;
       scratch.resize(static_cast<size_t>(width) * 4);
       unpackColors(s, format, type, width, 1, data, scratch.data());
       std::copy(scratch.begin() + first * 4, scratch.begin() + (first + n) * 4, out);
-    } else {
-      std::fill(out, out + static_cast<size_t>(n) * 4, 0.0f);
     }
   }
+
+  // The same of a colour-index source, into out (1 index a pixel).
+  void readIndices(int row, int first, int n, uint32_t* out, std::vector<uint32_t>& scratch) const {
+    if (recorded) {
+      std::copy(recorded + static_cast<size_t>(row) * width + first, recorded + static_cast<size_t>(row) * width + first + n, out);
+      return;
+    }
+    PixelStore s = *store;
+    s.skip_rows += row;
+    scratch.resize(static_cast<size_t>(width));
+    unpackIndices(s, type, width, 1, data, scratch.data());
+    std::copy(scratch.begin() + first, scratch.begin() + first + n, out);
+  }
 };
+
+// Row `row`, pixels [first, first + n), of `src` into out (4 floats a pixel) through pixel
+// transfer: the one place every texture image path converts to RGBA. No image: 0.
+void readTransferred(const PFcontextRec& ctx, const ImageSource& src, int row, int first, int n, float* out,
+                     std::vector<float>& scratch, std::vector<uint32_t>& indices) {
+  if (!src.present()) {
+    std::fill(out, out + static_cast<size_t>(n) * 4, 0.0f);
+  } else if (src.indices()) {
+    std::vector<uint32_t> row_indices(static_cast<size_t>(n));
+    src.readIndices(row, first, n, row_indices.data(), indices);
+    indicesToColors(ctx.pixel_mode.transfer, ctx.pixel_maps, true, row_indices.data(), static_cast<size_t>(n), out);
+  } else {
+    src.readColors(row, first, n, out, scratch);
+    const PixelTransferModes& modes = ctx.pixel_mode.transfer;
+    if (modes.colorIdentity()) return;
+    if (src.frame || src.type == GL_UNSIGNED_BYTE) byteColorsAsMesa(out, static_cast<size_t>(n));
+    transferColors(modes, ctx.pixel_maps, ColorMapIndex::kNearest, out, static_cast<size_t>(n));
+  }
+}
 
 bool isProxy(GLenum target) { return target == GL_PROXY_TEXTURE_1D || target == GL_PROXY_TEXTURE_2D; }
 
@@ -128,10 +164,12 @@ TextureLevel* writableLevel(TextureImage& img) {
 }
 
 // Fills `level`'s texels [x0, x0 + w) x [y0, y0 + h) from `src` (its pixels from (sx, sy)).
-void fill(TextureLevel& level, TextureBase base, int x0, int y0, int w, int h, const ImageSource& src, int sx, int sy) {
+void fill(const PFcontextRec& ctx, TextureLevel& level, TextureBase base, int x0, int y0, int w, int h,
+          const ImageSource& src, int sx, int sy) {
   std::vector<float> row(static_cast<size_t>(w) * 4), scratch;
+  std::vector<uint32_t> indices;
   for (int j = 0; j < h; ++j) {
-    src.read(sy + j, sx, w, row.data(), scratch);
+    readTransferred(ctx, src, sy + j, sx, w, row.data(), scratch, indices);
     uint8_t* t = level.texels.data() + (static_cast<size_t>(y0 + j) * level.width + x0) * 4;
     for (int i = 0; i < w; ++i) storeTexel(base, row.data() + i * 4, t + i * 4);
   }
@@ -174,7 +212,7 @@ void texImage(PFcontextRec& ctx, int dims, GLenum target, GLint level, GLint int
     fresh->width = w;
     fresh->height = h;
     fresh->texels.assign(static_cast<size_t>(w) * static_cast<size_t>(h) * 4, 0);
-    if (w > 0 && h > 0) fill(*fresh, base, 0, 0, w, h, src, border, dims == 1 ? 0 : border);
+    if (w > 0 && h > 0) fill(ctx, *fresh, base, 0, 0, w, h, src, border, dims == 1 ? 0 : border);
     img = TextureImage{w > 0 && h > 0 ? std::move(fresh) : nullptr, internal, base, w, h};
   } catch (const std::bad_alloc&) {
     ctx.setError(GL_OUT_OF_MEMORY);
@@ -200,13 +238,14 @@ void texSubImage(PFcontextRec& ctx, int dims, GLenum target, GLint level, GLint 
   t.unit.reset();
   t.dirty = true;
   try {
-    fill(*writableLevel(img), img.base, xoffset, yoffset, width, height, src, 0, 0);
+    fill(ctx, *writableLevel(img), img.base, xoffset, yoffset, width, height, src, 0, 0);
   } catch (const std::bad_alloc&) {
     ctx.setError(GL_OUT_OF_MEMORY);
   }
 }
 
-// The recorded form of glTexImage / glTexSubImage: these words, then `floats` RGBA floats.
+// The recorded form of glTexImage / glTexSubImage: these words, then `words` more: the image
+// unpacked, before pixel transfer (RGBA floats, or a colour index's one word a pixel).
 struct RecordedImage {
   GLint dims, sub;
   GLenum target;
@@ -214,7 +253,7 @@ struct RecordedImage {
   GLsizei width, height;
   GLint border;
   GLenum format, type;
-  uint32_t floats;  // 0: no image (a NULL pointer, or one GL refuses when the list runs)
+  uint32_t words;  // 0: no image (a NULL pointer, or one GL refuses when the list runs)
 };
 constexpr uint32_t kRecordedWords = sizeof(RecordedImage) / 4;
 static_assert(sizeof(RecordedImage) % 4 == 0);
@@ -243,14 +282,21 @@ void issueImage(RecordedImage r, const void* pixels) {
     // one past memory leaves the command out with GL_OUT_OF_MEMORY, as any command recorded.)
     const bool readable = pixels && r.width > 0 && h > 0 && textureFormatError(r.format, r.type) == GL_NO_ERROR &&
                           r.width <= kMaxTextureSize + 2 && h <= kMaxTextureSize + 2;
-    r.floats = readable ? static_cast<uint32_t>(static_cast<uint64_t>(r.width) * h * 4) : 0;
-    uint32_t* at = record(*ctx, GlOp::TexImage, kRecordedWords + r.floats);
+    const uint64_t per_pixel = client.indices() ? 1 : 4;
+    r.words = readable ? static_cast<uint32_t>(static_cast<uint64_t>(r.width) * h * per_pixel) : 0;
+    uint32_t* at = record(*ctx, GlOp::TexImage, kRecordedWords + r.words);
     if (at) {
       std::memcpy(at, &r, sizeof r);
-      if (r.floats) {
-        std::vector<float> scratch;
-        float* out = reinterpret_cast<float*>(at + kRecordedWords);
-        for (int y = 0; y < h; ++y) client.read(y, 0, r.width, out + static_cast<size_t>(y) * r.width * 4, scratch);
+      uint32_t* out = at + kRecordedWords;
+      std::vector<float> scratch, colors(static_cast<size_t>(r.width) * 4);
+      std::vector<uint32_t> indices;
+      for (int y = 0; y < h && r.words; ++y) {
+        if (client.indices()) {
+          client.readIndices(y, 0, r.width, out + static_cast<size_t>(y) * r.width, indices);
+        } else {
+          client.readColors(y, 0, r.width, colors.data(), scratch);
+          std::memcpy(out + static_cast<size_t>(y) * r.width * 4, colors.data(), sizeof(float) * colors.size());
+        }
       }
     }
     if (!ctx->lists.execute) return;
@@ -264,14 +310,16 @@ uint32_t replayTexImage(PFcontextRec& ctx, const uint32_t* args) {
   RecordedImage r;
   std::memcpy(&r, args, sizeof r);
   ImageSource src;
-  src.rgba = r.floats ? reinterpret_cast<const float*>(args + kRecordedWords) : nullptr;
+  src.recorded = r.words ? args + kRecordedWords : nullptr;
+  src.format = r.format;
+  src.type = r.type;
   src.width = r.width;
   // (A recorded image reads as already unpacked: its format and type only for the checks.)
   if (r.sub)
     texSubImage(ctx, r.dims, r.target, r.level, r.xoffset, r.yoffset, r.width, r.height, r.format, r.type, src);
   else
     texImage(ctx, r.dims, r.target, r.level, r.internal, r.width, r.height, r.border, r.format, r.type, src);
-  return kRecordedWords + r.floats;
+  return kRecordedWords + r.words;
 }
 
 namespace cmd {

@@ -328,8 +328,69 @@ void rasterModeState(FuzzedDataProvider& in) {
   }
 }
 
+// Pixel transfer, any values: glPixelTransfer of any mode (bad names too) and any float or
+// integer (NaN, huge shifts and offsets), glPixelMap of any table, size (0, too large, not a power
+// of two) and entries (NaN, inf), a NULL table too, possibly compiled into a list and called;
+// tables read back; pixels read, drawn and copied under whatever the modes are.
+void pixelTransferState(FuzzedDataProvider& in) {
+  static std::vector<float> entries(300);
+  static std::vector<GLuint> words(300);
+  for (size_t i = 0; i < entries.size(); i += 3) entries[i] = static_cast<float>(i) * 0.01f - 0.5f;
+  for (size_t i = 0; i < words.size(); i += 5) words[i] = static_cast<GLuint>(i * 2654435761u);
+  const GLenum pname = in.ConsumeBool() ? in.ConsumeIntegralInRange<GLenum>(GL_MAP_COLOR - 1, GL_DEPTH_BIAS + 1)
+                                        : in.ConsumeIntegral<GLenum>();
+  const GLenum map = in.ConsumeIntegralInRange<GLenum>(GL_PIXEL_MAP_I_TO_I - 1, GL_PIXEL_MAP_A_TO_A + 1);
+  const GLsizei size = in.ConsumeIntegralInRange<GLsizei>(-2, 300);
+  const bool null = in.ConsumeBool();
+  static GLfloat back_f[256];
+  static GLuint back_ui[256];
+  static GLushort back_us[256];
+  static unsigned char pixels[4096];
+  switch (in.ConsumeIntegralInRange<int>(0, 9)) {
+    case 0: pfglPixelTransferf(pname, aFloat(in)); break;
+    case 1: pfglPixelTransferi(pname, in.ConsumeIntegral<GLint>()); break;
+    case 2: pfglPixelMapfv(map, size, null ? nullptr : entries.data()); break;
+    case 3: pfglPixelMapuiv(map, size, null ? nullptr : words.data()); break;
+    case 4: pfglPixelMapusv(map, size, null ? nullptr : reinterpret_cast<const GLushort*>(words.data())); break;
+    case 5:
+      pfglGetPixelMapfv(map, null ? nullptr : back_f);
+      pfglGetPixelMapuiv(map, null ? nullptr : back_ui);
+      pfglGetPixelMapusv(map, null ? nullptr : back_us);
+      break;
+    case 6: {
+      const bool execute = in.ConsumeBool();
+      pfglNewList(8, execute ? GL_COMPILE_AND_EXECUTE : GL_COMPILE);
+      pfglPixelTransferf(pname, aFloat(in));
+      pfglPixelMapfv(map, size, null ? nullptr : entries.data());
+      pfglEndList();
+      pfglCallList(8);
+      break;
+    }
+    case 7: {
+      static const GLenum kFormats[] = {GL_RGBA, GL_RGB, GL_DEPTH_COMPONENT, GL_STENCIL_INDEX};
+      static const GLenum kTypes[] = {GL_UNSIGNED_BYTE, GL_FLOAT, GL_UNSIGNED_SHORT, GL_UNSIGNED_INT};
+      pfglReadPixels(in.ConsumeIntegralInRange<GLint>(-4, 60), in.ConsumeIntegralInRange<GLint>(-4, 60), 8, 8,
+                     kFormats[in.ConsumeIntegralInRange<size_t>(0, 3)], kTypes[in.ConsumeIntegralInRange<size_t>(0, 3)],
+                     pixels);
+      break;
+    }
+    case 8: {  // (8 x 8 pixels of at most 16 bytes, with the unpack skips textureState sets -- at most 4
+               // rows and 4 pixels -- and alignment 8: within the buffer)
+      static const GLenum kFormats[] = {GL_RGBA, GL_COLOR_INDEX, GL_DEPTH_COMPONENT, GL_STENCIL_INDEX};
+      pfglRasterPos2i(in.ConsumeIntegralInRange<GLint>(-10, 40), in.ConsumeIntegralInRange<GLint>(-10, 40));
+      pfglDrawPixels(8, 8, kFormats[in.ConsumeIntegralInRange<size_t>(0, 3)], in.ConsumeBool() ? GL_FLOAT : GL_UNSIGNED_BYTE,
+                     pixels);
+      break;
+    }
+    default:
+      pfglCopyPixels(in.ConsumeIntegralInRange<GLint>(-10, 40), in.ConsumeIntegralInRange<GLint>(-10, 40), 8, 8,
+                     in.ConsumeBool() ? GL_COLOR : in.ConsumeBool() ? GL_DEPTH : GL_STENCIL);
+      break;
+  }
+}
+
 void oneCall(FuzzedDataProvider& in, bool& huge_drawn) {
-  switch (in.ConsumeIntegralInRange<int>(0, 26)) {
+  switch (in.ConsumeIntegralInRange<int>(0, 27)) {
     case 0: oneBegin(in, in.ConsumeBool()); break;
     case 19: hugeBegin(in, huge_drawn); break;
     case 1: pfglBegin(in.ConsumeIntegral<GLenum>()); break;  // any enum, a primitive's mode or none
@@ -379,6 +440,7 @@ void oneCall(FuzzedDataProvider& in, bool& huge_drawn) {
     case 23: accumulation(in); break;
     case 24: pixelRectangles(in); break;
     case 25: rasterModeState(in); break;
+    case 26: pixelTransferState(in); break;
     default: pfglFinish(); break;
   }
 }

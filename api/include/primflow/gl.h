@@ -114,6 +114,18 @@ void pfglBitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLf
 void pfglDrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum type, const GLvoid *pixels);
 void pfglCopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type);
 void pfglPixelZoom(GLfloat xfactor, GLfloat yfactor);
+/* Pixel transfer (GL 1.5 section 3.6.5): scale, bias and the colour maps on the colour images
+ * that glDrawPixels, glCopyPixels, glReadPixels and glTexImage / glCopyTexImage move; the index
+ * maps for colour-index images; depth scale and bias; stencil shift, offset and map -- each
+ * where OSMesa applies it (docs/api.md, "Pixel transfer"). */
+void pfglPixelTransferf(GLenum pname, GLfloat param);
+void pfglPixelTransferi(GLenum pname, GLint param);
+void pfglPixelMapfv(GLenum map, GLsizei mapsize, const GLfloat *values);
+void pfglPixelMapuiv(GLenum map, GLsizei mapsize, const GLuint *values);
+void pfglPixelMapusv(GLenum map, GLsizei mapsize, const GLushort *values);
+void pfglGetPixelMapfv(GLenum map, GLfloat *values);
+void pfglGetPixelMapuiv(GLenum map, GLuint *values);
+void pfglGetPixelMapusv(GLenum map, GLushort *values);
 void pfglWindowPos3i(GLint x, GLint y, GLint z);
 void pfglWindowPos3iv(const GLint *v);
 void pfglWindowPos3f(GLfloat x, GLfloat y, GLfloat z);

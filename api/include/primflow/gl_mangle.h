@@ -82,6 +82,14 @@
 #define glDrawPixels pfglDrawPixels
 #define glCopyPixels pfglCopyPixels
 #define glPixelZoom pfglPixelZoom
+#define glPixelTransferf pfglPixelTransferf
+#define glPixelTransferi pfglPixelTransferi
+#define glPixelMapfv pfglPixelMapfv
+#define glPixelMapuiv pfglPixelMapuiv
+#define glPixelMapusv pfglPixelMapusv
+#define glGetPixelMapfv pfglGetPixelMapfv
+#define glGetPixelMapuiv pfglGetPixelMapuiv
+#define glGetPixelMapusv pfglGetPixelMapusv
 #define glWindowPos3i pfglWindowPos3i
 #define glWindowPos3iv pfglWindowPos3iv
 #define glWindowPos3f pfglWindowPos3f

@@ -30,14 +30,6 @@
 #define glEdgeFlagPointer _Pragma("GCC error \"primflow does not implement glEdgeFlagPointer\"") pf_unsupported_glEdgeFlagPointer
 #define glGetLightiv _Pragma("GCC error \"primflow does not implement glGetLightiv\"") pf_unsupported_glGetLightiv
 #define glGetMaterialiv _Pragma("GCC error \"primflow does not implement glGetMaterialiv\"") pf_unsupported_glGetMaterialiv
-#define glPixelTransferf _Pragma("GCC error \"primflow does not implement glPixelTransferf\"") pf_unsupported_glPixelTransferf
-#define glPixelTransferi _Pragma("GCC error \"primflow does not implement glPixelTransferi\"") pf_unsupported_glPixelTransferi
-#define glPixelMapfv _Pragma("GCC error \"primflow does not implement glPixelMapfv\"") pf_unsupported_glPixelMapfv
-#define glPixelMapuiv _Pragma("GCC error \"primflow does not implement glPixelMapuiv\"") pf_unsupported_glPixelMapuiv
-#define glPixelMapusv _Pragma("GCC error \"primflow does not implement glPixelMapusv\"") pf_unsupported_glPixelMapusv
-#define glGetPixelMapfv _Pragma("GCC error \"primflow does not implement glGetPixelMapfv\"") pf_unsupported_glGetPixelMapfv
-#define glGetPixelMapuiv _Pragma("GCC error \"primflow does not implement glGetPixelMapuiv\"") pf_unsupported_glGetPixelMapuiv
-#define glGetPixelMapusv _Pragma("GCC error \"primflow does not implement glGetPixelMapusv\"") pf_unsupported_glGetPixelMapusv
 #define glMap1d _Pragma("GCC error \"primflow does not implement glMap1d\"") pf_unsupported_glMap1d
 #define glMap1f _Pragma("GCC error \"primflow does not implement glMap1f\"") pf_unsupported_glMap1f
 #define glMap2d _Pragma("GCC error \"primflow does not implement glMap2d\"") pf_unsupported_glMap2d
