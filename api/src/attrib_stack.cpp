@@ -103,6 +103,7 @@ void popAttrib(PFcontextRec& ctx) {
     ctx.raster_modes.offset_fill = s.raster_modes.offset_fill;
     ctx.raster_modes.offset_line = s.raster_modes.offset_line;
     ctx.raster_modes.offset_point = s.raster_modes.offset_point;
+    ctx.raster_modes.polygon_stipple = s.raster_modes.polygon_stipple;
     std::copy(std::begin(s.clip.enabled), std::end(s.clip.enabled), ctx.clip.enabled);
   }
   if (m & GL_FOG_BIT) ctx.fog = s.fog;  // (the enable included)
@@ -128,7 +129,7 @@ void popAttrib(PFcontextRec& ctx) {
     ctx.depth_func = s.depth_func;
     ctx.clear_depth = s.clear_depth;
   }
-  if (m & GL_POLYGON_BIT) {  // culling, the polygon modes, the offset and its enables
+  if (m & GL_POLYGON_BIT) {  // culling, the polygon modes, the offset, its enables and the stipple's
     ctx.cull = s.cull;
     ctx.cull_face = s.cull_face;
     ctx.front_face = s.front_face;
@@ -140,7 +141,10 @@ void popAttrib(PFcontextRec& ctx) {
     r.offset_fill = saved_r.offset_fill;
     r.offset_line = saved_r.offset_line;
     r.offset_point = saved_r.offset_point;
+    r.polygon_stipple = saved_r.polygon_stipple;
   }
+  if (m & GL_POLYGON_STIPPLE_BIT)  // the pattern (its enable: GL_ENABLE_BIT, GL_POLYGON_BIT)
+    std::copy(std::begin(s.raster_modes.stipple_rows), std::end(s.raster_modes.stipple_rows), ctx.raster_modes.stipple_rows);
   if (m & GL_TRANSFORM_BIT) {  // the matrix mode, the clip planes and their enables, normalising
     ctx.matrix_mode = s.matrix_mode;
     ctx.clip = s.clip;

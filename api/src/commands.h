@@ -99,6 +99,7 @@ Values<T, N> valuesOf(const U* p, int n, GLint count) {
   X(LineStipple, lineStipple, GLint, GLushort)                                            \
   X(PolygonMode, polygonMode, GLenum, GLenum)                                             \
   X(PolygonOffset, polygonOffset, GLfloat, GLfloat)                                       \
+  X(PolygonStipple, polygonStipple, StipplePattern)                                      \
   /* attrib_stack.cpp */                                                                  \
   X(PushAttrib, pushAttrib, GLbitfield)                                                   \
   X(PopAttrib, popAttrib)                                                                 \

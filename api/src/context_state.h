@@ -138,7 +138,7 @@ struct AttribState {
   float accum_clear[4];                              // GL_ACCUM_BUFFER_BIT
   RasterPosState raster;                             // GL_CURRENT_BIT
   PixelModeState pixel_mode;                         // GL_PIXEL_MODE_BIT
-  RasterModes raster_modes;                          // GL_POINT_BIT, GL_LINE_BIT (raster_modes.h)
+  RasterModes raster_modes;  // GL_POINT_BIT, GL_LINE_BIT, GL_POLYGON_STIPPLE_BIT (raster_modes.h)
 };
 
 // glPixelStore's modes for one direction (GL 1.5 table 3.1): pack (glReadPixels writes by

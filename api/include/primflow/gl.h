@@ -126,11 +126,15 @@ void pfglWindowPos3dv(const GLdouble *v);
 void pfglPointSize(GLfloat size);
 void pfglLineWidth(GLfloat width);
 void pfglLineStipple(GLint factor, GLushort pattern);
-/* Polygons (GL 1.5 sections 3.5.4 - 3.5.5): glPolygonMode per face (GL_POINT, GL_LINE on the
+/* Polygons (GL 1.5 sections 3.5.2 - 3.5.5): glPolygonMode per face (GL_POINT, GL_LINE on the
  * polygon's boundary, GL_FILL), after culling; glPolygonOffset under GL_POLYGON_OFFSET_FILL,
- * _LINE, _POINT (docs/api.md, "Polygon modes and offset"). */
+ * _LINE, _POINT; glPolygonStipple's 32 x 32 pattern under GL_POLYGON_STIPPLE, for filled
+ * polygons, unpacked / packed by glPixelStore's modes (docs/api.md, "Polygon modes and offset",
+ * "Polygon stipple"). */
 void pfglPolygonMode(GLenum face, GLenum mode);
 void pfglPolygonOffset(GLfloat factor, GLfloat units);
+void pfglPolygonStipple(const GLubyte *mask);
+void pfglGetPolygonStipple(GLubyte *mask);
 
 /* Hints: kept and read back (nothing primflow draws depends on them). Attribute stacks, 16 deep:
  * the groups primflow has (docs/api.md, "Attribute stacks"); glPushAttrib / glPopAttrib are

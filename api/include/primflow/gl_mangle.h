@@ -95,6 +95,8 @@
 #define glLineStipple pfglLineStipple
 #define glPolygonMode pfglPolygonMode
 #define glPolygonOffset pfglPolygonOffset
+#define glPolygonStipple pfglPolygonStipple
+#define glGetPolygonStipple pfglGetPolygonStipple
 #define glScissor pfglScissor
 #define glAlphaFunc pfglAlphaFunc
 #define glBlendFunc pfglBlendFunc

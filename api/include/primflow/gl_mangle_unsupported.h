@@ -9,8 +9,6 @@
 
 #define glClearIndex _Pragma("GCC error \"primflow does not implement glClearIndex\"") pf_unsupported_glClearIndex
 #define glIndexMask _Pragma("GCC error \"primflow does not implement glIndexMask\"") pf_unsupported_glIndexMask
-#define glPolygonStipple _Pragma("GCC error \"primflow does not implement glPolygonStipple\"") pf_unsupported_glPolygonStipple
-#define glGetPolygonStipple _Pragma("GCC error \"primflow does not implement glGetPolygonStipple\"") pf_unsupported_glGetPolygonStipple
 #define glEdgeFlag _Pragma("GCC error \"primflow does not implement glEdgeFlag\"") pf_unsupported_glEdgeFlag
 #define glEdgeFlagv _Pragma("GCC error \"primflow does not implement glEdgeFlagv\"") pf_unsupported_glEdgeFlagv
 #define glDrawBuffer _Pragma("GCC error \"primflow does not implement glDrawBuffer\"") pf_unsupported_glDrawBuffer
