@@ -21,6 +21,7 @@ void pushAttrib(PFcontextRec& ctx, GLbitfield mask) {
   s.current_color = ctx.current_color;
   s.normal = ctx.param(ctx.normal_param);
   s.texcoord = ctx.param(ctx.texcoord_param);
+  s.edge_flag = ctx.param(ctx.edge_flag_param);
   s.depth_test = ctx.depth_test;
   s.depth_write = ctx.depth_write;
   s.depth_func = ctx.depth_func;
@@ -66,6 +67,7 @@ void popAttrib(PFcontextRec& ctx) {
     for (int k = 0; k < 4; ++k) color.v[k] = s.current_color[k];
     ctx.param(ctx.normal_param) = s.normal;
     ctx.param(ctx.texcoord_param) = s.texcoord;
+    ctx.param(ctx.edge_flag_param) = s.edge_flag;
     ctx.raster = s.raster;
   }
   if (m & GL_LIGHTING_BIT) {  // all of the lighting state but the enables of other groups
@@ -196,7 +198,8 @@ void pfglPushClientAttrib(GLbitfield mask) {
   if (ctx->client_attrib_stack.size() >= pf::kMaxAttribStackDepth) return ctx->setError(GL_STACK_OVERFLOW);
   try {
     ctx->client_attrib_stack.push_back(
-        {mask, ctx->pack, ctx->unpack, ctx->vertex_array, ctx->color_array, ctx->normal_array, ctx->texcoord_array});
+        {mask, ctx->pack, ctx->unpack, ctx->vertex_array, ctx->color_array, ctx->normal_array, ctx->texcoord_array,
+         ctx->edge_flag_array});
   } catch (const std::bad_alloc&) {
     ctx->setError(GL_OUT_OF_MEMORY);
   }
@@ -217,6 +220,7 @@ void pfglPopClientAttrib(void) {
     ctx->color_array = s.color_array;
     ctx->normal_array = s.normal_array;
     ctx->texcoord_array = s.texcoord_array;
+    ctx->edge_flag_array = s.edge_flag_array;
   }
 }
 

@@ -26,15 +26,12 @@ constexpr Constant kConstants[] = {
     // Current values and the raster position (no glRasterPos: its initial state).
     {GL_CURRENT_INDEX, 1, {1}},
     {GL_CURRENT_RASTER_INDEX, 1, {1}},
-    {GL_EDGE_FLAG, 1, {kTrue}},
     {GL_CURRENT_FOG_COORD, 1, {0}},
     {GL_CURRENT_SECONDARY_COLOR, 4, {0, 0, 0, 1}, kNormalized},
     // Vertex arrays primflow does not have.
     {GL_INDEX_ARRAY, 1, {kFalse}, kCapability},
     {GL_INDEX_ARRAY_TYPE, 1, {GL_FLOAT}},
     {GL_INDEX_ARRAY_STRIDE, 1, {0}},
-    {GL_EDGE_FLAG_ARRAY, 1, {kFalse}, kCapability},
-    {GL_EDGE_FLAG_ARRAY_STRIDE, 1, {0}},
     {GL_FOG_COORD_ARRAY, 1, {kFalse}, kCapability},
     {GL_SECONDARY_COLOR_ARRAY, 1, {kFalse}, kCapability},
     {GL_CLIENT_ACTIVE_TEXTURE, 1, {GL_TEXTURE0}},

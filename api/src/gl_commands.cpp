@@ -350,6 +350,7 @@ GLboolean pfglIsEnabled(GLenum cap) {
   if (cap == GL_COLOR_ARRAY) return ctx->color_array.enabled ? GL_TRUE : GL_FALSE;
   if (cap == GL_NORMAL_ARRAY) return ctx->normal_array.enabled ? GL_TRUE : GL_FALSE;
   if (cap == GL_TEXTURE_COORD_ARRAY) return ctx->texcoord_array.enabled ? GL_TRUE : GL_FALSE;
+  if (cap == GL_EDGE_FLAG_ARRAY) return ctx->edge_flag_array.enabled ? GL_TRUE : GL_FALSE;
   bool fixed = false;  // a capability primflow does not have: its constant state, no error
   if (pf::constantCapability(cap, fixed)) return fixed ? GL_TRUE : GL_FALSE;
   bool* c = capability(*ctx, cap);

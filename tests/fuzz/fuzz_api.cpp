@@ -3,7 +3,7 @@
 // are NaN, infinite or huge, matrix stacks pushed and popped past their ends, degenerate
 // projections, bad enums and names, sequence points, compiles, clears and finishes, the
 // per-fragment operations' state with any values (scissor, alpha test, blending, logic op,
-// stencil), the raster position and pixel rectangles, point sizes, line widths, stipples, polygon modes, offsets and stipples, a glBegin of very many vertices -- run on a small context. Nothing may crash, hang or trip ASan/UBSan, and
+// stencil), the raster position and pixel rectangles, point sizes, line widths, stipples, polygon modes, offsets and stipples, edge flags, a glBegin of very many vertices -- run on a small context. Nothing may crash, hang or trip ASan/UBSan, and
 // GL's rules are checked (the checks trap, which libFuzzer reports): a glBegin whose only erring
 // command is one GL does not allow there leaves exactly GL_INVALID_OPERATION at glEnd, and the
 // glBegin of very many vertices leaves no error.
@@ -80,6 +80,7 @@ void oneBegin(FuzzedDataProvider& in, bool forbidden) {
     switch (in.ConsumeIntegralInRange<int>(0, 3)) {
       case 0: pfglColor4f(aFloat(in), aFloat(in), aFloat(in), aFloat(in)); break;
       case 1: pfglNormal3f(aFloat(in), aFloat(in), aFloat(in)); break;
+      case 2: pfglEdgeFlag(in.ConsumeIntegral<GLboolean>()); break;  // any value, 0 false
       default: break;
     }
     pfglVertex3f(aFloat(in), aFloat(in), aFloat(in));

@@ -170,7 +170,8 @@ void pfglColorMaterial(GLenum face, GLenum mode);
 void pfglGetLightfv(GLenum light, GLenum pname, GLfloat *params);
 void pfglGetMaterialfv(GLenum face, GLenum pname, GLfloat *params);
 
-/* Vertex arrays: GL_VERTEX_ARRAY, GL_COLOR_ARRAY, GL_NORMAL_ARRAY, GL_TEXTURE_COORD_ARRAY.
+/* Vertex arrays: GL_VERTEX_ARRAY, GL_COLOR_ARRAY, GL_NORMAL_ARRAY, GL_TEXTURE_COORD_ARRAY,
+ * GL_EDGE_FLAG_ARRAY.
  * glDrawArrays / glDrawElements are glBegin, glArrayElement per index, glEnd, as GL defines
  * them; glInterleavedArrays sets them from one of GL's 14 layouts. */
 void pfglEnableClientState(GLenum array);
@@ -179,6 +180,7 @@ void pfglVertexPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *po
 void pfglColorPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *pointer);
 void pfglNormalPointer(GLenum type, GLsizei stride, const GLvoid *pointer);
 void pfglTexCoordPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *pointer);
+void pfglEdgeFlagPointer(GLsizei stride, const GLvoid *pointer);
 void pfglInterleavedArrays(GLenum format, GLsizei stride, const GLvoid *pointer);
 void pfglGetPointerv(GLenum pname, GLvoid **params);
 void pfglArrayElement(GLint i);
@@ -341,6 +343,10 @@ void pfglNormal3f(GLfloat nx, GLfloat ny, GLfloat nz);
 void pfglNormal3fv(const GLfloat *v);
 void pfglNormal3d(GLdouble nx, GLdouble ny, GLdouble nz);
 void pfglNormal3dv(const GLdouble *v);
+/* The edge flag (GL 1.5 section 2.6.2): which edges of GL_TRIANGLES, GL_QUADS and GL_POLYGON
+ * drawn GL_LINE or GL_POINT are boundary edges (docs/api.md, "Polygon modes and offset"). */
+void pfglEdgeFlag(GLboolean flag);
+void pfglEdgeFlagv(const GLboolean *flag);
 void pfglTexCoord1s(GLshort s);
 void pfglTexCoord2s(GLshort s, GLshort t);
 void pfglTexCoord3s(GLshort s, GLshort t, GLshort r);
