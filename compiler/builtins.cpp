@@ -213,13 +213,16 @@ void typeBuiltinCall(Expr& e, UnitKind unit, const std::function<void(SourceLoc,
     // glLineWidth / glPointSize as rasterized: whole pixels, rounded and clamped as the API says.
     if (!arity(0, 0)) return;
     e.type = Type::of(BaseType::Float);
-  } else if (f == "flat_shading") {
+  } else if (f == "flat_shading" || f == "polygon_stipple") {
     // glShadeModel(GL_FLAT): per-vertex parameters take the provoking vertex's value.
+    // glEnable(GL_POLYGON_STIPPLE): polygon_ztest() applies the stipple.
     if (!arity(0, 0)) return;
     e.type = Type::of(BaseType::Bool);
-  } else if (f == "ztest") {
+  } else if (f == "ztest" || f == "polygon_ztest") {
+    // polygon_ztest(): ztest() for a fragment of a filled polygon, which the polygon stipple
+    // (glPolygonStipple under GL_POLYGON_STIPPLE) may also fail.
     if (unit != UnitKind::Primitive) {
-      err(e.loc, "ztest() is only available in a primitive");
+      err(e.loc, f + "() is only available in a primitive");
       return;
     }
     if (!arity(1, 1) || any_void || !needScalars()) return;

@@ -24,6 +24,7 @@ const char* opName(Op op) {
 
 std::string opText(Op op, int imm) {
   std::string s = opName(op);
+  if (op == Op::ZTest) return imm ? s + ".polygon" : s;  // polygon_ztest()
   if (op < Op::QAdd || op > Op::QConv || op == Op::QLt || op == Op::QLe || op == Op::QEq) return s;
   const FixedFormat f = fixedFormatOf(static_cast<uint32_t>(imm));
   if (op == Op::QToF || op == Op::QToI) return s + "<frac " + std::to_string(f.frac) + ">";

@@ -51,7 +51,8 @@ enum class Op : uint8_t {
   Bound,         // setup: screen bound (a, b, c, dst) = (xmin, ymin, xmax, ymax)
   Kill,          // setup: the instance draws nothing
   Retire,        // pixel: the active lanes leave the program without writing anything
-  ZTest,         // pixel: dst = the context's depth test of a against the depth buffer
+  ZTest,         // pixel: dst = the context's depth test of a against the depth buffer (and the
+                 // clip planes); imm 1: a polygon's fragment, which the polygon stipple tests too
   InterpReturn,  // pixel: write channels of kinds `imm` (bit set) from interp operand a
   InterpShared,  // pixel: run the shared interpolators bound to channels of kinds `imm`, with
                  // the surface point P = (a, b, c, d)
@@ -115,6 +116,8 @@ enum class StateValue : uint16_t {
   // (polygon_offset(): the factor, the units times the depth buffer's resolution;
   // polygon_offset_modes(): 1 or 0 for GL_POLYGON_OFFSET_FILL, _LINE, _POINT)
   PolygonModeFront, PolygonModeBack, OffsetFactor, OffsetUnits, OffsetFill, OffsetLine, OffsetPoint,
+  // 1 or 0 for GL_POLYGON_STIPPLE (polygon_stipple(); polygon_ztest() applies the pattern)
+  PolygonStippleOn,
   // 16 elements each (column-major): InvProjection + k (eye()), Projection + k (clip()),
   // InvModelview + k (object(), eye_normal()), Modelview + k (eye_from_object())
   InvProjection, Projection = InvProjection + 16, InvModelview = Projection + 16, Modelview = InvModelview + 16

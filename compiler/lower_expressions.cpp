@@ -384,7 +384,9 @@ Binding Lowerer::call(const Expr& e) {
   if (f == "float") return scalar(e.type, farg(0));
   if (f == "int")
     return scalar(e.type, cls(arg(0)) == ValueClass::I32 ? arg(0) : emit(Op::F2I, ValueClass::I32, false, arg(0)));
-  if (f == "ztest") return scalar(e.type, emit(Op::ZTest, ValueClass::Bool, true, farg(0), -1, -1, 0, e.loc));
+  // (imm 1: a polygon's fragment, which the polygon stipple tests too.)
+  if (f == "ztest" || f == "polygon_ztest")
+    return scalar(e.type, emit(Op::ZTest, ValueClass::Bool, true, farg(0), -1, -1, f == "ztest" ? 0 : 1, e.loc));
   if (f == "field_hit") {
     // The box goes to the executor first (FieldBox), then the search (FieldHit), in order.
     for (int end = 0; end < 2; ++end) {
@@ -436,6 +438,7 @@ Binding Lowerer::call(const Expr& e) {
     return none;
   }
   if (f == "flat_shading") return scalar(e.type, stateOn(StateValue::FlatShading));
+  if (f == "polygon_stipple") return scalar(e.type, stateOn(StateValue::PolygonStippleOn));
   if (f == "line_width") return scalar(e.type, state(StateValue::LineWidth));
   if (f == "point_size") return scalar(e.type, state(StateValue::PointSize));
   if (f == "unscreen") {

@@ -328,7 +328,8 @@ std::string Analyzer::whyOf(const Expr& e) const {
       return "it depends on '" + v.name + "' (declared at line " + std::to_string(v.loc.line) + "), which " + stripIt(v.why);
     }
   }
-  if (e.kind == ExprKind::Call && e.name == "ztest") return "it depends on ztest(), which reads the depth buffer";
+  if (e.kind == ExprKind::Call && (e.name == "ztest" || e.name == "polygon_ztest"))
+    return "it depends on " + e.name + "(), which reads the depth buffer";
   if (e.kind == ExprKind::Call &&
       (e.name == "field_hit" || e.name.rfind("field_gradient", 0) == 0 || e.name == "field_color"))
     return "it depends on " + e.name + "(), which is computed per pixel";

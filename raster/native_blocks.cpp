@@ -207,6 +207,7 @@ void NativeBlocks::prepare(PreparedCall& call, const CompiledPrimitive& prim, co
   a.depth_pass = depthPass(state);
   a.clip_planes = &state.clip_planes[0][0];
   a.clip_plane_count = static_cast<uint32_t>(state.clip_plane_count);
+  a.polygon_stipple = state.polygon_stipple ? state.stipple_rows : nullptr;
   a.depth_write = target.depth && state.depth_test && state.depth_write ? 1u : 0u;
   call.state = &state;
   call.prim = &prim;

@@ -325,6 +325,12 @@ uint64_t PixelExecutor::execute(const CompiledPrimitive& prim, const PixelProgra
             const int i = __builtin_ctzll(m);
             if (!state.clipKeeps(asF(RX[i]), asF(RY[i]), asF(w ? z[i] : z[0]))) d[i] = 0u;
           }
+        // polygon_ztest(): the polygon stipple fails the fragments its pattern drops (as native code).
+        if (ins.imm != 0 && state.polygon_stipple)
+          for (uint64_t m = exec; m != 0; m &= m - 1) {
+            const int i = __builtin_ctzll(m);
+            if (!state.stippleKeeps(asF(RX[i]), asF(RY[i]))) d[i] = 0u;
+          }
         continue;
       }
       case Op::FieldBox:

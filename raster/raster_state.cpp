@@ -38,6 +38,7 @@ float stateValue(const RasterState& s, uint16_t which) {
     case StateValue::OffsetFill: return s.offset_fill ? 1.0f : 0.0f;
     case StateValue::OffsetLine: return s.offset_line ? 1.0f : 0.0f;
     case StateValue::OffsetPoint: return s.offset_point ? 1.0f : 0.0f;
+    case StateValue::PolygonStippleOn: return s.polygon_stipple ? 1.0f : 0.0f;
     default: return 0.0f;
   }
 }

@@ -66,6 +66,12 @@ struct RasterState {
   static constexpr int kMaxClipPlanes = 8;
   int clip_plane_count = 0;
   float clip_planes[kMaxClipPlanes][4] = {};
+  // The polygon stipple (GL 1.5 section 3.5.2) under GL_POLYGON_STIPPLE, else off with every
+  // row 0: polygon_ztest() -- the depth test of the primitives that draw filled polygons --
+  // fails the fragment at window (x, y) where bit 31 - (x mod 32) of stipple_rows[y mod 32] is 0
+  // (a row's first unpacked byte in bits 31 - 24, its first bit x = 0). ztest() ignores it.
+  bool polygon_stipple = false;
+  uint32_t stipple_rows[32] = {};
 
   bool operator==(const RasterState&) const = default;
 
@@ -77,6 +83,13 @@ struct RasterState {
       if (!(((ax + by) + cz) + e[3] >= 0.0f)) return false;
     }
     return true;
+  }
+
+  // Whether the polygon stipple keeps the fragment at pixel centre (x, y), as polygon_ztest()
+  // and native code decide it: the pixel's integer coordinates (truncated) modulo 32.
+  bool stippleKeeps(float x, float y) const {
+    const uint32_t row = stipple_rows[static_cast<uint32_t>(static_cast<int32_t>(y)) & 31u];
+    return ((row >> (31u - (static_cast<uint32_t>(static_cast<int32_t>(x)) & 31u))) & 1u) != 0;
   }
 };
 

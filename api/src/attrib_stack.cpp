@@ -21,6 +21,7 @@ void pushAttrib(PFcontextRec& ctx, GLbitfield mask) {
   s.current_color = ctx.current_color;
   s.normal = ctx.param(ctx.normal_param);
   s.texcoord = ctx.param(ctx.texcoord_param);
+  s.edge_flag = ctx.param(ctx.edge_flag_param);
   s.depth_test = ctx.depth_test;
   s.depth_write = ctx.depth_write;
   s.depth_func = ctx.depth_func;
@@ -66,6 +67,7 @@ void popAttrib(PFcontextRec& ctx) {
     for (int k = 0; k < 4; ++k) color.v[k] = s.current_color[k];
     ctx.param(ctx.normal_param) = s.normal;
     ctx.param(ctx.texcoord_param) = s.texcoord;
+    ctx.param(ctx.edge_flag_param) = s.edge_flag;
     ctx.raster = s.raster;
   }
   if (m & GL_LIGHTING_BIT) {  // all of the lighting state but the enables of other groups
@@ -103,6 +105,7 @@ void popAttrib(PFcontextRec& ctx) {
     ctx.raster_modes.offset_fill = s.raster_modes.offset_fill;
     ctx.raster_modes.offset_line = s.raster_modes.offset_line;
     ctx.raster_modes.offset_point = s.raster_modes.offset_point;
+    ctx.raster_modes.polygon_stipple = s.raster_modes.polygon_stipple;
     std::copy(std::begin(s.clip.enabled), std::end(s.clip.enabled), ctx.clip.enabled);
   }
   if (m & GL_FOG_BIT) ctx.fog = s.fog;  // (the enable included)
@@ -128,7 +131,7 @@ void popAttrib(PFcontextRec& ctx) {
     ctx.depth_func = s.depth_func;
     ctx.clear_depth = s.clear_depth;
   }
-  if (m & GL_POLYGON_BIT) {  // culling, the polygon modes, the offset and its enables
+  if (m & GL_POLYGON_BIT) {  // culling, the polygon modes, the offset, its enables and the stipple's
     ctx.cull = s.cull;
     ctx.cull_face = s.cull_face;
     ctx.front_face = s.front_face;
@@ -140,7 +143,10 @@ void popAttrib(PFcontextRec& ctx) {
     r.offset_fill = saved_r.offset_fill;
     r.offset_line = saved_r.offset_line;
     r.offset_point = saved_r.offset_point;
+    r.polygon_stipple = saved_r.polygon_stipple;
   }
+  if (m & GL_POLYGON_STIPPLE_BIT)  // the pattern (its enable: GL_ENABLE_BIT, GL_POLYGON_BIT)
+    std::copy(std::begin(s.raster_modes.stipple_rows), std::end(s.raster_modes.stipple_rows), ctx.raster_modes.stipple_rows);
   if (m & GL_TRANSFORM_BIT) {  // the matrix mode, the clip planes and their enables, normalising
     ctx.matrix_mode = s.matrix_mode;
     ctx.clip = s.clip;
@@ -192,7 +198,8 @@ void pfglPushClientAttrib(GLbitfield mask) {
   if (ctx->client_attrib_stack.size() >= pf::kMaxAttribStackDepth) return ctx->setError(GL_STACK_OVERFLOW);
   try {
     ctx->client_attrib_stack.push_back(
-        {mask, ctx->pack, ctx->unpack, ctx->vertex_array, ctx->color_array, ctx->normal_array, ctx->texcoord_array});
+        {mask, ctx->pack, ctx->unpack, ctx->vertex_array, ctx->color_array, ctx->normal_array, ctx->texcoord_array,
+         ctx->edge_flag_array});
   } catch (const std::bad_alloc&) {
     ctx->setError(GL_OUT_OF_MEMORY);
   }
@@ -213,6 +220,7 @@ void pfglPopClientAttrib(void) {
     ctx->color_array = s.color_array;
     ctx->normal_array = s.normal_array;
     ctx->texcoord_array = s.texcoord_array;
+    ctx->edge_flag_array = s.edge_flag_array;
   }
 }
 

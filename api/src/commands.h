@@ -103,6 +103,7 @@ Values<T, N> valuesOf(const U* p, int n, GLint count) {
   X(LineStipple, lineStipple, GLint, GLushort)                                            \
   X(PolygonMode, polygonMode, GLenum, GLenum)                                             \
   X(PolygonOffset, polygonOffset, GLfloat, GLfloat)                                       \
+  X(PolygonStipple, polygonStipple, StipplePattern)                                      \
   /* attrib_stack.cpp */                                                                  \
   X(PushAttrib, pushAttrib, GLbitfield)                                                   \
   X(PopAttrib, popAttrib)                                                                 \
@@ -134,6 +135,7 @@ Values<T, N> valuesOf(const U* p, int n, GLint count) {
   X(Color, color, GLfloat, GLfloat, GLfloat, GLfloat)                                     \
   X(Normal, normal, GLfloat, GLfloat, GLfloat)                                            \
   X(TexCoord, texCoord, GLfloat, GLfloat, GLfloat, GLfloat)                               \
+  X(EdgeFlag, edgeFlag, GLboolean)                                                        \
   X(RastParam1, rastParam1, GLuint, GLdouble)                                             \
   X(RastParam3, rastParam3, GLuint, GLfloat, GLfloat, GLfloat)                            \
   X(RastParam4, rastParam4, GLuint, GLfloat, GLfloat, GLfloat, GLfloat)                   \

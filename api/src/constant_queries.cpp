@@ -26,15 +26,12 @@ constexpr Constant kConstants[] = {
     // Current values and the raster position (no glRasterPos: its initial state).
     {GL_CURRENT_INDEX, 1, {1}},
     {GL_CURRENT_RASTER_INDEX, 1, {1}},
-    {GL_EDGE_FLAG, 1, {kTrue}},
     {GL_CURRENT_FOG_COORD, 1, {0}},
     {GL_CURRENT_SECONDARY_COLOR, 4, {0, 0, 0, 1}, kNormalized},
     // Vertex arrays primflow does not have.
     {GL_INDEX_ARRAY, 1, {kFalse}, kCapability},
     {GL_INDEX_ARRAY_TYPE, 1, {GL_FLOAT}},
     {GL_INDEX_ARRAY_STRIDE, 1, {0}},
-    {GL_EDGE_FLAG_ARRAY, 1, {kFalse}, kCapability},
-    {GL_EDGE_FLAG_ARRAY_STRIDE, 1, {0}},
     {GL_FOG_COORD_ARRAY, 1, {kFalse}, kCapability},
     {GL_SECONDARY_COLOR_ARRAY, 1, {kFalse}, kCapability},
     {GL_CLIENT_ACTIVE_TEXTURE, 1, {GL_TEXTURE0}},
@@ -50,14 +47,13 @@ constexpr Constant kConstants[] = {
     {GL_FOG_COORD_SRC, 1, {GL_FRAGMENT_DEPTH}},
     {GL_COLOR_SUM, 1, {kFalse}, kCapability},
     {GL_LIGHT_MODEL_COLOR_CONTROL, 1, {GL_SINGLE_COLOR}},
-    // Points, lines, polygons: size and width 1, no smoothing, stipple, modes or offset.
+    // Points, lines, polygons: no smoothing.
     {GL_POINT_SMOOTH, 1, {kFalse}, kCapability},
     {GL_POINT_SIZE_MIN, 1, {0}},
     {GL_POINT_FADE_THRESHOLD_SIZE, 1, {1}},
     {GL_POINT_DISTANCE_ATTENUATION, 3, {1, 0, 0}},
     {GL_LINE_SMOOTH, 1, {kFalse}, kCapability},
     {GL_POLYGON_SMOOTH, 1, {kFalse}, kCapability},
-    {GL_POLYGON_STIPPLE, 1, {kFalse}, kCapability},
     {GL_MULTISAMPLE, 1, {kTrue}, kCapability},
     {GL_SAMPLE_ALPHA_TO_COVERAGE, 1, {kFalse}, kCapability},
     {GL_SAMPLE_ALPHA_TO_ONE, 1, {kFalse}, kCapability},

@@ -138,13 +138,15 @@ PFcontext pfCreateContextAttribs(const int* attribs) {
   try {
     auto* ctx = new PFcontextRec(threads);
     ctx->format = format;
-    // The names glVertex, glNormal and glTexCoord set, with GL's initial values.
+    // The names glVertex, glNormal, glTexCoord and glEdgeFlag set, with GL's initial values.
     ctx->vertex_param = ctx->paramId("vertex");
     ctx->normal_param = ctx->paramId("normal");
     ctx->texcoord_param = ctx->paramId("texcoord");
     ctx->color_param = ctx->paramId("color");
+    ctx->edge_flag_param = ctx->paramId("edge_flag");
     ctx->param(ctx->normal_param) = pf::ParamValue{{0, 0, 1}, 3};
     ctx->param(ctx->texcoord_param) = pf::ParamValue{{0, 0, 0, 1}, 4};
+    ctx->param(ctx->edge_flag_param) = pf::ParamValue{{1}, 1};
     ctx->depth_bits = depth_bits;
     ctx->stencil_bits = stencil_bits > 0 ? 8 : 0;
     ctx->accum_bits = accum_bits > 0 ? 16 : 0;

@@ -115,7 +115,7 @@ int hintIndex(GLenum target);
 struct AttribState {
   GLbitfield mask;
   glm::vec4 current_color;                           // GL_CURRENT_BIT
-  ParamValue normal, texcoord;
+  ParamValue normal, texcoord, edge_flag;
   bool depth_test, depth_write;                      // GL_DEPTH_BUFFER_BIT (and enables)
   GLenum depth_func;
   float clear_depth;
@@ -138,7 +138,7 @@ struct AttribState {
   float accum_clear[4];                              // GL_ACCUM_BUFFER_BIT
   RasterPosState raster;                             // GL_CURRENT_BIT
   PixelModeState pixel_mode;                         // GL_PIXEL_MODE_BIT
-  RasterModes raster_modes;                          // GL_POINT_BIT, GL_LINE_BIT (raster_modes.h)
+  RasterModes raster_modes;  // GL_POINT_BIT, GL_LINE_BIT, GL_POLYGON_STIPPLE_BIT (raster_modes.h)
 };
 
 // glPixelStore's modes for one direction (GL 1.5 table 3.1): pack (glReadPixels writes by
@@ -152,7 +152,7 @@ struct PixelStore {
 struct ClientAttribState {
   GLbitfield mask;
   PixelStore pack, unpack;
-  ClientArray vertex_array, color_array, normal_array, texcoord_array;
+  ClientArray vertex_array, color_array, normal_array, texcoord_array, edge_flag_array;
 };
 
 // GL_MAX_ATTRIB_STACK_DEPTH and GL_MAX_CLIENT_ATTRIB_STACK_DEPTH, Mesa's 16.
@@ -243,6 +243,7 @@ struct PFcontextRec {
   glm::vec4 current_color{1.0f, 1.0f, 1.0f, 1.0f};
 
   pf::ClientArray vertex_array, color_array, normal_array, texcoord_array;
+  pf::ClientArray edge_flag_array{false, 1, GL_UNSIGNED_BYTE, 0, nullptr};  // glEdgeFlagPointer's GLbooleans
   pf::LightingState lighting;
   pf::TextureState textures;
   pf::FogState fog;
@@ -265,6 +266,9 @@ struct PFcontextRec {
   std::vector<std::string> param_names;
   std::vector<pf::ParamValue> current_params;
   GLuint vertex_param = 0, normal_param = 0, texcoord_param = 0, color_param = 0;
+  // glEdgeFlag's current flag (GL 1.5 section 2.6.2), "edge_flag": the GLboolean as given (as
+  // Mesa keeps it), initially 1.
+  GLuint edge_flag_param = 0;
   // Interns the name. Ids end at 0x3FFFF, primflow's range (docs/api.md): past 32,768 names the
   // table is full and it throws std::bad_alloc (GL_OUT_OF_MEMORY where a command catches it).
   static constexpr size_t kMaxParamNames = 0x40000 - GL_FIRST_PARAM_NAME_EXT;

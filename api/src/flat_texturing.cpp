@@ -68,7 +68,12 @@ bool flattenForTexturing(PFcontextRec& ctx) {
       break;
     case GL_QUAD_STRIP:
       independent = GL_QUADS;
-      for (size_t i = 0; i + 3 < n; i += 2) part({i, i + 1, i + 3, i + 2}, i + 3);
+      // (Under the polygon stipple `quads` rotates each quad by one, llvmpipe's split of
+      // GL_QUADS then: the quad given rotated back, so that `quad` gets the strip's order.)
+      for (size_t i = 0; i + 3 < n; i += 2) {
+        if (m.polygon_stipple) part({i + 2, i, i + 1, i + 3}, i + 3);
+        else part({i, i + 1, i + 3, i + 2}, i + 3);
+      }
       break;
     case GL_POLYGON:  // the first vertex is a polygon's provoking vertex
       for (size_t i = 0; i < n; ++i) order.push_back({i, 0});

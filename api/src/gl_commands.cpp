@@ -40,7 +40,8 @@ float clamp01(double v) { return v > 0 ? (v < 1 ? static_cast<float>(v) : 1.0f) 
 // The capabilities primflow has: depth test, face culling, lighting and its lights, colour
 // material, normalising and rescaling normals, per-pixel lighting of vertex primitives, the
 // per-fragment operations and dithering (kept, nothing dithered), 1D and 2D texturing and
-// texture coordinate generation.
+// texture coordinate generation, fog, clip planes, the line and polygon stipples, the polygon
+// offsets.
 bool* capability(PFcontextRec& ctx, GLenum cap) {
   if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + pf::kMaxLights) return &ctx.lighting.lights[cap - GL_LIGHT0].enabled;
   if (cap >= GL_CLIP_PLANE0 && cap < GL_CLIP_PLANE0 + pf::kMaxClipPlanes) return &ctx.clip.enabled[cap - GL_CLIP_PLANE0];
@@ -63,6 +64,7 @@ bool* capability(PFcontextRec& ctx, GLenum cap) {
     case GL_POLYGON_OFFSET_FILL: return &ctx.raster_modes.offset_fill;
     case GL_POLYGON_OFFSET_LINE: return &ctx.raster_modes.offset_line;
     case GL_POLYGON_OFFSET_POINT: return &ctx.raster_modes.offset_point;
+    case GL_POLYGON_STIPPLE: return &ctx.raster_modes.polygon_stipple;
     case GL_TEXTURE_1D: return &ctx.textures.a.enabled_1d;
     case GL_TEXTURE_2D: return &ctx.textures.a.enabled_2d;
     case GL_TEXTURE_GEN_S: return &ctx.textures.a.gen[0].enabled;
@@ -348,6 +350,7 @@ GLboolean pfglIsEnabled(GLenum cap) {
   if (cap == GL_COLOR_ARRAY) return ctx->color_array.enabled ? GL_TRUE : GL_FALSE;
   if (cap == GL_NORMAL_ARRAY) return ctx->normal_array.enabled ? GL_TRUE : GL_FALSE;
   if (cap == GL_TEXTURE_COORD_ARRAY) return ctx->texcoord_array.enabled ? GL_TRUE : GL_FALSE;
+  if (cap == GL_EDGE_FLAG_ARRAY) return ctx->edge_flag_array.enabled ? GL_TRUE : GL_FALSE;
   bool fixed = false;  // a capability primflow does not have: its constant state, no error
   if (pf::constantCapability(cap, fixed)) return fixed ? GL_TRUE : GL_FALSE;
   bool* c = capability(*ctx, cap);

@@ -426,6 +426,13 @@ void color(PFcontextRec& ctx, GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
   for (int k = 0; k < 4; ++k) p.v[k] = ctx.current_color[k];
 }
 
+// Allowed inside glBegin. Kept as given, as Mesa keeps it (a float): an edge is drawn where its
+// flag is not 0, GL_EDGE_FLAG reads true where it is 1.
+void edgeFlag(PFcontextRec& ctx, GLboolean flag) {
+  const double v = flag;
+  setParam(ctx, ctx.edge_flag_param, 1, &v);
+}
+
 void normal(PFcontextRec& ctx, GLfloat x, GLfloat y, GLfloat z) {
   const double v[3] = {x, y, z};
   setParam(ctx, ctx.normal_param, 3, v);

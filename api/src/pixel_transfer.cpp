@@ -250,6 +250,25 @@ void unpackBitmap(const PixelStore& store, int width, int height, const void* da
   }
 }
 
+void packBitmap(const PixelStore& store, int width, int height, const unsigned char* bits, void* data) {
+  if (width <= 0 || height <= 0) return;
+  auto* out = static_cast<unsigned char*>(data);
+  const size_t align = static_cast<size_t>(store.alignment);
+  const size_t row_bits = static_cast<size_t>(store.row_length > 0 ? store.row_length : width);
+  const size_t row_bytes = ((row_bits + 7) / 8 + align - 1) / align * align;
+  const size_t w = static_cast<size_t>(width), skip = static_cast<size_t>(store.skip_pixels);
+  for (size_t y = 0; y < static_cast<size_t>(height); ++y) {
+    unsigned char* row = out + (static_cast<size_t>(store.skip_rows) + y) * row_bytes;
+    std::fill(row + skip / 8, row + (skip + w + 7) / 8, static_cast<unsigned char>(0));
+    for (size_t x = 0; x < w; ++x) {
+      if (!bits[y * w + x]) continue;
+      const size_t bit = skip + x;
+      const int shift = store.lsb_first ? static_cast<int>(bit % 8) : 7 - static_cast<int>(bit % 8);
+      row[bit / 8] = static_cast<unsigned char>(row[bit / 8] | (1u << shift));
+    }
+  }
+}
+
 GLenum checkDrawFormatAndType(GLenum format, GLenum type) {
   if (type == GL_BITMAP)
     return format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX ? GL_NO_ERROR : GL_INVALID_ENUM;

@@ -60,6 +60,11 @@ void packColors(const PixelStore& store, GLenum format, GLenum type, int width, 
 // GL_UNPACK_LSB_FIRST.
 void unpackBitmap(const PixelStore& store, int width, int height, const void* data, unsigned char* bits);
 
+// Writes a `width` x `height` GL_BITMAP image (one byte a pixel, non-zero a set bit, row 0 first)
+// by the pack modes, laid out as unpackBitmap reads one. As Mesa's _mesa_pack_bitmap: each byte
+// that holds some of a row's bits is written whole, its other bits 0; other bytes are untouched.
+void packBitmap(const PixelStore& store, int width, int height, const unsigned char* bits, void* data);
+
 // Reads a `width` x `height` image of indices (GL_STENCIL_INDEX, GL_COLOR_INDEX) by the unpack
 // modes into integers (row 0 first): each component as it is (a float truncated), a GL_BITMAP
 // image's bits as 0 and 1.

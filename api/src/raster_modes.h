@@ -1,7 +1,8 @@
 // The rasterization state of points, lines and polygons (GL 1.5 sections 3.4 - 3.5, table 6.12
-// - 6.14) as a context keeps it: glPointSize, glLineWidth, their glGet values and attribute
-// groups, and what a draw takes of them (RasterState's line_width and point_size, in whole
-// pixels as OSMesa rasterizes them). Commands and queries: raster_mode_commands.cpp.
+// - 6.14) as a context keeps it: glPointSize, glLineWidth, glLineStipple, glPolygonMode,
+// glPolygonOffset, glPolygonStipple, their glGet values and attribute groups, and what a draw
+// takes of them (RasterState's line_width and point_size, in whole pixels as OSMesa rasterizes
+// them, the stipples, the modes). Commands and queries: raster_mode_commands.cpp.
 #pragma once
 
 #include <GL/gl.h>
@@ -28,6 +29,20 @@ struct RasterModes {
   GLenum polygon_mode[2] = {GL_FILL, GL_FILL};  // GL_POLYGON_BIT: front, back
   float offset_factor = 0.0f, offset_units = 0.0f;
   bool offset_fill = false, offset_line = false, offset_point = false;  // (GL_ENABLE_BIT too)
+  // glPolygonStipple's pattern, GL_POLYGON_STIPPLE_BIT (initially all 1s), as RasterState's
+  // stipple_rows holds it: row k's first byte in bits 31 - 24, its first bit the most
+  // significant; and its enable (GL_ENABLE_BIT).
+  uint32_t stipple_rows[32] = {
+      ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u,
+      ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u, ~0u};
+  bool polygon_stipple = false;
+};
+
+// glPolygonStipple's pattern as a command takes it (and a display list records it): the 32 rows
+// unpacked when the command was issued, or nothing for a NULL pattern (given 0).
+struct StipplePattern {
+  uint32_t rows[32];
+  GLint given;
 };
 
 // The depth buffer's resolution r that glPolygonOffset's units multiply, as OSMesa's 24-bit
@@ -46,7 +61,7 @@ float rasterLineWidth(float width);
 // 2.5 draw 1 and 2, 1.51 draws 2); NaN draws 1.
 float rasterPointSize(float size);
 
-// Sets the draw's line_width, point_size and line stipple.
+// Sets the draw's line_width, point_size, line stipple, polygon modes, offset and stipple.
 void applyRasterModes(const RasterModes& m, RasterState& s);
 
 }  // namespace pf

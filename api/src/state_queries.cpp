@@ -105,6 +105,9 @@ bool query(const PFcontextRec& ctx, GLenum pname, Query& q) {
     case GL_COLOR_ARRAY: set({ctx.color_array.enabled ? 1.0 : 0.0}); return true;
     case GL_NORMAL_ARRAY: set({ctx.normal_array.enabled ? 1.0 : 0.0}); return true;
     case GL_TEXTURE_COORD_ARRAY: set({ctx.texcoord_array.enabled ? 1.0 : 0.0}); return true;
+    case GL_EDGE_FLAG_ARRAY: set({ctx.edge_flag_array.enabled ? 1.0 : 0.0}); return true;
+    case GL_EDGE_FLAG_ARRAY_STRIDE: set({double(ctx.edge_flag_array.stride)}); return true;
+    case GL_EDGE_FLAG: set({ctx.param(ctx.edge_flag_param).v[0] == 1.0 ? 1.0 : 0.0}); return true;  // (Mesa's test)
     case GL_MODELVIEW_MATRIX: matrix(ctx.modelview.top); return true;
     case GL_PROJECTION_MATRIX: matrix(ctx.projection.top); return true;
     case GL_TEXTURE_MATRIX: matrix(ctx.texture.top); return true;

@@ -2,7 +2,7 @@
 // definition, glBegin, then glArrayElement for each index (the enabled arrays' values set as
 // the current ones, the vertex last), then glEnd -- and are implemented exactly so, through
 // the same sequence points as immediate mode. In a display list they are recorded so: the
-// glBegin, glColor, glNormal, glVertex and glEnd they issue, with the arrays' values read when
+// glBegin, glColor, glNormal, glEdgeFlag, glVertex and glEnd they issue, with the arrays' values read when
 // the list is compiled (GL 1.5 section 5.4), and their errors raised when it executes.
 #include <cstring>
 
@@ -66,6 +66,11 @@ void arrayElement(PFcontextRec& ctx, GLint i) {
                      static_cast<float>(fetch(a, i, 2, true)),
                      a.size == 4 ? static_cast<float>(fetch(a, i, 3, true)) : 1.0f);
   }
+  if (ctx.edge_flag_array.enabled && ctx.edge_flag_array.pointer) {  // GLbooleans, any non-zero true
+    const pf::ClientArray& a = ctx.edge_flag_array;
+    const size_t stride = a.stride ? static_cast<size_t>(a.stride) : sizeof(GLboolean);
+    issue<GlOp::EdgeFlag>(ctx, static_cast<const GLboolean*>(a.pointer)[stride * static_cast<size_t>(i)]);
+  }
   if (ctx.normal_array.enabled && ctx.normal_array.pointer) {
     const pf::ClientArray& a = ctx.normal_array;
     issue<GlOp::Normal>(ctx, static_cast<float>(fetch(a, i, 0, true)), static_cast<float>(fetch(a, i, 1, true)),
@@ -85,6 +90,7 @@ pf::ClientArray* clientArray(PFcontextRec& ctx, GLenum array) {
     case GL_COLOR_ARRAY: return &ctx.color_array;
     case GL_NORMAL_ARRAY: return &ctx.normal_array;
     case GL_TEXTURE_COORD_ARRAY: return &ctx.texcoord_array;
+    case GL_EDGE_FLAG_ARRAY: return &ctx.edge_flag_array;
     default: return nullptr;
   }
 }
@@ -189,8 +195,14 @@ void pfglTexCoordPointer(GLint size, GLenum type, GLsizei stride, const GLvoid* 
           type == GL_SHORT || type == GL_INT || type == GL_FLOAT || type == GL_DOUBLE);
 }
 
+// An array of GLboolean edge flags (GL 1.5 section 2.8).
+void pfglEdgeFlagPointer(GLsizei stride, const GLvoid* ptr) {
+  pointer(GL_EDGE_FLAG_ARRAY, 1, GL_UNSIGNED_BYTE, stride, ptr, true, true);
+}
+
 // Sets the arrays of one of GL's interleaved layouts and enables exactly those (the vertex
-// array always). Executed at once in a display list, as the pointer commands are.
+// array always; the edge flag array is disabled, as GL 1.5 section 2.8 says). Executed at once
+// in a display list, as the pointer commands are.
 void pfglInterleavedArrays(GLenum format, GLsizei stride, const GLvoid* ptr) {
   PFcontextRec* ctx = pf::contextOutsideBegin();
   if (!ctx) return;
@@ -213,6 +225,7 @@ void pfglInterleavedArrays(GLenum format, GLsizei stride, const GLvoid* ptr) {
   set(ctx->color_array, f->colors, f->color_type, f->color_at);
   set(ctx->normal_array, f->normals, GL_FLOAT, f->normal_at);
   set(ctx->vertex_array, f->vertices, GL_FLOAT, f->vertex_at);
+  ctx->edge_flag_array.enabled = false;
 }
 
 // The arrays' pointers; those of arrays and buffers primflow does not have are NULL.
@@ -225,7 +238,8 @@ void pfglGetPointerv(GLenum pname, GLvoid** params) {
     case GL_COLOR_ARRAY_POINTER: p = ctx->color_array.pointer; break;
     case GL_NORMAL_ARRAY_POINTER: p = ctx->normal_array.pointer; break;
     case GL_TEXTURE_COORD_ARRAY_POINTER: p = ctx->texcoord_array.pointer; break;
-    case GL_INDEX_ARRAY_POINTER: case GL_EDGE_FLAG_ARRAY_POINTER: case GL_FOG_COORD_ARRAY_POINTER:
+    case GL_EDGE_FLAG_ARRAY_POINTER: p = ctx->edge_flag_array.pointer; break;
+    case GL_INDEX_ARRAY_POINTER: case GL_FOG_COORD_ARRAY_POINTER:
     case GL_SECONDARY_COLOR_ARRAY_POINTER: case GL_FEEDBACK_BUFFER_POINTER: case GL_SELECTION_BUFFER_POINTER: break;
     default: return ctx->setError(GL_INVALID_ENUM);
   }

@@ -1,5 +1,5 @@
-// The vertex attribute entry points -- glVertex, glColor, glNormal, glTexCoord in every form
-// GL 1.x has -- and glRect. Each form converts its arguments to one recorded command
+// The vertex attribute entry points -- glVertex, glColor, glNormal, glTexCoord, glEdgeFlag in
+// every form GL 1.x has -- and glRect. Each form converts its arguments to one recorded command
 // (commands.h; the work is in immediate_mode.cpp): integer colours and normals are normalised
 // as GL 1.5 table 2.9 says (normalized.h), other integers and doubles are taken as values, a
 // 3-component colour gets alpha 1, glTexCoord1 to 3 fill the rest of (s, t, r, q) with
@@ -139,5 +139,12 @@ PF_RECT_FORMS(GLshort, s)
 PF_RECT_FORMS(GLint, i)
 PF_RECT_FORMS(GLfloat, f)
 PF_RECT_FORMS(GLdouble, d)
+
+// The edge flag (GL 1.5 section 2.6.2): which edges of a polygon drawn GL_LINE or GL_POINT are
+// its boundary (primitives/triangles.pfl reads it as the "edge_flag" parameter).
+void pfglEdgeFlag(GLboolean flag) { dispatch<GlOp::EdgeFlag>(flag); }
+void pfglEdgeFlagv(const GLboolean* flag) {
+  if (flag) pfglEdgeFlag(*flag);
+}
 
 }  // extern "C"

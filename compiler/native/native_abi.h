@@ -90,6 +90,10 @@ struct NativeBlockArgs {
   // ((a * X + b * Y) + c * z) + d >= 0 for every one.
   const float* clip_planes = nullptr;
   uint32_t clip_plane_count = 0;
+  // The polygon stipple polygon_ztest() applies (a ZTest whose imm is 1): 32 rows, bit
+  // 31 - (x mod 32) of row y mod 32 keeps the fragment at (x, y) (raster's
+  // RasterState::stipple_rows); null when GL_POLYGON_STIPPLE is off.
+  const uint32_t* polygon_stipple = nullptr;
 };
 
 // The most clip planes NativeBlockArgs::clip_planes holds (RasterState::kMaxClipPlanes).

@@ -110,6 +110,7 @@ llvm::Function* PixelCodegen::build(const std::string& name, const PixelProgram&
   depth_pass_ = argField(offsetof(NativeBlockArgs, depth_pass), i32, "depth_pass");
   clip_planes_ = argField(offsetof(NativeBlockArgs, clip_planes), ptr, "clip_planes");
   clip_count_ = argField(offsetof(NativeBlockArgs, clip_plane_count), i32, "clip_plane_count");
+  polygon_stipple_ = argField(offsetof(NativeBlockArgs, polygon_stipple), ptr, "polygon_stipple");
   depth_write_ = b_.CreateICmpNE(argField(offsetof(NativeBlockArgs, depth_write), i32, "depth_write"), b_.getInt32(0));
   has_depth_ = b_.CreateICmpNE(depth_, llvm::ConstantPointerNull::get(b_.getPtrTy()), "has_depth");
   packed_ = variant_.gang ? b_.getTrue() : b_.CreateICmpNE(lane_x_, llvm::ConstantPointerNull::get(b_.getPtrTy()), "packed");
@@ -397,7 +398,9 @@ void PixelCodegen::emitInstruction(Env& env, size_t pc, const Instr& in, std::ma
                       b_.CreateAnd(passes(kDepthPassEqual), b_.CreateFCmpOEQ(z, zb))),
           b_.CreateOr(b_.CreateAnd(passes(kDepthPassGreater), b_.CreateFCmpOLT(zb, z)),
                       b_.CreateAnd(passes(kDepthPassUnordered), b_.CreateFCmpUNO(z, zb))));
-      setReg(env, in.dst, b_.CreateZExt(keptByClipPlanes(env, r, z), iv_), true);
+      r = keptByClipPlanes(env, r, z);
+      if (in.imm != 0) r = keptByStipple(env, r);  // polygon_ztest()
+      setReg(env, in.dst, b_.CreateZExt(r, iv_), true);
       return;
     }
     case Op::ZCommit:
@@ -566,6 +569,33 @@ llvm::Value* PixelCodegen::keptByClipPlanes(Env& env, llvm::Value* passed, llvm:
     }
     return kept;
   });
+}
+
+// The lanes of `passed` that the polygon stipple keeps (polygon_ztest()): the interpreter's
+// RasterState::stippleKeeps, bit 31 - (x & 31) of row y & 31 with x and y the pixel centre
+// truncated to an integer. No stipple (GL_POLYGON_STIPPLE off, a null pointer): one branch past it.
+llvm::Value* PixelCodegen::keptByStipple(Env& env, llvm::Value* passed) {
+  llvm::Value* x = b_.CreateBitCast(operand(env, makeOperand(OperandKind::Reg, kRegX)), fv_);
+  llvm::Value* y = b_.CreateBitCast(operand(env, makeOperand(OperandKind::Reg, kRegY)), fv_);
+  llvm::BasicBlock* from = b_.GetInsertBlock();
+  llvm::BasicBlock* then = llvm::BasicBlock::Create(ctx_, "stipple", fn_);
+  llvm::BasicBlock* join = llvm::BasicBlock::Create(ctx_, "stipple.join", fn_);
+  b_.CreateCondBr(b_.CreateICmpNE(polygon_stipple_, llvm::ConstantPointerNull::get(b_.getPtrTy())), then, join);
+  b_.SetInsertPoint(then);
+  llvm::Value* mask31 = splatI(31);
+  llvm::Value* row_index = b_.CreateAnd(b_.CreateFPToSI(y, iv_), mask31);
+  llvm::Value* column = b_.CreateAnd(b_.CreateFPToSI(x, iv_), mask31);
+  llvm::Value* at = b_.CreateGEP(b_.getInt32Ty(), polygon_stipple_, row_index, "stipple.at");
+  llvm::Value* rows = b_.CreateMaskedGather(iv_, at, llvm::Align(4), allLanes(true));
+  llvm::Value* bit = b_.CreateAnd(b_.CreateLShr(rows, b_.CreateSub(mask31, column)), splatI(1));
+  llvm::Value* kept = b_.CreateAnd(passed, b_.CreateICmpNE(bit, splatI(0)));
+  llvm::BasicBlock* then_end = b_.GetInsertBlock();
+  b_.CreateBr(join);
+  b_.SetInsertPoint(join);
+  llvm::PHINode* merged = b_.CreatePHI(passed->getType(), 2);
+  merged->addIncoming(passed, from);
+  merged->addIncoming(kept, then_end);
+  return merged;
 }
 
 }  // namespace pf

@@ -53,6 +53,7 @@ class PixelCodegen {
   void emitInstruction(Env& env, size_t pc, const Instr& in, std::map<size_t, llvm::BasicBlock*>& blocks);
   // The lanes of `passed` (a depth test's result) that the user clip planes keep at depth `z`.
   llvm::Value* keptByClipPlanes(Env& env, llvm::Value* passed, llvm::Value* z);
+  llvm::Value* keptByStipple(Env& env, llvm::Value* passed);
   void emitShared(Env& env, const Instr& in);
   llvm::AllocaInst* entryAlloca(llvm::Type* t, const char* name);
 
@@ -130,6 +131,7 @@ class PixelCodegen {
   llvm::Value* iteration_cap_ = nullptr;
   llvm::Value* depth_pass_ = nullptr;   // i32: kDepthPass* bits
   llvm::Value* clip_planes_ = nullptr;  // ptr: NativeBlockArgs::clip_planes
+  llvm::Value* polygon_stipple_ = nullptr;  // ptr: NativeBlockArgs::polygon_stipple
   llvm::Value* clip_count_ = nullptr;   // i32: NativeBlockArgs::clip_plane_count
   llvm::Value* depth_write_ = nullptr;  // i1
   llvm::Value* has_depth_ = nullptr;    // i1: a depth buffer

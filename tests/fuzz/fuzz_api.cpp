@@ -3,7 +3,7 @@
 // are NaN, infinite or huge, matrix stacks pushed and popped past their ends, degenerate
 // projections, bad enums and names, sequence points, compiles, clears and finishes, the
 // per-fragment operations' state with any values (scissor, alpha test, blending, logic op,
-// stencil), the raster position and pixel rectangles, point sizes, line widths, stipples, polygon modes and offsets, a glBegin of very many vertices -- run on a small context. Nothing may crash, hang or trip ASan/UBSan, and
+// stencil), the raster position and pixel rectangles, point sizes, line widths, stipples, polygon modes, offsets and stipples, edge flags, a glBegin of very many vertices -- run on a small context. Nothing may crash, hang or trip ASan/UBSan, and
 // GL's rules are checked (the checks trap, which libFuzzer reports): a glBegin whose only erring
 // command is one GL does not allow there leaves exactly GL_INVALID_OPERATION at glEnd, and the
 // glBegin of very many vertices leaves no error.
@@ -80,6 +80,7 @@ void oneBegin(FuzzedDataProvider& in, bool forbidden) {
     switch (in.ConsumeIntegralInRange<int>(0, 3)) {
       case 0: pfglColor4f(aFloat(in), aFloat(in), aFloat(in), aFloat(in)); break;
       case 1: pfglNormal3f(aFloat(in), aFloat(in), aFloat(in)); break;
+      case 2: pfglEdgeFlag(in.ConsumeIntegral<GLboolean>()); break;  // any value, 0 false
       default: break;
     }
     pfglVertex3f(aFloat(in), aFloat(in), aFloat(in));
@@ -302,10 +303,19 @@ void pixelRectangles(FuzzedDataProvider& in) {
 }
 
 // Points, lines and polygon modes, any values: sizes and widths NaN, infinite, huge, zero or
-// negative, any stipple factor and pattern, polygon modes and offsets (bad enums too); then a
-// glBegin of any mode drawn with them.
+// negative, any line stipple factor and pattern, polygon modes and offsets (bad enums too), any
+// polygon stipple (or NULL), read back; then a glBegin of any mode drawn with them.
 void rasterModeState(FuzzedDataProvider& in) {
-  switch (in.ConsumeIntegralInRange<int>(0, 5)) {
+  switch (in.ConsumeIntegralInRange<int>(0, 6)) {
+    case 5: {
+      // (512 bytes: the pattern under any unpack or pack mode this fuzzer sets, skips included.)
+      std::vector<unsigned char> pattern(512);
+      for (unsigned char& b : pattern) b = in.ConsumeIntegral<unsigned char>();
+      pfglPolygonStipple(in.ConsumeBool() ? pattern.data() : nullptr);
+      (in.ConsumeBool() ? pfglEnable : pfglDisable)(GL_POLYGON_STIPPLE);
+      pfglGetPolygonStipple(in.ConsumeBool() ? pattern.data() : nullptr);
+      break;
+    }
     case 3:
       pfglPolygonMode(in.ConsumeBool() ? GL_FRONT_AND_BACK : in.ConsumeIntegralInRange<GLenum>(GL_FRONT - 1, GL_BACK + 1),
                       in.ConsumeIntegralInRange<GLenum>(GL_POINT - 1, GL_FILL + 1));

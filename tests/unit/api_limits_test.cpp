@@ -41,8 +41,8 @@ TEST(ApiLimits, ParameterNamesEndAt0x3FFFF) {
     last = id;
   }
   EXPECT_EQ(last, 0x3FFFFu);
-  EXPECT_EQ(made, 0x40000 - GL_FIRST_PARAM_NAME_EXT - 4);  // vertex, normal, texcoord, color first
-  EXPECT_EQ(pfglGetParamNameEXT("name7"), static_cast<GLuint>(GL_FIRST_PARAM_NAME_EXT + 4 + 7));
+  EXPECT_EQ(made, 0x40000 - GL_FIRST_PARAM_NAME_EXT - 5);  // vertex, normal, texcoord, color, edge_flag first
+  EXPECT_EQ(pfglGetParamNameEXT("name7"), static_cast<GLuint>(GL_FIRST_PARAM_NAME_EXT + 5 + 7));
   EXPECT_EQ(pfglGetError(), static_cast<GLenum>(GL_NO_ERROR));
 }
 

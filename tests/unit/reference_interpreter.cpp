@@ -180,7 +180,9 @@ class Interpreter {
         forKinds(in.imm, [&](int c) { out_.channels[c] = v[c]; });
         return {};
       }
-      case Op::ZTest: scalar_[in.dst] = depthPasses(asF(get(in.a))) ? 1u : 0u; return {};
+      case Op::ZTest:  // (imm 1, polygon_ztest(): the polygon stipple too)
+        scalar_[in.dst] = depthPasses(asF(get(in.a))) && (in.imm == 0 || !st_.polygon_stipple || st_.stippleKeeps(x_, y_)) ? 1u : 0u;
+        return {};
       case Op::FieldBox:
         for (int k = 0; k < 3; ++k) field_box_[in.imm * 3 + k] = asF(get(k == 0 ? in.a : k == 1 ? in.b : in.c));
         return {};

@@ -138,11 +138,15 @@ void pfglWindowPos3dv(const GLdouble *v);
 void pfglPointSize(GLfloat size);
 void pfglLineWidth(GLfloat width);
 void pfglLineStipple(GLint factor, GLushort pattern);
-/* Polygons (GL 1.5 sections 3.5.4 - 3.5.5): glPolygonMode per face (GL_POINT, GL_LINE on the
+/* Polygons (GL 1.5 sections 3.5.2 - 3.5.5): glPolygonMode per face (GL_POINT, GL_LINE on the
  * polygon's boundary, GL_FILL), after culling; glPolygonOffset under GL_POLYGON_OFFSET_FILL,
- * _LINE, _POINT (docs/api.md, "Polygon modes and offset"). */
+ * _LINE, _POINT; glPolygonStipple's 32 x 32 pattern under GL_POLYGON_STIPPLE, for filled
+ * polygons, unpacked / packed by glPixelStore's modes (docs/api.md, "Polygon modes and offset",
+ * "Polygon stipple"). */
 void pfglPolygonMode(GLenum face, GLenum mode);
 void pfglPolygonOffset(GLfloat factor, GLfloat units);
+void pfglPolygonStipple(const GLubyte *mask);
+void pfglGetPolygonStipple(GLubyte *mask);
 
 /* Hints: kept and read back (nothing primflow draws depends on them). Attribute stacks, 16 deep:
  * the groups primflow has (docs/api.md, "Attribute stacks"); glPushAttrib / glPopAttrib are
@@ -178,7 +182,8 @@ void pfglColorMaterial(GLenum face, GLenum mode);
 void pfglGetLightfv(GLenum light, GLenum pname, GLfloat *params);
 void pfglGetMaterialfv(GLenum face, GLenum pname, GLfloat *params);
 
-/* Vertex arrays: GL_VERTEX_ARRAY, GL_COLOR_ARRAY, GL_NORMAL_ARRAY, GL_TEXTURE_COORD_ARRAY.
+/* Vertex arrays: GL_VERTEX_ARRAY, GL_COLOR_ARRAY, GL_NORMAL_ARRAY, GL_TEXTURE_COORD_ARRAY,
+ * GL_EDGE_FLAG_ARRAY.
  * glDrawArrays / glDrawElements are glBegin, glArrayElement per index, glEnd, as GL defines
  * them; glInterleavedArrays sets them from one of GL's 14 layouts. */
 void pfglEnableClientState(GLenum array);
@@ -187,6 +192,7 @@ void pfglVertexPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *po
 void pfglColorPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *pointer);
 void pfglNormalPointer(GLenum type, GLsizei stride, const GLvoid *pointer);
 void pfglTexCoordPointer(GLint size, GLenum type, GLsizei stride, const GLvoid *pointer);
+void pfglEdgeFlagPointer(GLsizei stride, const GLvoid *pointer);
 void pfglInterleavedArrays(GLenum format, GLsizei stride, const GLvoid *pointer);
 void pfglGetPointerv(GLenum pname, GLvoid **params);
 void pfglArrayElement(GLint i);
@@ -349,6 +355,10 @@ void pfglNormal3f(GLfloat nx, GLfloat ny, GLfloat nz);
 void pfglNormal3fv(const GLfloat *v);
 void pfglNormal3d(GLdouble nx, GLdouble ny, GLdouble nz);
 void pfglNormal3dv(const GLdouble *v);
+/* The edge flag (GL 1.5 section 2.6.2): which edges of GL_TRIANGLES, GL_QUADS and GL_POLYGON
+ * drawn GL_LINE or GL_POINT are boundary edges (docs/api.md, "Polygon modes and offset"). */
+void pfglEdgeFlag(GLboolean flag);
+void pfglEdgeFlagv(const GLboolean *flag);
 void pfglTexCoord1s(GLshort s);
 void pfglTexCoord2s(GLshort s, GLshort t);
 void pfglTexCoord3s(GLshort s, GLshort t, GLshort r);

@@ -103,6 +103,8 @@
 #define glLineStipple pfglLineStipple
 #define glPolygonMode pfglPolygonMode
 #define glPolygonOffset pfglPolygonOffset
+#define glPolygonStipple pfglPolygonStipple
+#define glGetPolygonStipple pfglGetPolygonStipple
 #define glScissor pfglScissor
 #define glAlphaFunc pfglAlphaFunc
 #define glBlendFunc pfglBlendFunc
@@ -215,6 +217,8 @@
 #define glColor3ub pfglColor3ub
 #define glColor4ub pfglColor4ub
 #define glNormal3f pfglNormal3f
+#define glEdgeFlag pfglEdgeFlag
+#define glEdgeFlagv pfglEdgeFlagv
 #define glNormal3fv pfglNormal3fv
 #define glTexCoord1f pfglTexCoord1f
 #define glTexCoord2f pfglTexCoord2f
@@ -224,6 +228,7 @@
 #define glColorPointer pfglColorPointer
 #define glNormalPointer pfglNormalPointer
 #define glTexCoordPointer pfglTexCoordPointer
+#define glEdgeFlagPointer pfglEdgeFlagPointer
 #define glInterleavedArrays pfglInterleavedArrays
 #define glGetPointerv pfglGetPointerv
 #define glArrayElement pfglArrayElement

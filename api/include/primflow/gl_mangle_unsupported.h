@@ -9,10 +9,6 @@
 
 #define glClearIndex _Pragma("GCC error \"primflow does not implement glClearIndex\"") pf_unsupported_glClearIndex
 #define glIndexMask _Pragma("GCC error \"primflow does not implement glIndexMask\"") pf_unsupported_glIndexMask
-#define glPolygonStipple _Pragma("GCC error \"primflow does not implement glPolygonStipple\"") pf_unsupported_glPolygonStipple
-#define glGetPolygonStipple _Pragma("GCC error \"primflow does not implement glGetPolygonStipple\"") pf_unsupported_glGetPolygonStipple
-#define glEdgeFlag _Pragma("GCC error \"primflow does not implement glEdgeFlag\"") pf_unsupported_glEdgeFlag
-#define glEdgeFlagv _Pragma("GCC error \"primflow does not implement glEdgeFlagv\"") pf_unsupported_glEdgeFlagv
 #define glDrawBuffer _Pragma("GCC error \"primflow does not implement glDrawBuffer\"") pf_unsupported_glDrawBuffer
 #define glReadBuffer _Pragma("GCC error \"primflow does not implement glReadBuffer\"") pf_unsupported_glReadBuffer
 #define glRenderMode _Pragma("GCC error \"primflow does not implement glRenderMode\"") pf_unsupported_glRenderMode
@@ -27,7 +23,6 @@
 #define glIndexsv _Pragma("GCC error \"primflow does not implement glIndexsv\"") pf_unsupported_glIndexsv
 #define glIndexubv _Pragma("GCC error \"primflow does not implement glIndexubv\"") pf_unsupported_glIndexubv
 #define glIndexPointer _Pragma("GCC error \"primflow does not implement glIndexPointer\"") pf_unsupported_glIndexPointer
-#define glEdgeFlagPointer _Pragma("GCC error \"primflow does not implement glEdgeFlagPointer\"") pf_unsupported_glEdgeFlagPointer
 #define glGetLightiv _Pragma("GCC error \"primflow does not implement glGetLightiv\"") pf_unsupported_glGetLightiv
 #define glGetMaterialiv _Pragma("GCC error \"primflow does not implement glGetMaterialiv\"") pf_unsupported_glGetMaterialiv
 #define glMap1d _Pragma("GCC error \"primflow does not implement glMap1d\"") pf_unsupported_glMap1d
