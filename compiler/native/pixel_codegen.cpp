@@ -586,7 +586,9 @@ llvm::Value* PixelCodegen::keptByStipple(Env& env, llvm::Value* passed) {
   llvm::Value* row_index = b_.CreateAnd(b_.CreateFPToSI(y, iv_), mask31);
   llvm::Value* column = b_.CreateAnd(b_.CreateFPToSI(x, iv_), mask31);
   llvm::Value* at = b_.CreateGEP(b_.getInt32Ty(), polygon_stipple_, row_index, "stipple.at");
-  llvm::Value* rows = b_.CreateMaskedGather(iv_, at, llvm::Align(4), allLanes(true));
+  // (Gathered only for the lanes that passed: another lane's x or y -- a lane past a packed
+  // block's count -- is nothing to index memory with.)
+  llvm::Value* rows = b_.CreateMaskedGather(iv_, at, llvm::Align(4), passed, splatI(0));
   llvm::Value* bit = b_.CreateAnd(b_.CreateLShr(rows, b_.CreateSub(mask31, column)), splatI(1));
   llvm::Value* kept = b_.CreateAnd(passed, b_.CreateICmpNE(bit, splatI(0)));
   llvm::BasicBlock* then_end = b_.GetInsertBlock();
