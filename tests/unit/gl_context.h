@@ -30,4 +30,14 @@ struct GlContext {
   }
 };
 
+// Window coordinates as object coordinates: a w x h viewport, an orthographic projection of it.
+inline void windowOrtho(int w, int h) {
+  pfglViewport(0, 0, w, h);
+  pfglMatrixMode(GL_PROJECTION);
+  pfglLoadIdentity();
+  pfglOrtho(0, w, 0, h, -1, 1);
+  pfglMatrixMode(GL_MODELVIEW);
+  pfglLoadIdentity();
+}
+
 }  // namespace pf::test

@@ -14,16 +14,9 @@
 
 namespace {
 
-GLenum error() { return pfglGetError(); }
+using pf::test::windowOrtho;
 
-void windowOrtho(int w, int h) {
-  pfglViewport(0, 0, w, h);
-  pfglMatrixMode(GL_PROJECTION);
-  pfglLoadIdentity();
-  pfglOrtho(0, w, 0, h, -1, 1);
-  pfglMatrixMode(GL_MODELVIEW);
-  pfglLoadIdentity();
-}
+GLenum error() { return pfglGetError(); }
 
 TEST(PixelRectangles, TooLargeImagesAreOutOfMemoryAndTheContextGoesOn) {
   pf::test::GlContext c(16, 16);

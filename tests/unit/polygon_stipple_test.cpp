@@ -13,6 +13,8 @@
 
 namespace {
 
+using pf::test::windowOrtho;
+
 // A pattern whose row k keeps exactly pixel x = (3 * k) mod 32 of each 32.
 void diagonal(GLubyte pattern[128]) {
   std::memset(pattern, 0, 128);
@@ -20,15 +22,6 @@ void diagonal(GLubyte pattern[128]) {
     const int x = (3 * row) % 32;
     pattern[row * 4 + x / 8] = static_cast<GLubyte>(0x80u >> (x % 8));
   }
-}
-
-void windowOrtho(int w, int h) {
-  pfglViewport(0, 0, w, h);
-  pfglMatrixMode(GL_PROJECTION);
-  pfglLoadIdentity();
-  pfglOrtho(0, w, 0, h, -1, 1);
-  pfglMatrixMode(GL_MODELVIEW);
-  pfglLoadIdentity();
 }
 
 void quad(float x0, float y0, float x1, float y1, float z) {
